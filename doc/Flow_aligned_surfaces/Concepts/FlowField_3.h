@@ -1,0 +1,76 @@
+/*!
+\ingroup PkgFlowAlignedSurfacesConcepts
+\cgalConcept
+
+The concept `FlowField_3` describes a steady 3D vector field, the velocity \f$ v(x) \f$ of a
+flow, as the algorithms of this package sample it: a copyable callable that maps a point to
+the velocity there, or to nothing when the point is outside the flow's domain.
+
+`Point_3` and `Vector_3` are the point and vector types of the kernel that the algorithm
+works with, the one of its `geom_traits` named parameter, which by default is the kernel of
+the mesh's vertex point type.  A model need not define any type: a lambda is a model.
+
+\code{.cpp}
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+// a vortex about the z-axis, defined outside the cylinder of radius 0.1 only
+auto vortex = [](const K::Point_3& p) -> std::optional<K::Vector_3> {
+  const double r2 = p.x() * p.x() + p.y() * p.y();
+  if (r2 < 0.01)
+    return std::nullopt;
+  return K::Vector_3(-p.y() / r2, p.x() / r2, 0.2);
+};
+\endcode
+
+<b>How the algorithms treat the answers.</b>  `std::nullopt` means that the point is outside
+the domain (an obstacle, outside the grid of a simulation).  A vector with a NaN or infinite
+coordinate is treated like `std::nullopt`, and counted separately in the reports; a zero
+vector (a critical point) has no direction.  In all three cases the face sampled there is
+left as it is by the alignment (its transformation is the identity) and is left out of the
+measures.  Only the direction of the vector matters to the alignment; its length weighs
+nothing, as the measures normalize it.
+
+<b>Copies.</b>  The algorithms copy the field (a `Flow_aligned_deformation` keeps its own
+copy), so a copy must be cheap and must answer like the original.
+Fields holding large arrays share them between copies, as
+`CGAL::Flow_aligned_surfaces::Regular_grid_flow_field_3` does with a `std::shared_ptr`.  The
+call operator is `const`; it should not modify state shared between calls, so that a field
+can be sampled from several threads at once.
+
+\cgalHasModelsBegin
+\cgalHasModels{Any callable `std::optional<Vector_3>(const Point_3&)`, such as a lambda}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Uniform_flow<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Linear_flow<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Helical_flow<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::ABC_flow<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Hill_spherical_vortex<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Point_source_flow<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Cylinder_potential_flow<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Sphere_potential_flow<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Burgers_vortex<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Crawfis_tornado<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Regular_grid_flow_field_3<GeomTraits>`}
+\cgalHasModelsEnd
+
+The analytic flows are declared in `<CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>`.
+
+\sa `UnsteadyFlowField_3`
+*/
+class FlowField_3
+{
+public:
+  /// \name Creation
+  /// @{
+
+  /// Copy constructor; the copy answers every query as the original does.
+  FlowField_3(const FlowField_3& other);
+
+  /// @}
+
+  /// \name Operations
+  /// @{
+
+  /// Returns the velocity at `p`, or `std::nullopt` when `p` is outside the domain.
+  std::optional<Vector_3> operator()(const Point_3& p) const;
+
+  /// @}
+};

@@ -1,0 +1,264 @@
+// The package's main job: place a planar patch in a built-in flow, align it
+// tangentially (a stream surface) or orthogonally (a seeding surface), and write
+// what a user opens afterwards: the initial and aligned surfaces as PLY and VTP
+// (ParaView), the normalized flux of every iteration as CSV, and a JSON summary.
+//
+// Usage: align_patch [--flow NAME] [--alignment tangential|orthogonal|both]
+//                    [--faces N] [--output DIR]
+// Flows: cylinder (default), point-source, sphere, helical, hill, burgers, abc, tornado.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
+#include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
+#include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
+#include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
+#include <CGAL/Flow_aligned_surfaces/measure.h>
+
+#include <CGAL/Surface_mesh/IO/PLY.h>
+#include <boost/property_map/property_map.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Vector = Kernel::Vector_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace FAS = CGAL::Flow_aligned_surfaces;
+
+// Every built-in flow behind one type, so that the deformation is compiled once.
+using Flow = std::function<std::optional<Vector>(const Point&)>;
+
+struct Scene {
+  Flow flow;
+  Point tangential_center, orthogonal_center;
+  Vector tangential_normal, orthogonal_normal;
+  double size;
+};
+
+std::optional<Scene> make_scene(const std::string& name)
+{
+  if (name == "cylinder") // potential flow past a cylinder of radius 1 along z
+    return Scene{FAS::Cylinder_potential_flow<Kernel>(1.0, 1.0), Point(-2.0, 0.8, 0), Point(-2.2, 0.6, 0.3),
+                 Vector(0.3, 1.0, 0.4), Vector(1.0, 0.4, 0.2), 1.2};
+  if (name == "point-source")
+    return Scene{FAS::Point_source_flow<Kernel>(Point(0, 0, 0), 1.0), Point(0, 0, 2), Point(0.2, -0.1, 2.0),
+                 Vector(1.0, 0.2, 0.1), Vector(0.3, 0.2, 1.0), 1.0};
+  if (name == "sphere")
+    return Scene{FAS::Sphere_potential_flow<Kernel>(1.0, 1.0), Point(0.8, 0.2, -2.0), Point(0.3, 0.2, -2.0),
+                 Vector(1.0, 0.3, 0.2), Vector(0.2, 0.1, 1.0), 1.2};
+  if (name == "helical")
+    return Scene{FAS::Helical_flow<Kernel>(0.5), Point(1.0, 0.2, 0), Point(1.0, 0.0, 0.0), Vector(1.0, 0.3, 0.2),
+                 Vector(0.0, 1.0, 0.3), 0.8};
+  if (name == "hill")
+    return Scene{FAS::Hill_spherical_vortex<Kernel>(1.0, 1.0), Point(0.5, 0.1, 0.2), Point(0.5, 0.0, 0.0),
+                 Vector(0.2, 1.0, 0.3), Vector(0.2, 0.1, 1.0), 0.4};
+  if (name == "burgers")
+    return Scene{FAS::Burgers_vortex<Kernel>(), Point(1.0, 0, 0.5), Point(0.8, 0.3, 0.8), Vector(0, 1.0, 0.2),
+                 Vector(0.2, 0.1, 1.0), 0.6};
+  if (name == "abc")
+    return Scene{FAS::ABC_flow<Kernel>(), Point(1, 1, 1), Point(1, 1, 1), Vector(0.3, 0.2, 1.0),
+                 Vector(0.5, 0.8, 1.0), 0.5};
+  if (name == "tornado")
+    return Scene{FAS::Crawfis_tornado<Kernel>(), Point(0.5, 0.3, 0.5), Point(0.5, 0.5, 0.3),
+                 Vector(0.1, 1.0, 0.1), Vector(0.1, 0.1, 1.0), 0.3};
+  return std::nullopt;
+}
+
+std::vector<double> face_fluxes(const Mesh& tm, const Flow& flow)
+{
+  std::vector<double> values(tm.number_of_faces());
+  FAS::compute_face_normalized_flux(tm, flow, boost::make_iterator_property_map(values.begin(), get(CGAL::face_index, tm)));
+  return values;
+}
+
+// Opens `path` for writing, or says why not.
+std::optional<std::ofstream> open_output(const std::filesystem::path& path)
+{
+  std::ofstream os(path);
+  if (!os) {
+    std::cerr << "error: cannot write " << path << "\n";
+    return std::nullopt;
+  }
+  os << std::setprecision(10);
+  return os;
+}
+
+std::vector<double> vertex_velocities(const Mesh& tm, const Flow& flow)
+{
+  std::vector<double> values;
+  for (auto v : tm.vertices()) {
+    const auto sample = flow(tm.point(v));
+    const Vector w = sample ? *sample : Vector(0, 0, 0);
+    values.insert(values.end(), {w.x(), w.y(), w.z()});
+  }
+  return values;
+}
+
+bool write_surface(const std::filesystem::path& stem, const Mesh& tm, const Flow& flow)
+{
+  if (!CGAL::IO::write_PLY(stem.string() + ".ply", tm, CGAL::parameters::stream_precision(17))) {
+    std::cerr << "error: cannot write " << stem.string() << ".ply\n";
+    return false;
+  }
+  std::string error;
+  const bool vtp = FAS::IO::write_VTP(stem.string() + ".vtp", tm, {{"velocity", 3, vertex_velocities(tm, flow)}},
+                                      {{"normalized_flux", 1, face_fluxes(tm, flow)}},
+                                      CGAL::parameters::default_values(), &error);
+  if (!vtp)
+    std::cerr << "error: " << error << "\n";
+  return vtp;
+}
+
+struct Run_summary {
+  std::string alignment;
+  std::size_t faces = 0;
+  FAS::Alignment_report report;
+  double initial_flux = 0;
+  double mean_gtransf_ms = 0, mean_solve_ms = 0;
+};
+
+std::optional<Run_summary> align(const std::string& flow_name, const Scene& scene, FAS::Alignment alignment,
+                                 std::size_t faces, const std::filesystem::path& out)
+{
+  const bool tangential = alignment == FAS::Alignment::TANGENTIAL;
+  const std::string name = tangential ? "tangential" : "orthogonal";
+  Mesh tm;
+  FAS::make_planar_patch(tm, tangential ? scene.tangential_center : scene.orthogonal_center,
+                         tangential ? scene.tangential_normal : scene.orthogonal_normal, scene.size, scene.size,
+                         faces);
+  if (!write_surface(out / (name + "_initial"), tm, scene.flow))
+    return std::nullopt;
+
+  std::vector<FAS::Iteration_report> iterations;
+  FAS::Flow_aligned_deformation<Mesh, Flow> deformation(
+      tm, scene.flow, alignment,
+      CGAL::parameters::number_of_iterations(200).visitor(
+          [&](const FAS::Iteration_report& r) { iterations.push_back(r); }));
+  Run_summary summary;
+  summary.alignment = name;
+  summary.faces = tm.number_of_faces();
+  summary.initial_flux = FAS::normalized_flux(tm, scene.flow);
+  summary.report = deformation.run();
+  for (const auto& r : iterations) {
+    summary.mean_gtransf_ms += r.gradient_transformation_ms / iterations.size();
+    summary.mean_solve_ms += r.solve_ms / iterations.size();
+  }
+  if (!write_surface(out / (name + "_aligned"), tm, scene.flow))
+    return std::nullopt;
+
+  auto csv = open_output(out / (name + "_flux.csv"));
+  if (!csv)
+    return std::nullopt;
+  {
+    std::ostream& os = *csv;
+    os << "iteration,normalized_flux,max_rotation_angle,max_vertex_step,folds,outside_samples,invalid_samples,"
+          "zero_samples,gtransf_ms,solve_ms,converged\n";
+    for (const auto& r : iterations)
+      os << r.iteration << ',' << r.normalized_flux << ',' << r.max_rotation_angle << ',' << r.max_vertex_step << ','
+         << r.number_of_folds << ',' << r.number_of_outside_samples << ',' << r.number_of_invalid_samples << ','
+         << r.number_of_zero_samples << ',' << r.gradient_transformation_ms << ',' << r.solve_ms << ','
+         << (r.converged ? 1 : 0) << '\n';
+    // The flux of the final surface, which no iteration started from.
+    os << iterations.size() + 1 << ',' << summary.report.normalized_flux << ",,,,,,,,,\n";
+  }
+  std::cout << flow_name << ", " << name << ": " << summary.faces << " faces, flux " << summary.initial_flux
+            << " -> " << summary.report.normalized_flux << " in " << summary.report.number_of_iterations
+            << " iterations (" << (summary.report.converged ? "converged" : "not converged") << ")\n";
+  return summary;
+}
+
+int main(int argc, char** argv)
+{
+  std::string flow_name = "cylinder", alignment = "both";
+  std::size_t faces = 5000;
+  std::filesystem::path out = "flow_aligned_surfaces_output";
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (arg == "--flow" && has_value)
+      flow_name = argv[++i];
+    else if (arg == "--alignment" && has_value)
+      alignment = argv[++i];
+    else if (arg == "--faces" && has_value)
+      faces = std::strtoul(argv[++i], nullptr, 10);
+    else if (arg == "--output" && has_value)
+      out = argv[++i];
+    else {
+      std::cerr << "usage: " << argv[0]
+                << " [--flow cylinder|point-source|sphere|helical|hill|burgers|abc|tornado]"
+                   " [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]\n"
+                << "error: unknown or incomplete argument '" << arg << "'\n";
+      return 2;
+    }
+  }
+  const std::optional<Scene> scene = make_scene(flow_name);
+  if (!scene) {
+    std::cerr << "error: --flow: unknown flow '" << flow_name << "'\n";
+    return 2;
+  }
+  if (alignment != "tangential" && alignment != "orthogonal" && alignment != "both") {
+    std::cerr << "error: --alignment: expected tangential, orthogonal or both, got '" << alignment << "'\n";
+    return 2;
+  }
+  if (faces < 2 || faces > 10'000'000) {
+    std::cerr << "error: --faces: expected a number of faces between 2 and 1e7\n";
+    return 2;
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(out, ec);
+  if (ec) {
+    std::cerr << "error: --output: cannot create " << out << ": " << ec.message() << "\n";
+    return 1;
+  }
+
+  std::vector<Run_summary> runs;
+  try {
+    for (const auto& [name, value] : {std::pair{"tangential", FAS::Alignment::TANGENTIAL},
+                                      std::pair{"orthogonal", FAS::Alignment::ORTHOGONAL}}) {
+      if (alignment != "both" && alignment != name)
+        continue;
+      const auto run = align(flow_name, *scene, value, faces, out);
+      if (!run)
+        return 1;
+      runs.push_back(*run);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+
+  auto json = open_output(out / "summary.json");
+  if (!json)
+    return 1;
+  {
+    std::ostream& os = *json;
+    os << "{\n  \"flow\": \"" << flow_name << "\",\n  \"runs\": [\n";
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const Run_summary& r = runs[i];
+      os << "    {\"alignment\": \"" << r.alignment << "\", \"faces\": " << r.faces
+         << ", \"iterations\": " << r.report.number_of_iterations
+         << ", \"converged\": " << (r.report.converged ? "true" : "false")
+         << ", \"initial_normalized_flux\": " << r.initial_flux
+         << ", \"final_normalized_flux\": " << r.report.normalized_flux << ", \"factor_ms\": " << r.report.factor_ms
+         << ", \"mean_gtransf_ms\": " << r.mean_gtransf_ms << ", \"mean_solve_ms\": " << r.mean_solve_ms
+         << ", \"files\": [\"" << r.alignment << "_initial.ply\", \"" << r.alignment << "_initial.vtp\", \""
+         << r.alignment << "_aligned.ply\", \"" << r.alignment << "_aligned.vtp\", \"" << r.alignment
+         << "_flux.csv\"]}" << (i + 1 < runs.size() ? "," : "") << "\n";
+    }
+    os << "  ]\n}\n";
+  }
+  std::cout << "results written to " << std::filesystem::absolute(out).string() << "\n";
+  return 0;
+}

@@ -1,0 +1,578 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The interactive flux-optimizing Poisson deformation of Section 4 of the paper.
+// Each iteration k rotates every face's coordinate gradients toward the flow
+// (Y'_j = Y_j T_j^T with Y = G X_k, G on the reference mesh M_0) and reconstructs
+//
+//   X_{k+1} = (L + W)^{-1} (D Y' + W X_c)
+//
+// with L, D on M_0 factored once.  T_j = sqrt(A_j^0 / A_j^k) R_fold R(n_j x v_j, angle_j),
+// angle_j = gamma(n_j, v_j) (orthogonal) or gamma(n_j, v_j) - pi/2 (tangential),
+// clamped to eta.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_FLOW_ALIGNED_DEFORMATION_H
+#define CGAL_FLOW_ALIGNED_SURFACES_FLOW_ALIGNED_DEFORMATION_H
+
+#include <CGAL/Flow_aligned_surfaces/Alignment.h>
+#include <CGAL/Flow_aligned_surfaces/measure.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
+#include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
+#include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
+#include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
+#include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+
+/*!
+\ingroup PkgFlowAlignedSurfacesRef
+
+\brief The interactive flow-aligning deformation of a triangulated surface (Section 4 of
+the paper): each iteration rotates every face a little toward the flow and reconstructs the
+surface by a Poisson solve whose matrix was factored once.
+
+The mesh `tm` given at construction is the surface the user sees: every iteration, rigid
+move and growth writes the new vertex positions through the vertex point map, and every
+iteration reads them back first, so the user may also move vertices between iterations.
+The positions at construction are the reference mesh \f$ M_0 \f$ on which the operators are
+discretized; iterations never accumulate errors because they always reconstruct from it.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph` whose faces are triangles
+\tparam FlowField a model of `FlowField_3` whose point type is the point type of the vertex point map
+\tparam VertexPointMap a model of `ReadWritePropertyMap` with the vertices as key type and a
+        point of `GeomTraits` as value type; default: the internal vertex point map of `tm`
+\tparam GeomTraits a model of `Kernel`; default: the kernel of the point type
+\tparam SparseLinearSolver a model of `SparseLinearAlgebraWithFactorTraits_d` wrapping an Eigen
+        sparse Cholesky solver, such as `CGAL::Eigen_solver_traits<S>`; its `solver()` is used to
+        factor once and solve the three coordinates at once.  Default:
+        `CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>>`
+        when CHOLMOD was found (the macro `CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD`), else
+        `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`.
+
+\sa `align_to_flow()`, `normalized_flux()`
+*/
+template <class TriangleMesh, class FlowField, class VertexPointMap = CGAL::Default,
+          class GeomTraits = CGAL::Default, class SparseLinearSolver = CGAL::Default>
+class Flow_aligned_deformation {
+public:
+  /// \name Types
+  /// @{
+
+  /// The vertex point map.
+  using Vertex_point_map = typename CGAL::Default::Get<
+      VertexPointMap, typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::type;
+  /// The point type of the vertex point map.
+  using Point_3 = typename boost::property_traits<Vertex_point_map>::value_type;
+  /// The geometric traits.
+  using Geom_traits =
+      typename CGAL::Default::Get<GeomTraits, typename CGAL::Kernel_traits<Point_3>::Kernel>::type;
+  /// The number type.
+  using FT = typename Geom_traits::FT;
+  /// The vector type.
+  using Vector_3 = typename Geom_traits::Vector_3;
+  /// The sparse linear solver.
+  using Sparse_linear_solver =
+      typename CGAL::Default::Get<SparseLinearSolver, internal::Default_sparse_linear_solver>::type;
+  /// The type of the callable that receives every iteration's report.
+  using Visitor = std::function<void(const Iteration_report&)>;
+  /// @}
+
+private:
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Positions = internal::Positions;
+
+public:
+  /// \name Construction
+  /// @{
+  /*!
+  Prepares the deformation of `tm`: assembles the Poisson operators on the current positions
+  (\f$ M_0 \f$) and factors \f$ L + W \f$ once.
+
+  \param tm the surface; it must stay alive and keep its connectivity while this object is used
+  \param field the flow field (copied)
+  \param alignment tangential (stream surface) or orthogonal (seeding surface)
+  \param np an optional sequence of named parameters among the ones listed below
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{a property map associating points to the vertices of `tm`}
+      \cgalParamType{`Vertex_point_map`}
+      \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{geom_traits}
+      \cgalParamDescription{an instance of a geometric traits class}
+      \cgalParamType{`Geom_traits`}
+      \cgalParamDefault{a default-constructed `Geom_traits`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and `num_vertices(tm) - 1`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `std::size_t` as value type}
+      \cgalParamDefault{an automatically indexed internal map}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_index_map}
+      \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and `num_faces(tm) - 1`}
+      \cgalParamType{a class model of `ReadablePropertyMap` with `std::size_t` as value type}
+      \cgalParamDefault{an automatically indexed internal map}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_iterations}
+      \cgalParamDescription{the largest number of iterations of `run()`}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`100`}
+    \cgalParamNEnd
+    \cgalParamNBegin{visitor}
+      \cgalParamDescription{a callable invoked with the `Iteration_report` of every iteration}
+      \cgalParamType{a type convertible to `Visitor`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{max_rotation_angle}
+      \cgalParamDescription{η: the largest rotation (radians) applied to a face in one iteration
+        (see `Flow_aligned_surfaces::parameters::max_rotation_angle()`)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`0.1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{convergence_angle}
+      \cgalParamDescription{ε: converged when every requested rotation is below it (radians)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`1e-6`}
+    \cgalParamNEnd
+    \cgalParamNBegin{convergence_step}
+      \cgalParamDescription{also converged when the largest vertex displacement of an iteration
+        is below this fraction of the bounding-box diagonal; `0` disables this rule}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`1e-4`}
+    \cgalParamNEnd
+    \cgalParamNBegin{max_dihedral_angle}
+      \cgalParamDescription{θmax: the largest angle between the normals of two adjacent faces
+        before the fold correction acts (radians)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`CGAL_PI / 2`}
+    \cgalParamNEnd
+    \cgalParamNBegin{area_correction}
+      \cgalParamDescription{whether gradients are rescaled by \f$ \sqrt{A_j^0/A_j^k} \f$}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{constraint_weight}
+      \cgalParamDescription{the soft-constraint weight relative to the mean diagonal of `L`}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`1e-3`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \throws std::invalid_argument if `tm` is empty, not a valid manifold triangle mesh, has a
+          degenerate face, or a parameter is out of range; the message names what is wrong.
+  \throws std::runtime_error if the factorization fails.
+  */
+  template <class NamedParameters = parameters::Default_named_parameters>
+  Flow_aligned_deformation(TriangleMesh& tm, const FlowField& field, Alignment alignment,
+                           const NamedParameters& np = CGAL::parameters::default_values())
+      : m_tm(tm), m_field(field), m_alignment(alignment)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    namespace fnp = Flow_aligned_surfaces::internal_np;
+
+    m_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                             get_property_map(CGAL::vertex_point, tm));
+    m_gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+    m_max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 100u);
+    m_visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Visitor());
+    m_eta = choose_parameter(get_parameter(np, fnp::max_rotation_angle_t()), 0.1);
+    m_epsilon = choose_parameter(get_parameter(np, fnp::convergence_angle_t()), 1e-6);
+    m_convergence_step = choose_parameter(get_parameter(np, fnp::convergence_step_t()), 1e-4);
+    m_theta_max = choose_parameter(get_parameter(np, fnp::max_dihedral_angle_t()), CGAL_PI / 2);
+    m_area_correction = choose_parameter(get_parameter(np, fnp::area_correction_t()), true);
+    m_relative_constraint_weight = choose_parameter(get_parameter(np, fnp::constraint_weight_t()), 1e-3);
+    check_parameter("max_rotation_angle", m_eta, m_eta > 0 && m_eta <= CGAL_PI);
+    check_parameter("convergence_angle", m_epsilon, m_epsilon >= 0);
+    check_parameter("convergence_step", m_convergence_step, m_convergence_step >= 0);
+    check_parameter("max_dihedral_angle", m_theta_max, m_theta_max > 0 && m_theta_max <= CGAL_PI);
+    check_parameter("constraint_weight", m_relative_constraint_weight, m_relative_constraint_weight > 0);
+    // Requested angles never exceed pi/2, so a larger eta never clamps.
+    m_cos_eta = std::cos((std::min)(m_eta, CGAL_PI / 2));
+    m_sin_eta = std::sin((std::min)(m_eta, CGAL_PI / 2));
+
+    internal::check_triangle_mesh(tm, "Flow_aligned_deformation: tm");
+    const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+    const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+    m_vertices = internal::vertices_in_index_order(tm, vim);
+    m_arrays = internal::make_mesh_arrays(tm, vim, fim);
+    rebuild_operators(internal::read_positions(m_vertices, m_vpm));
+  }
+  /// @}
+
+  /// \name Iterations
+  /// @{
+
+  /*!
+  Performs one iteration on the current positions of `tm` and writes the new ones.
+  Calls the visitor with the report, and returns it.
+  */
+  Iteration_report step()
+  {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    Iteration_report report;
+    report.iteration = ++m_number_of_iterations;
+
+    const Positions x = internal::read_positions(m_vertices, m_vpm);
+    const std::size_t n = m_ops.faces.size();
+    m_transforms.resize(n);
+    m_normals.resize(n);
+    m_has_normal.assign(n, false);
+
+    double flux = 0, flux_area = 0;
+    Rotation_angle largest_requested;
+    auto construct_point = m_gt.construct_point_3_object();
+    for (std::size_t j = 0; j < n; ++j) {
+      const internal::Reference_face& face = m_ops.faces[j];
+      const Eigen::Vector3d a = x.row(face.vertices[0]), b = x.row(face.vertices[1]), c = x.row(face.vertices[2]);
+      const Eigen::Vector3d cross = (b - a).cross(c - a);
+      const double twice_area = cross.norm();
+      Eigen::Matrix3d& t = m_transforms[j];
+      t.setIdentity();
+      // A face collapsed by the user has no normal; it keeps its gradients (T = I).
+      if (!(twice_area > 0) || !std::isfinite(twice_area))
+        continue;
+      const Eigen::Vector3d normal = cross / twice_area;
+      m_normals[j] = normal;
+      m_has_normal[j] = true;
+
+      const Eigen::Vector3d centroid = (a + b + c) / 3;
+      const internal::Flow_sample sample =
+          internal::sample_flow(m_field, construct_point(centroid.x(), centroid.y(), centroid.z()));
+      switch (sample.kind) {
+      case internal::Sample_kind::OUTSIDE: ++report.number_of_outside_samples; break;
+      case internal::Sample_kind::INVALID: ++report.number_of_invalid_samples; break;
+      case internal::Sample_kind::ZERO: ++report.number_of_zero_samples; break;
+      case internal::Sample_kind::VALID: {
+        const double area = 0.5 * twice_area;
+        flux += area * std::abs(normal.dot(sample.direction));
+        flux_area += area;
+        Rotation_angle requested;
+        t = alignment_rotation(normal, sample.direction, requested);
+        if (requested.key() > largest_requested.key())
+          largest_requested = requested;
+        break;
+      }
+      }
+      if (m_area_correction)
+        t *= std::sqrt(face.area / (0.5 * twice_area));
+    }
+    report.normalized_flux = flux_area > 0 ? flux / flux_area : 0;
+    report.max_rotation_angle = largest_requested.radians();
+
+    // Fold correction: open every crease sharper than theta_max by delta/2 on each side.
+    for (const auto& edge : m_arrays.interior_edges) {
+      const std::size_t p = edge.faces[0], q = edge.faces[1];
+      if (!m_has_normal[p] || !m_has_normal[q])
+        continue;
+      const double theta = internal::angle_between(m_normals[p], m_normals[q]);
+      const double delta = theta - m_theta_max;
+      if (!(delta > 0))
+        continue;
+      Eigen::Vector3d axis = m_normals[p].cross(m_normals[q]);
+      // Exactly opposite normals: any axis orthogonal to both opens the fold; the shared edge is one.
+      if (axis.norm() < 1e-12)
+        axis = x.row(edge.vertices[1]) - x.row(edge.vertices[0]);
+      axis.normalize();
+      m_transforms[p] = internal::rotation_matrix(axis, delta / 2) * m_transforms[p];
+      m_transforms[q] = internal::rotation_matrix(-axis, delta / 2) * m_transforms[q];
+      ++report.number_of_folds;
+    }
+
+    // Right-hand side D Y' + W X_c; face j contributes K_j X_j T_j^T (K_j its M_0 stiffness).
+    m_rhs.setZero(x.rows(), 3);
+    for (Eigen::Index v : m_constrained_vertices)
+      m_rhs.row(v) = m_constraint_weight * x.row(v);
+    for (std::size_t j = 0; j < n; ++j) {
+      const internal::Reference_face& face = m_ops.faces[j];
+      Eigen::Matrix3d local;
+      for (int i = 0; i < 3; ++i)
+        local.row(i) = x.row(face.vertices[i]);
+      const Eigen::Matrix3d contribution = face.stiffness * local * m_transforms[j].transpose();
+      for (int i = 0; i < 3; ++i)
+        m_rhs.row(face.vertices[i]) += contribution.row(i);
+    }
+    const auto transformed = Clock::now();
+
+    Positions next = m_solver.solver().solve(m_rhs);
+    const auto solved = Clock::now();
+    if (m_solver.solver().info() != Eigen::Success || !next.allFinite())
+      throw std::runtime_error("Flow_aligned_deformation::step(): the Poisson solve failed");
+
+    const double diagonal = bounding_box_diagonal(x);
+    report.max_vertex_step = diagonal > 0 ? (next - x).rowwise().norm().maxCoeff() / diagonal : 0;
+    internal::write_positions(next, m_vertices, m_vpm, m_gt);
+
+    report.gradient_transformation_ms = std::chrono::duration<double, std::milli>(transformed - start).count();
+    report.solve_ms = std::chrono::duration<double, std::milli>(solved - transformed).count();
+    // The paper's rule (every rotation below epsilon; a fold correction is a rotation too), or
+    // the practical one: on curved targets the requested rotations stall at a floor of about
+    // 0.1 h kappa that the Poisson solve cannot remove, while the surface no longer moves.
+    report.converged = (report.max_rotation_angle < m_epsilon && report.number_of_folds == 0) ||
+                       report.max_vertex_step < m_convergence_step;
+    m_last_report = report;
+    if (m_visitor)
+      m_visitor(report);
+    return report;
+  }
+
+  /*!
+  Iterates until an iteration converges or `number_of_iterations` (given at construction)
+  iterations were made.  The report's flux is that of the final surface.
+  */
+  Alignment_report run() { return run(m_max_iterations); }
+
+  /// Same as `run()` with at most `max_iterations` iterations.
+  Alignment_report run(std::size_t max_iterations)
+  {
+    Alignment_report result;
+    for (std::size_t k = 0; k < max_iterations; ++k) {
+      const Iteration_report r = step();
+      ++result.number_of_iterations;
+      result.max_rotation_angle = r.max_rotation_angle;
+      if (r.converged) {
+        result.converged = true;
+        break;
+      }
+    }
+    result.normalized_flux = current_normalized_flux();
+    result.factor_ms = m_factor_ms;
+    return result;
+  }
+  /// @}
+
+  /// \name Rigid Moves
+  /// Moves between iterations: they change the current surface only, so nothing is refactored.
+  /// @{
+
+  /// Translates the surface by `v`.
+  void translate(const Vector_3& v)
+  {
+    Positions x = internal::read_positions(m_vertices, m_vpm);
+    x.rowwise() += to_eigen(v).transpose();
+    internal::write_positions(x, m_vertices, m_vpm, m_gt);
+  }
+
+  /// Rotates the surface by `angle` (radians, right-handed) about the line through `center`
+  /// along `axis`.  \pre `axis` is not the zero vector.
+  void rotate(const Point_3& center, const Vector_3& axis, FT angle)
+  {
+    const Eigen::Vector3d a = to_eigen(axis);
+    if (!(a.norm() > 0) || !a.allFinite() || !std::isfinite(CGAL::to_double(angle)))
+      throw std::invalid_argument("Flow_aligned_deformation::rotate(): axis must be a finite non-zero "
+                                  "vector and angle finite");
+    const Eigen::Matrix3d r = internal::rotation_matrix(a.normalized(), CGAL::to_double(angle));
+    const Eigen::RowVector3d c(CGAL::to_double(center.x()), CGAL::to_double(center.y()),
+                               CGAL::to_double(center.z()));
+    Positions x = internal::read_positions(m_vertices, m_vpm);
+    x = ((x.rowwise() - c) * r.transpose()).rowwise() + c;
+    internal::write_positions(x, m_vertices, m_vpm, m_gt);
+  }
+
+  /// Rotates the surface by `angle` about the axis `axis` through the centroid of its vertices.
+  void rotate(const Vector_3& axis, FT angle)
+  {
+    const Eigen::RowVector3d c = internal::read_positions(m_vertices, m_vpm).colwise().mean();
+    rotate(m_gt.construct_point_3_object()(c[0], c[1], c[2]), axis, angle);
+  }
+  /// @}
+
+  /// \name Access
+  /// @{
+
+  /// The surface.
+  const TriangleMesh& mesh() const { return m_tm; }
+  /// The alignment target.
+  Alignment alignment() const { return m_alignment; }
+  /// Changes the alignment target; the factorization is kept.
+  void set_alignment(Alignment alignment) { m_alignment = alignment; }
+  /// The flow field.
+  const FlowField& field() const { return m_field; }
+  /// Iterations performed since construction.
+  std::size_t number_of_iterations() const { return m_number_of_iterations; }
+  /// Factorizations of \f$ L + W \f$ performed since construction (one, unless the connectivity changed).
+  std::size_t number_of_factorizations() const { return m_number_of_factorizations; }
+  /// The report of the last iteration.
+  const Iteration_report& last_report() const { return m_last_report; }
+  /// The normalized flux of the current surface (one more sampling of the field).
+  double current_normalized_flux() const
+  {
+    return internal::normalized_flux(internal::read_positions(m_vertices, m_vpm), m_arrays.face_vertices,
+                                     m_field, m_gt);
+  }
+  /// @}
+
+private:
+  static void check_parameter(const char* name, double value, bool valid)
+  {
+    if (!valid || !std::isfinite(value))
+      throw std::invalid_argument(std::string("Flow_aligned_deformation: parameter ") + name +
+                                  " = " + std::to_string(value) + " is out of range");
+  }
+
+  static Eigen::Vector3d to_eigen(const Vector_3& v)
+  {
+    return Eigen::Vector3d(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
+  }
+
+  static double bounding_box_diagonal(const Positions& x)
+  {
+    return (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
+  }
+
+  // An angle in [0, pi/2] known by its cosine and sine; compared through a key that is
+  // monotone in the angle and keeps full precision for tiny angles, so the hot loop needs no
+  // trigonometric function.
+  struct Rotation_angle {
+    double cos = 1, sin = 0;
+    double key() const { return cos >= sin ? sin : 2 - cos; }
+    double radians() const { return std::atan2(sin, cos); }
+  };
+
+  // The rotation that turns the unit normal toward alignment, clamped to eta; `requested`
+  // receives the unclamped angle's magnitude.  With c = cos(gamma), s = sin(gamma) the angle
+  // is gamma (orthogonal; gamma - pi when -v is nearer, so that a patch whose normal faces
+  // against the flow is not turned over) or gamma - pi/2 (tangential).
+  Eigen::Matrix3d alignment_rotation(const Eigen::Vector3d& normal, const Eigen::Vector3d& direction,
+                                     Rotation_angle& requested) const
+  {
+    Eigen::Vector3d axis = normal.cross(direction);
+    const double s = axis.norm(), c = normal.dot(direction);
+    double angle_cos = 0, angle_sin = 0;
+    // n parallel to v: n x v defines no axis.  Orthogonally there is nothing to do;
+    // tangentially any axis in the face's plane turns n away from v.
+    if (s < 1e-12) {
+      if (m_alignment == Alignment::ORTHOGONAL) {
+        requested = Rotation_angle{1, s};
+        return Eigen::Matrix3d::Identity();
+      }
+      axis = internal::any_orthogonal(normal);
+      angle_cos = s;
+      angle_sin = -std::abs(c);
+    }
+    else {
+      axis /= s;
+      if (m_alignment == Alignment::ORTHOGONAL) {
+        angle_cos = std::abs(c);
+        angle_sin = c >= 0 ? s : -s;
+      }
+      else {
+        angle_cos = s;
+        angle_sin = -c;
+      }
+    }
+    requested = Rotation_angle{angle_cos, std::abs(angle_sin)};
+    if (angle_cos < m_cos_eta) {
+      angle_cos = m_cos_eta;
+      angle_sin = angle_sin >= 0 ? m_sin_eta : -m_sin_eta;
+    }
+    return internal::rotation_matrix(axis, angle_cos, angle_sin);
+  }
+
+  // Assembles the operators on the reference positions, chooses the constrained faces and
+  // factors L + W.  Called at construction and whenever the connectivity changes.
+  void rebuild_operators(const Positions& reference)
+  {
+    auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices);
+    if (auto* degenerate = std::get_if<internal::Degenerate_face>(&built))
+      throw std::invalid_argument("Flow_aligned_deformation: tm: face " + std::to_string(degenerate->face) +
+                                  " is degenerate (zero area)");
+    m_ops = std::move(std::get<internal::Poisson_operators>(built));
+
+    // The face nearest to the area-weighted barycenter of each connected component.
+    const std::size_t components = m_arrays.number_of_components;
+    std::vector<Eigen::Vector3d> barycenter(components, Eigen::Vector3d::Zero());
+    std::vector<double> component_area(components, 0);
+    std::vector<Eigen::Vector3d> centroid(m_ops.faces.size());
+    for (std::size_t j = 0; j < m_ops.faces.size(); ++j) {
+      const auto& f = m_ops.faces[j];
+      centroid[j] = (reference.row(f.vertices[0]) + reference.row(f.vertices[1]) + reference.row(f.vertices[2]))
+                        .transpose() / 3;
+      barycenter[m_arrays.face_component[j]] += f.area * centroid[j];
+      component_area[m_arrays.face_component[j]] += f.area;
+    }
+    std::vector<std::size_t> nearest(components, 0);
+    std::vector<double> nearest_distance(components, std::numeric_limits<double>::infinity());
+    for (std::size_t j = 0; j < m_ops.faces.size(); ++j) {
+      const std::size_t c = m_arrays.face_component[j];
+      const double d = (centroid[j] - barycenter[c] / component_area[c]).squaredNorm();
+      if (d < nearest_distance[c]) {
+        nearest_distance[c] = d;
+        nearest[c] = j;
+      }
+    }
+    m_constrained_vertices.clear();
+    for (std::size_t c = 0; c < components; ++c)
+      for (Eigen::Index v : m_ops.faces[nearest[c]].vertices)
+        m_constrained_vertices.push_back(v);
+
+    // Small weight: it only has to remove the translational null space.  A large one pins
+    // the constrained face's orientation and leaves a kink there.
+    m_constraint_weight = m_relative_constraint_weight * m_ops.L.diagonal().mean();
+    Eigen::SparseMatrix<double> system = m_ops.L;
+    for (Eigen::Index v : m_constrained_vertices)
+      system.coeffRef(v, v) += m_constraint_weight;
+
+    const auto start = std::chrono::steady_clock::now();
+    internal::factor_or_throw(m_solver, system, "L + W");
+    m_factor_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ++m_number_of_factorizations;
+  }
+
+  TriangleMesh& m_tm;
+  FlowField m_field;
+  Alignment m_alignment;
+  Vertex_point_map m_vpm;
+  Geom_traits m_gt;
+  std::size_t m_max_iterations = 100;
+  Visitor m_visitor;
+  double m_cos_eta = 1, m_sin_eta = 0;
+  double m_eta = 0.1, m_epsilon = 1e-6, m_convergence_step = 1e-4, m_theta_max = CGAL_PI / 2;
+  bool m_area_correction = true;
+  double m_relative_constraint_weight = 1e-3;
+
+  std::vector<vertex_descriptor> m_vertices; // in vertex-index order
+  internal::Mesh_arrays m_arrays;
+  internal::Poisson_operators m_ops;
+  std::vector<Eigen::Index> m_constrained_vertices;
+  double m_constraint_weight = 0;
+  Sparse_linear_solver m_solver;
+  std::size_t m_number_of_factorizations = 0;
+  double m_factor_ms = 0;
+  std::size_t m_number_of_iterations = 0;
+  Iteration_report m_last_report;
+
+  // Per-iteration buffers, kept to avoid reallocations.
+  std::vector<Eigen::Matrix3d> m_transforms;
+  std::vector<Eigen::Vector3d> m_normals;
+  std::vector<bool> m_has_normal;
+  Positions m_rhs;
+};
+
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_FLOW_ALIGNED_DEFORMATION_H

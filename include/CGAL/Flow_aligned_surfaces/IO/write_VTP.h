@@ -1,0 +1,157 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A surface mesh with per-vertex and per-face data arrays as a VTK XML PolyData
+// file (.vtp, ASCII), which ParaView and VTK open.  CGAL's own write_VTP needs
+// the VTK library and writes no data arrays; this writer needs neither.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_VTP_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_VTP_H
+
+#include <CGAL/Flow_aligned_surfaces/internal/write_file_atomically.h>
+#include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace IO {
+
+/// \ingroup PkgFlowAlignedSurfacesIO
+/// A named data array attached to the vertices or faces of a mesh: `values` holds
+/// `number_of_components` values per vertex (or face), in the order of the vertex (face) index map.
+struct Data_array {
+  std::string name;                  ///< the array's name, as ParaView shows it
+  int number_of_components = 1;      ///< 1 for scalars, 3 for vectors
+  std::vector<double> values;        ///< `number_of_components` values per element
+};
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Writes `tm` with optional per-vertex and per-face arrays to `filename` as a VTK XML
+PolyData file (ASCII `.vtp`).
+
+The file is first written beside `filename` and renamed over it only when complete, so an
+existing file is never left half-written.  Non-finite values are written as `NaN`, which
+VTK reads as such.
+
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the output file
+\param tm the mesh (any polygon mesh; faces keep their degree)
+\param point_data arrays with one tuple per vertex, in the order of the vertex index map
+\param cell_data arrays with one tuple per face, in the order of the face index map
+\param np optional named parameters: `vertex_point_map`, `vertex_index_map`, `face_index_map`
+       as in `normalized_flux()`, and `stream_precision` (the number of significant digits, default 17)
+\param error if not null, receives the reason of a failure
+
+\returns `true` on success; `false` if an array has the wrong size or the file could not be
+written, with the reason in `error` when it is not null.
+*/
+template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
+bool write_VTP(const std::string& filename, const TriangleMesh& tm, const std::vector<Data_array>& point_data = {},
+               const std::vector<Data_array>& cell_data = {},
+               const NamedParameters& np = CGAL::parameters::default_values(), std::string* error = nullptr)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
+
+  const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
+  auto fail = [&](const std::string& reason) {
+    if (error)
+      *error = "write_VTP: " + filename + ": " + reason;
+    return false;
+  };
+  for (const auto* arrays : {&point_data, &cell_data})
+    for (const Data_array& a : *arrays) {
+      const std::size_t expected = std::size_t(a.number_of_components) * (arrays == &point_data ? nv : nf);
+      if (a.number_of_components < 1 || a.values.size() != expected)
+        return fail("array '" + a.name + "' has " + std::to_string(a.values.size()) + " values, expected " +
+                    std::to_string(expected));
+    }
+
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> ordered_vertices(nv);
+  for (auto v : vertices(tm))
+    ordered_vertices[get(vim, v)] = v;
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> ordered_faces(nf);
+  for (auto f : faces(tm))
+    ordered_faces[get(fim, f)] = f;
+
+  auto write_value = [](std::ostream& os, double x) {
+    if (std::isfinite(x))
+      os << x;
+    else
+      os << (std::isnan(x) ? "NaN" : (x > 0 ? "Infinity" : "-Infinity"));
+  };
+  auto write_arrays = [&](std::ostream& os, const std::vector<Data_array>& arrays) {
+    for (const Data_array& a : arrays) {
+      os << "        <DataArray type=\"Float64\" Name=\"" << a.name << "\" NumberOfComponents=\""
+         << a.number_of_components << "\" format=\"ascii\">\n";
+      for (std::size_t i = 0; i < a.values.size(); ++i) {
+        write_value(os, a.values[i]);
+        os << ((i + 1) % std::size_t(a.number_of_components) == 0 ? '\n' : ' ');
+      }
+      os << "        </DataArray>\n";
+    }
+  };
+
+  std::string reason;
+  const bool written = internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+    os.precision(precision);
+    os << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+       << "  <PolyData>\n"
+       << "    <Piece NumberOfPoints=\"" << nv << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\""
+       << " NumberOfPolys=\"" << nf << "\">\n"
+       << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (auto v : ordered_vertices) {
+      const auto& p = get(vpm, v);
+      os << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z()) << '\n';
+    }
+    os << "        </DataArray>\n      </Points>\n      <Polys>\n"
+       << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    std::vector<std::size_t> offsets;
+    offsets.reserve(nf);
+    std::size_t offset = 0;
+    for (auto f : ordered_faces) {
+      for (auto v : vertices_around_face(halfedge(f, tm), tm)) {
+        os << get(vim, v) << ' ';
+        ++offset;
+      }
+      os << '\n';
+      offsets.push_back(offset);
+    }
+    os << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (std::size_t o : offsets)
+      os << o << '\n';
+    os << "        </DataArray>\n      </Polys>\n";
+    os << "      <PointData>\n";
+    write_arrays(os, point_data);
+    os << "      </PointData>\n      <CellData>\n";
+    write_arrays(os, cell_data);
+    os << "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  });
+  return written ? true : fail(reason);
+}
+
+} // namespace IO
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_VTP_H

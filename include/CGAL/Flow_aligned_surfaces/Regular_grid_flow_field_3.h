@@ -1,0 +1,447 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A model of `FlowField_3` sampled on a uniform grid: v(p) is the trilinear interpolation of
+// the velocities stored at the nx × ny × nz nodes  origin + (i hx, j hy, k hz), and std::nullopt
+// outside the closed box [origin, origin + ((nx-1) hx, (ny-1) hy, (nz-1) hz)] or where an
+// optional node mask marks the interpolation stencil as solid.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_REGULAR_GRID_FLOW_FIELD_3_H
+#define CGAL_FLOW_ALIGNED_SURFACES_REGULAR_GRID_FLOW_FIELD_3_H
+
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/assertions.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+
+/// \ingroup PkgFlowAlignedSurfacesFlows
+/// A velocity field given at the nodes of a uniform grid and trilinearly interpolated, a model
+/// of `FlowField_3`.
+///
+/// The grid has `nx × ny × nz` nodes (at least 2 along each axis) at
+/// `origin + (i·hx, j·hy, k·hz)`.  The velocities are stored as 32-bit floats, interleaved
+/// `x, y, z` per node, nodes ordered with `i` fastest, then `j`, then `k` (the order of VTK
+/// `STRUCTURED_POINTS` and of most CFD exports): node `(i, j, k)` starts at
+/// `3 · (i + nx · (j + ny · k))`.
+///
+/// The field is defined on the closed box `[origin, origin + ((nx−1)·hx, (ny−1)·hy, (nz−1)·hz)]`
+/// and returns `std::nullopt` elsewhere.  An optional node mask (nonzero = fluid, zero = solid)
+/// restricts the domain further: a point is outside when its trilinear interpolation would
+/// give a nonzero weight to a solid node.  So the interior of every cell touching a solid node is
+/// outside, and every closed cell whose 8 nodes are fluid is inside, including the faces it
+/// shares with solid cells.
+///
+/// Copies share the node arrays (through `std::shared_ptr`), so copying a field is cheap and
+/// the arrays are never duplicated.  A query performs no allocation and no virtual call.
+///
+/// \tparam GeomTraits a model of `Kernel`; the coordinates are converted to `double` with
+///         `CGAL::to_double()` for the interpolation.
+///
+/// \sa `sample_on_grid()`
+template <typename GeomTraits>
+class Regular_grid_flow_field_3
+{
+public:
+  /// \name Types
+  /// @{
+
+  /// The geometric traits.
+  typedef GeomTraits Geom_traits;
+  /// The number type.
+  typedef typename GeomTraits::FT FT;
+  /// The point type.
+  typedef typename GeomTraits::Point_3 Point_3;
+  /// The vector type.
+  typedef typename GeomTraits::Vector_3 Vector_3;
+  /// the numbers of nodes `{nx, ny, nz}`
+  typedef std::array<std::size_t, 3> Dimensions;
+  /// @}
+
+  /// \name Creation
+  /// @{
+
+  /// creates the field from its node values.
+  ///
+  /// \param origin the position of node `(0, 0, 0)`, the lower corner of the domain
+  /// \param hx,hy,hz the distances between neighbouring nodes along each axis
+  /// \param dimensions the numbers of nodes `{nx, ny, nz}` along each axis
+  /// \param values the `3·nx·ny·nz` velocity components in the order described above; pass it
+  ///        with `std::move()` to avoid a copy
+  /// \param mask either empty (every node is fluid) or `nx·ny·nz` flags, nonzero = fluid, in
+  ///        node order; pass it with `std::move()` to avoid a copy.  Values at solid nodes are
+  ///        never interpolated; non-finite ones are accepted there and stored as zero.
+  ///
+  /// \throws std::invalid_argument naming the faulty argument, with the expected and actual
+  ///         values, if a dimension is below 2, a spacing is not positive and finite, the
+  ///         origin is not finite, `values` or a nonempty `mask` has the wrong size, or a fluid
+  ///         node has a non-finite value.
+  Regular_grid_flow_field_3(const Point_3& origin, const FT& hx, const FT& hy, const FT& hz,
+                            const Dimensions& dimensions, std::vector<float> values,
+                            std::vector<unsigned char> mask = std::vector<unsigned char>())
+    : Regular_grid_flow_field_3(origin, Vector_3(hx, hy, hz), dimensions, std::move(values),
+                                std::move(mask))
+  {}
+
+  /// creates the field from its node values, with the spacings `(hx, hy, hz)` given as the
+  /// components of `spacing`; see the constructor above.
+  Regular_grid_flow_field_3(const Point_3& origin, const Vector_3& spacing,
+                            const Dimensions& dimensions, std::vector<float> values,
+                            std::vector<unsigned char> mask = std::vector<unsigned char>())
+    : origin_(origin), spacing_(spacing), n_(dimensions)
+  {
+    const std::size_t nodes = checked_number_of_nodes(origin, spacing, dimensions);
+    // Compared before anything is read or allocated: the sizes come from the caller.
+    if(values.size() / 3 != nodes || values.size() % 3 != 0) {
+      std::ostringstream msg;
+      msg << "Regular_grid_flow_field_3: values.size() is " << values.size()
+          << " but the dimensions " << dimensions_string(dimensions) << " need 3*nx*ny*nz = "
+          << 3 * nodes;
+      throw std::invalid_argument(msg.str());
+    }
+    if(!mask.empty() && mask.size() != nodes) {
+      std::ostringstream msg;
+      msg << "Regular_grid_flow_field_3: mask.size() is " << mask.size()
+          << " but the dimensions " << dimensions_string(dimensions)
+          << " need nx*ny*nz = " << nodes << " (or an empty mask for no mask)";
+      throw std::invalid_argument(msg.str());
+    }
+    for(std::size_t v = 0; v < nodes; ++v) {
+      float* c = values.data() + 3 * v;
+      if(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]))
+        continue;
+      if(!mask.empty() && mask[v] == 0) {
+        // A solid node can still get a zero weight in the interpolation (on the faces of fluid
+        // cells), and 0 * NaN would poison the result.
+        c[0] = c[1] = c[2] = 0.f;
+        continue;
+      }
+      const std::size_t i = v % n_[0], j = (v / n_[0]) % n_[1], k = v / (n_[0] * n_[1]);
+      std::ostringstream msg;
+      msg << "Regular_grid_flow_field_3: values of fluid node (" << i << ", " << j << ", " << k
+          << ") (values[" << 3 * v << ".." << 3 * v + 2 << "]) are (" << c[0] << ", " << c[1]
+          << ", " << c[2] << "); expected finite numbers";
+      throw std::invalid_argument(msg.str());
+    }
+
+    values_ = std::make_shared<const std::vector<float>>(std::move(values));
+    v_ = values_->data();
+    if(!mask.empty()) {
+      mask_ = std::make_shared<const std::vector<unsigned char>>(std::move(mask));
+      m_ = mask_->data();
+    }
+
+    const double o[3] = {CGAL::to_double(origin.x()), CGAL::to_double(origin.y()),
+                         CGAL::to_double(origin.z())};
+    const double h[3] = {CGAL::to_double(spacing.x()), CGAL::to_double(spacing.y()),
+                         CGAL::to_double(spacing.z())};
+    for(int a = 0; a < 3; ++a) {
+      lo_[a] = o[a];
+      h_[a] = h[a];
+      hi_[a] = node_coordinate(o[a], h[a], n_[a] - 1);
+      inv_h_[a] = 1. / h[a];
+    }
+    stride_y_ = n_[0];
+    stride_z_ = n_[0] * n_[1];
+  }
+
+  /// @}
+
+  /// \name Evaluation
+  /// @{
+
+  /// returns the trilinearly interpolated velocity at `p`, or `std::nullopt` if `p` is outside
+  /// the closed box or its interpolation stencil touches a solid node with a nonzero weight.
+  std::optional<Vector_3> operator()(const Point_3& p) const
+  {
+    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                         CGAL::to_double(p.z())};
+    // Written so that NaN coordinates fail too.  The box test is done in world coordinates so
+    // that it agrees exactly with `bbox()`.
+    if(!(x[0] >= lo_[0] && x[0] <= hi_[0] && x[1] >= lo_[1] && x[1] <= hi_[1] &&
+         x[2] >= lo_[2] && x[2] <= hi_[2]))
+      return std::nullopt;
+
+    std::size_t c[3];
+    double f[3], g[3];
+    for(int a = 0; a < 3; ++a) {
+      const double t = (x[a] - lo_[a]) * inv_h_[a]; // >= 0, so truncation is floor
+      // The upper boundary belongs to the last cell; rounding in t can only overshoot by ulps,
+      // which the clamp on f absorbs.
+      c[a] = (std::min)(static_cast<std::size_t>(t), n_[a] - 2);
+      f[a] = (std::min)(t - static_cast<double>(c[a]), 1.);
+      g[a] = 1. - f[a];
+    }
+    const std::size_t base = c[0] + stride_y_ * c[1] + stride_z_ * c[2];
+    const std::size_t corner[8] = {base,
+                                   base + 1,
+                                   base + stride_y_,
+                                   base + stride_y_ + 1,
+                                   base + stride_z_,
+                                   base + stride_z_ + 1,
+                                   base + stride_z_ + stride_y_,
+                                   base + stride_z_ + stride_y_ + 1};
+
+    if(m_ != nullptr) {
+      // Only corners with a nonzero weight count, so that closed fluid cells are inside even
+      // where they touch solid cells.
+      for(int q = 0; q < 8; ++q) {
+        if(m_[corner[q]] == 0 && ((q & 1) ? f[0] : g[0]) != 0. &&
+           ((q & 2) ? f[1] : g[1]) != 0. && ((q & 4) ? f[2] : g[2]) != 0.)
+          return std::nullopt;
+      }
+    }
+
+    // The (1-f)·a + f·b form returns a node's value exactly when f is 0 or 1.
+    double r[3];
+    for(int d = 0; d < 3; ++d) {
+      const double x00 = g[0] * v_[3 * corner[0] + d] + f[0] * v_[3 * corner[1] + d];
+      const double x10 = g[0] * v_[3 * corner[2] + d] + f[0] * v_[3 * corner[3] + d];
+      const double x01 = g[0] * v_[3 * corner[4] + d] + f[0] * v_[3 * corner[5] + d];
+      const double x11 = g[0] * v_[3 * corner[6] + d] + f[0] * v_[3 * corner[7] + d];
+      r[d] = g[2] * (g[1] * x00 + f[1] * x10) + f[2] * (g[1] * x01 + f[1] * x11);
+    }
+    return Vector_3(FT(r[0]), FT(r[1]), FT(r[2]));
+  }
+
+  /// @}
+
+  /// \name Access
+  /// @{
+
+  /// the numbers of nodes `{nx, ny, nz}`
+  const Dimensions& dimensions() const { return n_; }
+  /// the total number of nodes `nx·ny·nz`
+  std::size_t number_of_nodes() const { return n_[0] * n_[1] * n_[2]; }
+  /// the position of node `(0, 0, 0)`
+  const Point_3& origin() const { return origin_; }
+  /// the node spacings `(hx, hy, hz)`
+  const Vector_3& spacing() const { return spacing_; }
+  /// the closed box on which the field is defined (before the mask is applied)
+  Bbox_3 bbox() const { return Bbox_3(lo_[0], lo_[1], lo_[2], hi_[0], hi_[1], hi_[2]); }
+
+  /// the position of node `(i, j, k)`
+  /// \pre `i < nx`, `j < ny`, `k < nz`
+  Point_3 node_point(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    CGAL_precondition(i < n_[0] && j < n_[1] && k < n_[2]);
+    return Point_3(FT(node_coordinate(lo_[0], h_[0], i)), FT(node_coordinate(lo_[1], h_[1], j)),
+                   FT(node_coordinate(lo_[2], h_[2], k)));
+  }
+
+  /// the velocity stored at node `(i, j, k)` (zero at a solid node whose given value was not
+  /// finite)
+  /// \pre `i < nx`, `j < ny`, `k < nz`
+  Vector_3 node_value(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    CGAL_precondition(i < n_[0] && j < n_[1] && k < n_[2]);
+    const float* c = v_ + 3 * node_index(i, j, k);
+    return Vector_3(FT(c[0]), FT(c[1]), FT(c[2]));
+  }
+
+  /// whether the field has a node mask
+  bool has_mask() const { return m_ != nullptr; }
+
+  /// whether node `(i, j, k)` is fluid (always `true` without a mask)
+  /// \pre `i < nx`, `j < ny`, `k < nz`
+  bool is_fluid(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    CGAL_precondition(i < n_[0] && j < n_[1] && k < n_[2]);
+    return m_ == nullptr || m_[node_index(i, j, k)] != 0;
+  }
+
+  /// the `3·nx·ny·nz` stored velocity components, in node order
+  const std::vector<float>& values() const { return *values_; }
+
+  /// the `nx·ny·nz` mask flags, or an empty vector if the field has no mask
+  const std::vector<unsigned char>& mask() const
+  {
+    static const std::vector<unsigned char> no_mask;
+    return mask_ ? *mask_ : no_mask;
+  }
+
+  /// @}
+
+  /// samples `field` (any model of `FlowField_3`) at the nodes of a grid.  Nodes where `field`
+  /// returns `std::nullopt` or a non-finite vector get the value zero and become solid; the
+  /// result has a mask only if there is such a node.
+  ///
+  /// \throws std::invalid_argument as the constructor for bad `spacing`, `origin` or
+  ///         `dimensions` (before anything is allocated), or if a sampled value does not fit in
+  ///         a 32-bit float.
+  template <typename FlowField>
+  static Regular_grid_flow_field_3 sample(const FlowField& field, const Point_3& origin,
+                                          const Vector_3& spacing, const Dimensions& dimensions)
+  {
+    const std::size_t nodes = checked_number_of_nodes(origin, spacing, dimensions);
+    const double o[3] = {CGAL::to_double(origin.x()), CGAL::to_double(origin.y()),
+                         CGAL::to_double(origin.z())};
+    const double h[3] = {CGAL::to_double(spacing.x()), CGAL::to_double(spacing.y()),
+                         CGAL::to_double(spacing.z())};
+
+    std::vector<float> values(3 * nodes, 0.f);
+    std::vector<unsigned char> mask(nodes, 1);
+    bool all_fluid = true;
+    std::size_t v = 0;
+    for(std::size_t k = 0; k < dimensions[2]; ++k)
+      for(std::size_t j = 0; j < dimensions[1]; ++j)
+        for(std::size_t i = 0; i < dimensions[0]; ++i, ++v) {
+          // Same node positions as `node_point()`, so queries at nodes return these samples.
+          const Point_3 p(FT(node_coordinate(o[0], h[0], i)), FT(node_coordinate(o[1], h[1], j)),
+                          FT(node_coordinate(o[2], h[2], k)));
+          const std::optional<Vector_3> s = field(p);
+          const double w[3] = {s ? CGAL::to_double(s->x()) : 0.,
+                               s ? CGAL::to_double(s->y()) : 0.,
+                               s ? CGAL::to_double(s->z()) : 0.};
+          if(!s || !std::isfinite(w[0]) || !std::isfinite(w[1]) || !std::isfinite(w[2])) {
+            mask[v] = 0;
+            all_fluid = false;
+            continue;
+          }
+          for(int d = 0; d < 3; ++d) {
+            const float fv = static_cast<float>(w[d]);
+            if(!std::isfinite(fv)) {
+              std::ostringstream msg;
+              msg << "sample_on_grid: the field value " << w[d] << " at node (" << i << ", " << j
+                  << ", " << k << ") does not fit in a 32-bit float";
+              throw std::invalid_argument(msg.str());
+            }
+            values[3 * v + d] = fv;
+          }
+        }
+    if(all_fluid)
+      mask.clear();
+    return Regular_grid_flow_field_3(origin, spacing, dimensions, std::move(values),
+                                     std::move(mask));
+  }
+
+private:
+  // The one formula for node positions, shared by the box, `node_point()` and `sample()` so
+  // that they agree to the last bit.
+  static double node_coordinate(double o, double h, std::size_t i)
+  {
+    return o + static_cast<double>(i) * h;
+  }
+
+  std::size_t node_index(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    return i + stride_y_ * j + stride_z_ * k;
+  }
+
+  static std::string dimensions_string(const Dimensions& d)
+  {
+    std::ostringstream s;
+    s << d[0] << " x " << d[1] << " x " << d[2];
+    return s.str();
+  }
+
+  // Validates the geometry and returns nx·ny·nz, guaranteed to fit with the factor 3 of the
+  // value array, so that callers can allocate from it.
+  static std::size_t checked_number_of_nodes(const Point_3& origin, const Vector_3& spacing,
+                                             const Dimensions& dimensions)
+  {
+    static const char* const axis[3] = {"x", "y", "z"};
+    for(int a = 0; a < 3; ++a) {
+      if(dimensions[a] < 2) {
+        std::ostringstream msg;
+        msg << "Regular_grid_flow_field_3: dimensions[" << a << "] (n" << axis[a] << ") is "
+            << dimensions[a] << "; expected at least 2 nodes along each axis";
+        throw std::invalid_argument(msg.str());
+      }
+    }
+    const double h[3] = {CGAL::to_double(spacing.x()), CGAL::to_double(spacing.y()),
+                         CGAL::to_double(spacing.z())};
+    for(int a = 0; a < 3; ++a) {
+      if(!(std::isfinite(h[a]) && h[a] > 0.)) {
+        std::ostringstream msg;
+        msg << "Regular_grid_flow_field_3: spacing h" << axis[a] << " is " << h[a]
+            << "; expected a positive finite number";
+        throw std::invalid_argument(msg.str());
+      }
+    }
+    const double o[3] = {CGAL::to_double(origin.x()), CGAL::to_double(origin.y()),
+                         CGAL::to_double(origin.z())};
+    for(int a = 0; a < 3; ++a) {
+      const double far_corner = node_coordinate(o[a], h[a], dimensions[a] - 1);
+      if(!std::isfinite(o[a]) || !std::isfinite(far_corner)) {
+        std::ostringstream msg;
+        msg << "Regular_grid_flow_field_3: origin." << axis[a] << " is " << o[a]
+            << " and the far corner " << far_corner << "; expected finite coordinates";
+        throw std::invalid_argument(msg.str());
+      }
+    }
+    const std::size_t max_nodes =
+        (std::min)(std::vector<float>().max_size() / 3, std::vector<unsigned char>().max_size());
+    std::size_t nodes = dimensions[0];
+    for(int a = 1; a < 3; ++a) {
+      if(nodes > max_nodes / dimensions[a]) {
+        std::ostringstream msg;
+        msg << "Regular_grid_flow_field_3: dimensions " << dimensions_string(dimensions)
+            << " have more nodes than a std::vector can hold (at most " << max_nodes << ")";
+        throw std::invalid_argument(msg.str());
+      }
+      nodes *= dimensions[a];
+    }
+    return nodes;
+  }
+
+  // The kernel objects, as given, for the accessors.
+  Point_3 origin_;
+  Vector_3 spacing_;
+  Dimensions n_;
+  std::shared_ptr<const std::vector<float>> values_;
+  std::shared_ptr<const std::vector<unsigned char>> mask_;
+  // The hot path reads only these: doubles and raw pointers into the shared arrays (which the
+  // shared pointers keep alive in every copy).
+  double lo_[3], hi_[3], h_[3], inv_h_[3];
+  std::size_t stride_y_ = 0, stride_z_ = 0;
+  const float* v_ = nullptr;
+  const unsigned char* m_ = nullptr;
+};
+
+/// \ingroup PkgFlowAlignedSurfacesFlows
+/// samples a flow field on a uniform grid: shorthand for
+/// `Regular_grid_flow_field_3<K>::sample(field, origin, spacing, dimensions)` with the kernel
+/// `K` of `Point_3`.
+///
+/// \tparam FlowField a model of `FlowField_3` (a lambda `std::optional<Vector_3>(const Point_3&)`
+///         will do)
+/// \tparam Point_3 a point type of a CGAL kernel
+///
+/// \param field the field to sample; nodes where it returns `std::nullopt` (or a non-finite
+///        vector) get zero and a solid mask flag
+/// \param origin the position of node `(0, 0, 0)`
+/// \param spacing the node spacings `(hx, hy, hz)`
+/// \param dimensions the numbers of nodes `{nx, ny, nz}`, each at least 2
+///
+/// \throws std::invalid_argument for bad `spacing`, `origin` or `dimensions`, before anything is
+///         allocated.
+template <typename FlowField, typename Point_3>
+Regular_grid_flow_field_3<typename Kernel_traits<Point_3>::Kernel>
+sample_on_grid(const FlowField& field, const Point_3& origin,
+               const typename Kernel_traits<Point_3>::Kernel::Vector_3& spacing,
+               const std::array<std::size_t, 3>& dimensions)
+{
+  return Regular_grid_flow_field_3<typename Kernel_traits<Point_3>::Kernel>::sample(
+      field, origin, spacing, dimensions);
+}
+
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_REGULAR_GRID_FLOW_FIELD_3_H

@@ -1,0 +1,123 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A face graph flattened into arrays, in the order of its vertex and face index
+// maps: positions (m x 3), the three vertex indices of each face, the pairs of
+// faces across each interior edge, and the connected components of the faces.
+// The numerical code works on these arrays only, so it is the same for every
+// model of FaceListGraph.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_MESH_ARRAYS_H
+#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_MESH_ARRAYS_H
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace internal {
+
+using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3>;
+
+struct Mesh_arrays {
+  std::vector<std::array<Eigen::Index, 3>> face_vertices;
+  struct Interior_edge {
+    std::size_t faces[2];    // p, q
+    Eigen::Index vertices[2]; // the shared edge
+  };
+  std::vector<Interior_edge> interior_edges;
+  std::vector<std::size_t> face_component;                    // connected component of each face
+  std::size_t number_of_components = 0;
+};
+
+/// The vertices of `tm` in the order of the index map `vim`.
+template <class TriangleMesh, class VertexIndexMap>
+std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>
+vertices_in_index_order(const TriangleMesh& tm, VertexIndexMap vim)
+{
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> ordered(num_vertices(tm));
+  for (auto v : vertices(tm))
+    ordered[get(vim, v)] = v;
+  return ordered;
+}
+
+/// The positions (m x 3) of `ordered_vertices`, row i for the vertex of index i.
+template <class VertexDescriptor, class VertexPointMap>
+Positions read_positions(const std::vector<VertexDescriptor>& ordered_vertices, VertexPointMap vpm)
+{
+  Positions x(static_cast<Eigen::Index>(ordered_vertices.size()), 3);
+  Eigen::Index i = 0;
+  for (auto v : ordered_vertices) {
+    const auto& p = get(vpm, v);
+    x.row(i++) << CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z());
+  }
+  return x;
+}
+
+template <class VertexDescriptor, class VertexPointMap, class GeomTraits>
+void write_positions(const Positions& x, const std::vector<VertexDescriptor>& ordered_vertices,
+                     VertexPointMap vpm, const GeomTraits& gt)
+{
+  auto construct_point = gt.construct_point_3_object();
+  Eigen::Index i = 0;
+  for (auto v : ordered_vertices) {
+    const auto r = x.row(i++);
+    put(vpm, v, construct_point(r[0], r[1], r[2]));
+  }
+}
+
+/// \pre `tm` is a triangle mesh.
+template <class TriangleMesh, class VertexIndexMap, class FaceIndexMap>
+Mesh_arrays make_mesh_arrays(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim)
+{
+  Mesh_arrays arrays;
+  arrays.face_vertices.resize(num_faces(tm));
+  for (auto f : faces(tm)) {
+    auto& fv = arrays.face_vertices[get(fim, f)];
+    int i = 0;
+    for (auto v : vertices_around_face(halfedge(f, tm), tm))
+      fv[i++] = static_cast<Eigen::Index>(get(vim, v));
+  }
+
+  // Union-find over the faces, joined across interior edges.
+  std::vector<std::size_t> parent(num_faces(tm));
+  for (std::size_t i = 0; i < parent.size(); ++i)
+    parent[i] = i;
+  auto root = [&parent](std::size_t i) {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (auto e : edges(tm)) {
+    const auto h = halfedge(e, tm);
+    if (is_border_edge(h, tm))
+      continue;
+    const std::size_t p = get(fim, face(h, tm)), q = get(fim, face(opposite(h, tm), tm));
+    arrays.interior_edges.push_back(
+        {{p, q},
+         {static_cast<Eigen::Index>(get(vim, source(h, tm))), static_cast<Eigen::Index>(get(vim, target(h, tm)))}});
+    parent[root(p)] = root(q);
+  }
+  arrays.face_component.resize(parent.size());
+  std::vector<std::size_t> component_of_root(parent.size(), std::size_t(-1));
+  for (std::size_t f = 0; f < parent.size(); ++f) {
+    std::size_t& c = component_of_root[root(f)];
+    if (c == std::size_t(-1))
+      c = arrays.number_of_components++;
+    arrays.face_component[f] = c;
+  }
+  return arrays;
+}
+
+} // namespace internal
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_MESH_ARRAYS_H

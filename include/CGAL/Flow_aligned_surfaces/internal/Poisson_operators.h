@@ -1,0 +1,142 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The discrete Poisson operators of Section 3 of the paper, on a triangle mesh
+// with m vertices and n faces:
+//
+//   G  (3n x m)  per-face gradient of a piecewise linear function: (G u)_j = sum_i grad(phi_i^j) u_i
+//   A  (3n x 3n) diagonal, the area of face j repeated three times
+//   L  (m x m)   = G^T A G, the cotangent Laplacian (symmetric positive semi-definite)
+//   D  (m x 3n)  = G^T A, the divergence of a per-face vector field
+//
+// Each face also keeps what an iteration needs without touching the sparse
+// matrices: its vertex indices, its basis gradients and its local stiffness
+// K_j = A_j grad^T grad (3 x 3), so that the face's share of D Y' is K_j X_j T_j^T.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_POISSON_OPERATORS_H
+#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_POISSON_OPERATORS_H
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <variant>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace internal {
+
+/// The constant gradients of the three barycentric basis functions of a triangle.
+struct Triangle_gradients {
+  Eigen::Matrix3d gradients; // column i = grad(phi_i), i = a, b, c
+  Eigen::Vector3d unit_normal;
+  double area = 0;
+};
+
+/// grad(phi_a) = n x (x_c - x_b) / (2A), and cyclically: the solution of the paper's 3x3 system.
+/// Returns nothing for a degenerate triangle (zero area), whose gradients do not exist.
+inline std::optional<Triangle_gradients> triangle_gradients(const Eigen::Vector3d& a,
+                                                            const Eigen::Vector3d& b,
+                                                            const Eigen::Vector3d& c)
+{
+  const Eigen::Vector3d cross = (b - a).cross(c - a);
+  const double twice_area = cross.norm();
+  const double scale = (std::max)({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+  // Relative threshold: a triangle whose area is tiny compared to its longest edge squared has
+  // gradients that amplify rounding errors without bound.
+  if (!(twice_area > 1e-12 * scale))
+    return std::nullopt;
+  Triangle_gradients t;
+  t.unit_normal = cross / twice_area;
+  t.area = 0.5 * twice_area;
+  t.gradients.col(0) = t.unit_normal.cross(c - b) / twice_area;
+  t.gradients.col(1) = t.unit_normal.cross(a - c) / twice_area;
+  t.gradients.col(2) = t.unit_normal.cross(b - a) / twice_area;
+  return t;
+}
+
+/// Per-face data of the reference mesh M_0.
+struct Reference_face {
+  std::array<Eigen::Index, 3> vertices;
+  Eigen::Matrix3d stiffness; // K_j = A_j grad^T grad
+  double area = 0;
+};
+
+/// The operators of Section 3 assembled on one mesh.
+struct Poisson_operators {
+  using Sparse_matrix = Eigen::SparseMatrix<double>;
+
+  std::vector<Reference_face> faces;
+  Eigen::VectorXd face_areas; // n
+  Sparse_matrix G;            // 3n x m
+  Sparse_matrix L;            // m x m
+  Sparse_matrix D;            // m x 3n
+
+  Eigen::Index number_of_vertices() const { return L.rows(); }
+  Eigen::Index number_of_faces() const { return face_areas.size(); }
+  /// A (3n x 3n) as a diagonal matrix.
+  Eigen::DiagonalMatrix<double, Eigen::Dynamic> area_matrix() const
+  {
+    return Eigen::VectorXd(face_areas.replicate(1, 3).transpose().reshaped()).asDiagonal();
+  }
+};
+
+/// Index of the first degenerate face in `positions`/`face_vertices`, if any.
+struct Degenerate_face {
+  std::size_t face;
+};
+
+/// Assembles the operators from vertex positions (m x 3) and the vertex indices of each face.
+/// Returns the index of a degenerate face instead when there is one.
+inline std::variant<Poisson_operators, Degenerate_face>
+make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
+                       const std::vector<std::array<Eigen::Index, 3>>& face_vertices)
+{
+  using Triplet = Eigen::Triplet<double>;
+  const Eigen::Index m = positions.rows();
+  const Eigen::Index n = static_cast<Eigen::Index>(face_vertices.size());
+
+  Poisson_operators ops;
+  ops.faces.resize(face_vertices.size());
+  ops.face_areas.resize(n);
+  std::vector<Triplet> g_entries, l_entries;
+  g_entries.reserve(9 * face_vertices.size());
+  l_entries.reserve(9 * face_vertices.size());
+
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const auto& fv = face_vertices[std::size_t(j)];
+    const auto t = triangle_gradients(positions.row(fv[0]).transpose(), positions.row(fv[1]).transpose(),
+                                      positions.row(fv[2]).transpose());
+    if (!t)
+      return Degenerate_face{std::size_t(j)};
+    Reference_face& face = ops.faces[std::size_t(j)];
+    face.vertices = fv;
+    face.area = t->area;
+    face.stiffness = t->area * t->gradients.transpose() * t->gradients;
+    ops.face_areas[j] = t->area;
+    for (int i = 0; i < 3; ++i) {
+      for (int d = 0; d < 3; ++d)
+        g_entries.emplace_back(3 * j + d, fv[i], t->gradients(d, i));
+      for (int k = 0; k < 3; ++k)
+        l_entries.emplace_back(fv[i], fv[k], face.stiffness(i, k));
+    }
+  }
+
+  ops.G.resize(3 * n, m);
+  ops.G.setFromTriplets(g_entries.begin(), g_entries.end());
+  ops.L.resize(m, m);
+  ops.L.setFromTriplets(l_entries.begin(), l_entries.end());
+  ops.D = ops.G.transpose() * ops.area_matrix();
+  return ops;
+}
+
+} // namespace internal
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_POISSON_OPERATORS_H

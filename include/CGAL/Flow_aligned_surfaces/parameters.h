@@ -1,0 +1,94 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The package's own named parameters.  CGAL 5.5 has no hook to add members to
+// its parameter pack, so each package parameter is a free function taking an
+// optional pack to chain onto:
+//
+//   FAS::parameters::max_rotation_angle(0.05, CGAL::parameters::number_of_iterations(50))
+//
+// The result is an ordinary CGAL::Named_function_parameters, so CGAL's own
+// parameters can also be chained after it (`.number_of_iterations(50)`).
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_PARAMETERS_H
+#define CGAL_FLOW_ALIGNED_SURFACES_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal_np {
+#define CGAL_FAS_DECLARE_TAG(name) struct name##_t {};
+CGAL_FAS_DECLARE_TAG(max_rotation_angle)
+CGAL_FAS_DECLARE_TAG(convergence_angle)
+CGAL_FAS_DECLARE_TAG(convergence_step)
+CGAL_FAS_DECLARE_TAG(max_dihedral_angle)
+CGAL_FAS_DECLARE_TAG(area_correction)
+CGAL_FAS_DECLARE_TAG(constraint_weight)
+CGAL_FAS_DECLARE_TAG(patch_axis)
+#undef CGAL_FAS_DECLARE_TAG
+} // namespace internal_np
+/// \endcond
+
+namespace parameters {
+
+using CGAL::parameters::choose_parameter;
+using CGAL::parameters::get_parameter;
+using CGAL::parameters::is_default_parameter;
+/// The empty parameter pack, the default of every `np` argument.
+using Default_named_parameters = CGAL::parameters::Default_named_parameters;
+
+// Defines one package parameter: a free function returning a pack that chains onto `np`.
+#define CGAL_FAS_NAMED_PARAMETER(name, type)                                                  \
+  template <typename NamedParameters = Default_named_parameters>                                \
+  CGAL::Named_function_parameters<type, internal_np::name##_t, NamedParameters> name(          \
+      const type& value, const NamedParameters& np = NamedParameters())                       \
+  {                                                                                             \
+    return CGAL::Named_function_parameters<type, internal_np::name##_t, NamedParameters>(value, \
+                                                                                          np);  \
+  }
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// η, the largest rotation (radians) applied to a face in one iteration.  Default: `0.1`.
+CGAL_FAS_NAMED_PARAMETER(max_rotation_angle, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// ε, the deformation has converged when every face's alignment rotation is below it
+/// (radians).  Default: `1e-6`.
+CGAL_FAS_NAMED_PARAMETER(convergence_angle, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The practical stopping rule beside ε: the deformation has also converged when the
+/// largest vertex displacement of an iteration is below this fraction of the diagonal of the
+/// surface's bounding box.  Default: `1e-4`.  `0` disables the rule.
+CGAL_FAS_NAMED_PARAMETER(convergence_step, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// θmax, the largest dihedral angle (radians, between face normals) before the fold
+/// correction acts.  Default: `π/2`.
+CGAL_FAS_NAMED_PARAMETER(max_dihedral_angle, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Whether the gradients are rescaled by `sqrt(A_0/A_k)` to keep face areas.  Default: `true`.
+CGAL_FAS_NAMED_PARAMETER(area_correction, bool)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The soft-constraint weight relative to the mean diagonal of `L`.  Default: `1e-3`.
+CGAL_FAS_NAMED_PARAMETER(constraint_weight, double)
+
+#undef CGAL_FAS_NAMED_PARAMETER
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The in-plane direction of a patch's first side (its `width`), projected into the patch's
+/// plane.  Type: the kernel's `Vector_3`.  Default: a unit vector orthogonal to the normal.
+template <typename Vector_3, typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<Vector_3, internal_np::patch_axis_t, NamedParameters> patch_axis(
+    const Vector_3& axis, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<Vector_3, internal_np::patch_axis_t, NamedParameters>(axis,
+                                                                                               np);
+}
+
+} // namespace parameters
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_PARAMETERS_H

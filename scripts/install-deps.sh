@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs every dependency of Flow_aligned_surfaces from Debian's packages.
+# Idempotent: packages already present are skipped, and apt is not touched at all
+# when everything is there.
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config ccache
+  libcgal-dev libgmp-dev libmpfr-dev   # CGAL 5.5 (header-only) and its number types
+  libeigen3-dev                         # Eigen 3.4
+  libboost-dev                          # Boost (graph, property maps)
+  libopenmesh-dev                       # OpenMesh, tested through CGAL's graph traits
+  libsuitesparse-dev                    # CHOLMOD sparse Cholesky
+  libtbb-dev                            # parallel loops
+  libgtest-dev libgmock-dev libbenchmark-dev
+  doxygen graphviz                      # documentation, built in the tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all dependencies present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,130 @@
+// The Poisson operators of Section 3 against closed forms: gradients of linear
+// functions, the cotangent formula, and the identities L = G^T A G, D G = L.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
+#include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+namespace FAS = CGAL::Flow_aligned_surfaces;
+namespace FASI = CGAL::Flow_aligned_surfaces::internal;
+
+struct Curved_patch {
+  FASI::Positions x;
+  FASI::Mesh_arrays arrays;
+  FASI::Poisson_operators ops;
+};
+
+// A disk patch bent onto a paraboloid, so that the faces are not coplanar.
+Curved_patch make_curved_patch(std::size_t faces)
+{
+  Mesh tm;
+  FAS::make_disk_patch(tm, K::Point_3(0.1, -0.2, 0.3), K::Vector_3(0.2, 0.1, 1), 1.0, faces);
+  for (auto v : tm.vertices()) {
+    const K::Point_3 p = tm.point(v);
+    tm.point(v) = K::Point_3(p.x(), p.y(), p.z() + 0.3 * (p.x() * p.x() - 0.5 * p.y() * p.y()));
+  }
+  Curved_patch patch;
+  const auto vim = get(CGAL::vertex_index, tm);
+  patch.x = FASI::read_positions(FASI::vertices_in_index_order(tm, vim), tm.points());
+  patch.arrays = FASI::make_mesh_arrays(tm, vim, get(CGAL::face_index, tm));
+  patch.ops = std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(patch.x, patch.arrays.face_vertices));
+  return patch;
+}
+
+TEST(PoissonOperators, GradientOfLinearFunctionIsExactProjection)
+{
+  const Curved_patch patch = make_curved_patch(400);
+  const Eigen::Vector3d g(0.7, -1.3, 2.1);
+  const Eigen::VectorXd u = patch.x * g; // u(x) = g . x
+  const Eigen::VectorXd grad = patch.ops.G * u;
+  for (std::size_t j = 0; j < patch.arrays.face_vertices.size(); ++j) {
+    const auto& f = patch.arrays.face_vertices[j];
+    const Eigen::Vector3d a = patch.x.row(f[0]), b = patch.x.row(f[1]), c = patch.x.row(f[2]);
+    const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
+    // The surface gradient of a linear function is its gradient projected into the face plane.
+    const Eigen::Vector3d expected = g - n * n.dot(g);
+    const Eigen::Vector3d got = grad.segment<3>(3 * Eigen::Index(j));
+    EXPECT_LT((got - expected).norm(), 1e-10 * g.norm()) << "face " << j;
+  }
+}
+
+TEST(PoissonOperators, LaplacianIsSymmetricPositiveSemiDefiniteAndAnnihilatesConstants)
+{
+  const Curved_patch patch = make_curved_patch(200);
+  const Eigen::MatrixXd l = Eigen::MatrixXd(patch.ops.L);
+  EXPECT_LT((l - l.transpose()).cwiseAbs().maxCoeff(), 1e-12 * l.cwiseAbs().maxCoeff());
+  EXPECT_LT((l * Eigen::VectorXd::Ones(l.rows())).cwiseAbs().maxCoeff(), 1e-12 * l.cwiseAbs().maxCoeff());
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(l);
+  EXPECT_GT(eigen.eigenvalues().minCoeff(), -1e-10 * eigen.eigenvalues().maxCoeff());
+  // Exactly one zero eigenvalue on a connected patch.
+  EXPECT_GT(eigen.eigenvalues()(1), 1e-8 * eigen.eigenvalues().maxCoeff());
+}
+
+TEST(PoissonOperators, LaplacianEqualsCotangentFormula)
+{
+  const Curved_patch patch = make_curved_patch(300);
+  // L_ik = -1/2 (cot alpha + cot beta) for the angles opposite edge ik (Pinkall-Polthier).
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(patch.x.rows(), patch.x.rows());
+  for (const auto& f : patch.arrays.face_vertices)
+    for (int corner = 0; corner < 3; ++corner) {
+      const Eigen::Index o = f[corner], i = f[(corner + 1) % 3], k = f[(corner + 2) % 3];
+      const Eigen::Vector3d e1 = patch.x.row(i) - patch.x.row(o), e2 = patch.x.row(k) - patch.x.row(o);
+      const double cot = e1.dot(e2) / e1.cross(e2).norm();
+      expected(i, k) -= 0.5 * cot;
+      expected(k, i) -= 0.5 * cot;
+      expected(i, i) += 0.5 * cot;
+      expected(k, k) += 0.5 * cot;
+    }
+  EXPECT_LT((Eigen::MatrixXd(patch.ops.L) - expected).cwiseAbs().maxCoeff(), 1e-10 * expected.cwiseAbs().maxCoeff());
+}
+
+TEST(PoissonOperators, DivergenceOfGradientIsLaplacian)
+{
+  const Curved_patch patch = make_curved_patch(300);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  Eigen::VectorXd u(patch.x.rows());
+  for (Eigen::Index i = 0; i < u.size(); ++i)
+    u[i] = uniform(rng);
+  const Eigen::VectorXd lhs = patch.ops.D * (patch.ops.G * u);
+  const Eigen::VectorXd rhs = patch.ops.L * u;
+  EXPECT_LT((lhs - rhs).cwiseAbs().maxCoeff(), 1e-10 * rhs.cwiseAbs().maxCoeff());
+  // L = G^T A G as matrices.
+  const Eigen::MatrixXd gtag =
+      Eigen::MatrixXd(patch.ops.G.transpose()) * patch.ops.area_matrix() * Eigen::MatrixXd(patch.ops.G);
+  EXPECT_LT((gtag - Eigen::MatrixXd(patch.ops.L)).cwiseAbs().maxCoeff(), 1e-10 * gtag.cwiseAbs().maxCoeff());
+}
+
+TEST(PoissonOperators, AreasSumToSurfaceArea)
+{
+  Mesh tm;
+  FAS::make_planar_patch(tm, K::Point_3(1, 2, 3), K::Vector_3(1, 1, 1), 2.0, 0.5, 500);
+  const auto vim = get(CGAL::vertex_index, tm);
+  const auto x = FASI::read_positions(FASI::vertices_in_index_order(tm, vim), tm.points());
+  const auto arrays = FASI::make_mesh_arrays(tm, vim, get(CGAL::face_index, tm));
+  const auto ops = std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(x, arrays.face_vertices));
+  EXPECT_NEAR(ops.face_areas.sum(), 1.0, 1e-12);
+}
+
+TEST(PoissonOperators, DegenerateFaceIsReported)
+{
+  FASI::Positions x(4, 3);
+  x << 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0;
+  const auto built = FASI::make_poisson_operators(x, {{0, 1, 3}, {0, 1, 2}});
+  ASSERT_TRUE(std::holds_alternative<FASI::Degenerate_face>(built));
+  EXPECT_EQ(std::get<FASI::Degenerate_face>(built).face, 1u);
+}
+
+} // namespace

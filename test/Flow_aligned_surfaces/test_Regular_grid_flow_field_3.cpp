@@ -1,0 +1,430 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Regular_grid_flow_field_3: trilinear interpolation against closed-form trilinear fields, the
+// closed domain box, the node mask, sampling, shared storage and the messages for bad input.
+
+#include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace FAS = CGAL::Flow_aligned_surfaces;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point_3;
+typedef K::Vector_3 Vector_3;
+typedef FAS::Regular_grid_flow_field_3<K> Grid;
+typedef Grid::Dimensions Dimensions;
+
+// A general trilinear map R^3 -> R^3: each component has its own 8 coefficients of
+// 1, x, y, z, xy, yz, xz, xyz, so swapped components or axes show up.
+struct Trilinear_field
+{
+  std::array<std::array<double, 8>, 3> c;
+
+  explicit Trilinear_field(std::mt19937& rng)
+  {
+    std::uniform_real_distribution<double> u(-2., 2.);
+    for(auto& comp : c)
+      for(double& a : comp)
+        a = u(rng);
+  }
+
+  Vector_3 operator()(double x, double y, double z) const
+  {
+    double r[3];
+    for(int d = 0; d < 3; ++d) {
+      const auto& a = c[d];
+      r[d] = a[0] + a[1] * x + a[2] * y + a[3] * z + a[4] * x * y + a[5] * y * z + a[6] * x * z +
+             a[7] * x * y * z;
+    }
+    return Vector_3(r[0], r[1], r[2]);
+  }
+};
+
+std::vector<float> node_values(const Point_3& o, const Vector_3& h, const Dimensions& n,
+                               const std::function<Vector_3(double, double, double)>& f)
+{
+  std::vector<float> v;
+  v.reserve(3 * n[0] * n[1] * n[2]);
+  for(std::size_t k = 0; k < n[2]; ++k)
+    for(std::size_t j = 0; j < n[1]; ++j)
+      for(std::size_t i = 0; i < n[0]; ++i) {
+        const Vector_3 w = f(o.x() + double(i) * h.x(), o.y() + double(j) * h.y(),
+                             o.z() + double(k) * h.z());
+        v.push_back(float(w.x()));
+        v.push_back(float(w.y()));
+        v.push_back(float(w.z()));
+      }
+  return v;
+}
+
+Point_3 random_point_in(const CGAL::Bbox_3& b, std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(0., 1.);
+  return Point_3(b.xmin() + u(rng) * (b.xmax() - b.xmin()),
+                 b.ymin() + u(rng) * (b.ymax() - b.ymin()),
+                 b.zmin() + u(rng) * (b.zmax() - b.zmin()));
+}
+
+double max_abs_node_value(const Grid& g)
+{
+  double m = 0;
+  for(float x : g.values())
+    m = std::max(m, double(std::abs(x)));
+  return m;
+}
+
+// Floats carry a relative rounding of 6e-8 per node value; the interpolation is a convex
+// combination, so its error stays below that times the largest node value.
+void expect_near_vector(const Vector_3& got, const Vector_3& expected, double scale)
+{
+  const double tol = 1e-6 * scale;
+  EXPECT_NEAR(got.x(), expected.x(), tol);
+  EXPECT_NEAR(got.y(), expected.y(), tol);
+  EXPECT_NEAR(got.z(), expected.z(), tol);
+}
+
+// A non-dyadic grid, so that nothing is exact by accident.
+const Point_3 kOrigin(-1.3, 0.7, 2.1);
+const Vector_3 kSpacing(0.37, 0.21, 0.53);
+const Dimensions kDims = {7, 9, 5};
+
+TEST(RegularGridFlowField3, TrilinearFieldIsReproducedAtRandomPoints)
+{
+  std::mt19937 rng(42);
+  for(int trial = 0; trial < 5; ++trial) {
+    const Trilinear_field f(rng);
+    const Grid g(kOrigin, kSpacing, kDims, node_values(kOrigin, kSpacing, kDims, f));
+    const double scale = max_abs_node_value(g);
+    for(int s = 0; s < 2000; ++s) {
+      const Point_3 p = random_point_in(g.bbox(), rng);
+      const std::optional<Vector_3> v = g(p);
+      ASSERT_TRUE(v.has_value()) << p;
+      expect_near_vector(*v, f(p.x(), p.y(), p.z()), scale);
+    }
+  }
+}
+
+TEST(RegularGridFlowField3, LinearFieldIsReproducedAtRandomPoints)
+{
+  const auto f = [](double x, double y, double z) {
+    return Vector_3(1.5 * x - 2. * y + 0.25 * z + 3., -x + 0.5 * z - 1., 4. * y - 0.75 * x);
+  };
+  const Grid g(kOrigin, kSpacing.x(), kSpacing.y(), kSpacing.z(), kDims,
+               node_values(kOrigin, kSpacing, kDims, f));
+  const double scale = max_abs_node_value(g);
+  std::mt19937 rng(7);
+  for(int s = 0; s < 2000; ++s) {
+    const Point_3 p = random_point_in(g.bbox(), rng);
+    const std::optional<Vector_3> v = g(p);
+    ASSERT_TRUE(v.has_value()) << p;
+    expect_near_vector(*v, f(p.x(), p.y(), p.z()), scale);
+  }
+}
+
+TEST(RegularGridFlowField3, NodeValuesAreReturnedExactlyAtNodes)
+{
+  // Dyadic origin and spacings: node positions and their cell coordinates are exact, so the
+  // stored floats must come back bit for bit, including on the upper boundary nodes.
+  const Point_3 o(0.5, -1., 2.);
+  const Vector_3 h(0.25, 0.5, 0.125);
+  const Dimensions n = {4, 3, 5};
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-10.f, 10.f);
+  std::vector<float> values(3 * n[0] * n[1] * n[2]);
+  for(float& x : values)
+    x = u(rng);
+  const std::vector<float> copy = values;
+  const Grid g(o, h, n, std::move(values));
+  for(std::size_t k = 0; k < n[2]; ++k)
+    for(std::size_t j = 0; j < n[1]; ++j)
+      for(std::size_t i = 0; i < n[0]; ++i) {
+        const std::size_t v = i + n[0] * (j + n[1] * k);
+        const Vector_3 expected(copy[3 * v], copy[3 * v + 1], copy[3 * v + 2]);
+        const Point_3 p(o.x() + double(i) * h.x(), o.y() + double(j) * h.y(),
+                        o.z() + double(k) * h.z());
+        EXPECT_EQ(g.node_point(i, j, k), p);
+        EXPECT_EQ(g.node_value(i, j, k), expected);
+        const std::optional<Vector_3> q = g(p);
+        ASSERT_TRUE(q.has_value()) << p;
+        EXPECT_EQ(*q, expected) << "node " << i << " " << j << " " << k;
+      }
+}
+
+TEST(RegularGridFlowField3, NodeValuesAreReturnedAtNodesOfANonDyadicGrid)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-10.f, 10.f);
+  std::vector<float> values(3 * kDims[0] * kDims[1] * kDims[2]);
+  for(float& x : values)
+    x = u(rng);
+  const Grid g(kOrigin, kSpacing, kDims, values);
+  for(std::size_t k = 0; k < kDims[2]; ++k)
+    for(std::size_t j = 0; j < kDims[1]; ++j)
+      for(std::size_t i = 0; i < kDims[0]; ++i) {
+        const std::optional<Vector_3> q = g(g.node_point(i, j, k));
+        ASSERT_TRUE(q.has_value());
+        // The node position is rounded, so the cell coordinate may be off by an ulp.
+        expect_near_vector(*q, g.node_value(i, j, k), 10.);
+      }
+}
+
+TEST(RegularGridFlowField3, UpperBoundaryIsExactWhereTheCellCoordinateOvershoots)
+{
+  // With origin 0 and hx = 0.1, the last node x = 3 * 0.1 maps to the cell coordinate
+  // 3.0000000000000004: the lower nodes of the last cell must still get a weight of exactly
+  // zero, so the upper face is inside although the nodes behind it are solid, and the upper
+  // nodes' values come back exactly.
+  const Dimensions n = {4, 2, 2};
+  ASSERT_GT((3 * 0.1 - 0.) * (1. / 0.1), 3.);
+  std::vector<float> values(3 * 16);
+  for(std::size_t q = 0; q < values.size(); ++q)
+    values[q] = 0.1f * float(q) - 1.f;
+  std::vector<unsigned char> mask(16, 1);
+  for(std::size_t v = 0; v < 16; ++v)
+    if(v % 4 == 2)
+      mask[v] = 0;
+  const Grid g(Point_3(0, 0, 0), 0.1, 1., 1., n, std::move(values), std::move(mask));
+  for(std::size_t k = 0; k < 2; ++k)
+    for(std::size_t j = 0; j < 2; ++j) {
+      const std::optional<Vector_3> v = g(g.node_point(3, j, k));
+      ASSERT_TRUE(v.has_value()) << j << " " << k;
+      EXPECT_EQ(*v, g.node_value(3, j, k));
+    }
+  EXPECT_TRUE(g(Point_3(g.bbox().xmax(), 0.5, 0.5)).has_value());
+  EXPECT_FALSE(g(Point_3(0.25, 0.5, 0.5)).has_value());
+}
+
+TEST(RegularGridFlowField3, ClosedBoxIsInsideAndJustOutsideIsNot)
+{
+  const auto f = [](double x, double y, double z) { return Vector_3(x + 2. * y, y - z, z + x); };
+  const Grid g(kOrigin, kSpacing, kDims, node_values(kOrigin, kSpacing, kDims, f));
+  const CGAL::Bbox_3 b = g.bbox();
+  const double lo[3] = {kOrigin.x(), kOrigin.y(), kOrigin.z()};
+  const double hi[3] = {kOrigin.x() + 6. * kSpacing.x(), kOrigin.y() + 8. * kSpacing.y(),
+                        kOrigin.z() + 4. * kSpacing.z()};
+  for(int a = 0; a < 3; ++a) {
+    EXPECT_EQ(b.min(a), lo[a]);
+    EXPECT_EQ(b.max(a), hi[a]);
+  }
+  const double scale = max_abs_node_value(g);
+  const double inf = std::numeric_limits<double>::infinity();
+  std::mt19937 rng(11);
+  for(int s = 0; s < 200; ++s) {
+    const Point_3 r = random_point_in(b, rng);
+    for(int a = 0; a < 3; ++a) {
+      for(int side = 0; side < 2; ++side) {
+        double x[3] = {r.x(), r.y(), r.z()};
+        x[a] = side ? hi[a] : lo[a];
+        const Point_3 on(x[0], x[1], x[2]);
+        const std::optional<Vector_3> v = g(on);
+        ASSERT_TRUE(v.has_value()) << "on the boundary: " << on;
+        expect_near_vector(*v, f(x[0], x[1], x[2]), scale);
+        x[a] = std::nextafter(x[a], side ? inf : -inf);
+        EXPECT_FALSE(g(Point_3(x[0], x[1], x[2])).has_value()) << "just outside, axis " << a;
+      }
+    }
+  }
+  // The 8 corners of the box, and points with a NaN coordinate.
+  for(int q = 0; q < 8; ++q) {
+    const Point_3 c((q & 1) ? hi[0] : lo[0], (q & 2) ? hi[1] : lo[1], (q & 4) ? hi[2] : lo[2]);
+    ASSERT_TRUE(g(c).has_value()) << c;
+    expect_near_vector(*g(c), f(c.x(), c.y(), c.z()), scale);
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(g(Point_3(nan, lo[1], lo[2])).has_value());
+  EXPECT_FALSE(g(Point_3(lo[0], lo[1], nan)).has_value());
+}
+
+TEST(RegularGridFlowField3, MaskExcludesTheCellsTouchingASolidNode)
+{
+  // 5 x 5 x 5 nodes of unit spacing, node (2, 2, 2) solid with a NaN value (ignored).
+  const Dimensions n = {5, 5, 5};
+  const Point_3 o(0., 0., 0.);
+  const auto f = [](double x, double y, double z) { return Vector_3(1. + x, 2. + y, 3. + z); };
+  std::vector<float> values = node_values(o, Vector_3(1, 1, 1), n, f);
+  std::vector<unsigned char> mask(125, 1);
+  const std::size_t solid = 2 + 5 * (2 + 5 * 2);
+  mask[solid] = 0;
+  values[3 * solid] = std::numeric_limits<float>::quiet_NaN();
+  const Grid g(o, 1., 1., 1., n, std::move(values), std::move(mask));
+  ASSERT_TRUE(g.has_mask());
+  EXPECT_FALSE(g.is_fluid(2, 2, 2));
+  EXPECT_TRUE(g.is_fluid(2, 2, 1));
+
+  std::size_t outside = 0;
+  for(int k = 0; k < 4; ++k)
+    for(int j = 0; j < 4; ++j)
+      for(int i = 0; i < 4; ++i) {
+        const bool touches = (i == 1 || i == 2) && (j == 1 || j == 2) && (k == 1 || k == 2);
+        const Point_3 center(i + 0.5, j + 0.5, k + 0.5);
+        const Point_3 near_corner(i + 0.01, j + 0.99, k + 0.5);
+        EXPECT_EQ(g(center).has_value(), !touches) << "cell " << i << " " << j << " " << k;
+        EXPECT_EQ(g(near_corner).has_value(), !touches) << "cell " << i << " " << j << " " << k;
+        if(!touches) {
+          expect_near_vector(*g(center), f(i + 0.5, j + 0.5, k + 0.5), 10.);
+        }
+        outside += touches;
+      }
+  EXPECT_EQ(outside, 8u);
+
+  // A face of a fluid cell is inside even where a solid cell lies behind it; a face whose
+  // nodes include the solid node is not.
+  const std::optional<Vector_3> on_fluid_face = g(Point_3(1., 1.5, 1.5));
+  ASSERT_TRUE(on_fluid_face.has_value());
+  EXPECT_TRUE(std::isfinite(on_fluid_face->x()));
+  expect_near_vector(*on_fluid_face, f(1., 1.5, 1.5), 10.);
+  EXPECT_FALSE(g(Point_3(2., 1.5, 1.5)).has_value());
+  EXPECT_TRUE(g(Point_3(3., 1.5, 1.5)).has_value());
+  // The solid node itself, and a fluid node next to it.
+  EXPECT_FALSE(g(Point_3(2., 2., 2.)).has_value());
+  ASSERT_TRUE(g(Point_3(2., 2., 1.)).has_value());
+  EXPECT_EQ(*g(Point_3(2., 2., 1.)), g.node_value(2, 2, 1));
+  // The non-finite value at the solid node was replaced, so it cannot leak.
+  EXPECT_EQ(g.node_value(2, 2, 2), Vector_3(0, 0, 0));
+}
+
+TEST(RegularGridFlowField3, SampleOnGridReproducesALinearField)
+{
+  const auto f = [](const Point_3& p) -> std::optional<Vector_3> {
+    return Vector_3(0.5 * p.x() - p.y() + 2., p.z() - 3. * p.x(), 0.25 * p.y() + p.z() - 1.);
+  };
+  const Grid g = FAS::sample_on_grid(f, kOrigin, kSpacing, kDims);
+  EXPECT_FALSE(g.has_mask());
+  EXPECT_TRUE(g.mask().empty());
+  EXPECT_EQ(g.dimensions(), kDims);
+  EXPECT_EQ(g.origin(), kOrigin);
+  EXPECT_EQ(g.spacing(), kSpacing);
+  EXPECT_EQ(g.number_of_nodes(), kDims[0] * kDims[1] * kDims[2]);
+  EXPECT_EQ(g.values().size(), 3 * g.number_of_nodes());
+  const double scale = max_abs_node_value(g);
+  std::mt19937 rng(13);
+  for(int s = 0; s < 2000; ++s) {
+    const Point_3 p = random_point_in(g.bbox(), rng);
+    ASSERT_TRUE(g(p).has_value());
+    expect_near_vector(*g(p), *f(p), scale);
+  }
+}
+
+TEST(RegularGridFlowField3, SampleOnGridMasksTheNodesOutsideTheField)
+{
+  // Defined for x <= 0.5 only: nodes x = 0, 0.5 fluid, x = 1, 1.5 solid (and a NaN node).
+  const auto f = [](const Point_3& p) -> std::optional<Vector_3> {
+    if(p.x() > 0.5)
+      return std::nullopt;
+    if(p.y() == 1. && p.z() == 1.)
+      return Vector_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+    return Vector_3(1, 2, 3);
+  };
+  const Grid g = FAS::sample_on_grid(f, Point_3(0, 0, 0), Vector_3(0.5, 0.5, 0.5), {4, 3, 3});
+  ASSERT_TRUE(g.has_mask());
+  EXPECT_TRUE(g.is_fluid(1, 0, 0));
+  EXPECT_FALSE(g.is_fluid(2, 0, 0));
+  EXPECT_FALSE(g.is_fluid(0, 2, 2));
+  EXPECT_EQ(g.node_value(3, 1, 1), Vector_3(0, 0, 0));
+  ASSERT_TRUE(g(Point_3(0.25, 0.25, 0.25)).has_value());
+  EXPECT_EQ(*g(Point_3(0.25, 0.25, 0.25)), Vector_3(1, 2, 3));
+  EXPECT_FALSE(g(Point_3(0.75, 0.25, 0.25)).has_value());
+  EXPECT_FALSE(g(Point_3(0.25, 0.75, 0.75)).has_value()); // touches the NaN node (0, 2, 2)
+}
+
+TEST(RegularGridFlowField3, CopiesShareStorage)
+{
+  std::vector<float> values(3 * 8, 1.f);
+  const float* data = values.data();
+  const Grid g(Point_3(0, 0, 0), Vector_3(1, 1, 1), {2, 2, 2}, std::move(values),
+               std::vector<unsigned char>(8, 1));
+  // The moved-in arrays are kept, not copied.
+  EXPECT_EQ(g.values().data(), data);
+  const Grid copy = g;
+  EXPECT_EQ(copy.values().data(), g.values().data());
+  EXPECT_EQ(copy.mask().data(), g.mask().data());
+  Grid assigned = FAS::sample_on_grid([](const Point_3&) { return std::optional<Vector_3>(); },
+                                      Point_3(0, 0, 0), Vector_3(1, 1, 1), {2, 2, 2});
+  assigned = g;
+  EXPECT_EQ(assigned.values().data(), data);
+  EXPECT_EQ(*copy(Point_3(0.5, 0.5, 0.5)), Vector_3(1, 1, 1));
+}
+
+// Runs `make` and checks that it throws std::invalid_argument whose message contains every
+// word of `words` (the argument's name and the expected and actual values).
+template <typename Make>
+void expect_invalid_argument(const Make& make, const std::vector<std::string>& words)
+{
+  try {
+    make();
+    ADD_FAILURE() << "no exception; expected one mentioning " << words.front();
+  } catch(const std::invalid_argument& e) {
+    const std::string what = e.what();
+    for(const std::string& w : words)
+      EXPECT_NE(what.find(w), std::string::npos) << "'" << w << "' missing from: " << what;
+  }
+}
+
+TEST(RegularGridFlowField3, BadInputThrowsWithTheArgumentsName)
+{
+  const Point_3 o(0, 0, 0);
+  const Vector_3 h(1, 1, 1);
+  const std::vector<float> v8(24, 0.f);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+
+  expect_invalid_argument([&] { Grid(o, h, {2, 2, 2}, std::vector<float>(10)); },
+                          {"values", "10", "24"});
+  expect_invalid_argument([&] { Grid(o, h, {2, 2, 2}, std::vector<float>(25)); },
+                          {"values", "25", "24"});
+  expect_invalid_argument([&] { Grid(o, h, {2, 2, 2}, v8, std::vector<unsigned char>(5, 1)); },
+                          {"mask", "5", "8"});
+  expect_invalid_argument([&] { Grid(o, h, {2, 1, 2}, std::vector<float>(12)); },
+                          {"dimensions", "1", "2"});
+  expect_invalid_argument([&] { Grid(o, h, {0, 2, 2}, std::vector<float>()); },
+                          {"dimensions", "0"});
+  expect_invalid_argument([&] { Grid(o, 1., -0.5, 1., {2, 2, 2}, v8); },
+                          {"spacing", "hy", "-0.5"});
+  expect_invalid_argument([&] { Grid(o, 0., 1., 1., {2, 2, 2}, v8); }, {"spacing", "hx"});
+  expect_invalid_argument([&] { Grid(o, 1., 1., nan, {2, 2, 2}, v8); }, {"spacing", "hz"});
+  expect_invalid_argument([&] { Grid(o, Vector_3(1, inf, 1), {2, 2, 2}, v8); },
+                          {"spacing", "hy"});
+  expect_invalid_argument([&] { Grid(Point_3(nan, 0, 0), h, {2, 2, 2}, v8); }, {"origin"});
+
+  std::vector<float> with_nan = v8;
+  with_nan[3 * 5 + 1] = std::numeric_limits<float>::quiet_NaN();
+  expect_invalid_argument([&] { Grid(o, h, {2, 2, 2}, with_nan); }, {"values", "(1, 0, 1)"});
+  // The same NaN at a solid node is accepted.
+  std::vector<unsigned char> mask(8, 1);
+  mask[5] = 0;
+  EXPECT_NO_THROW(Grid(o, h, {2, 2, 2}, with_nan, mask));
+
+  // Sizes whose product overflows must be refused before anything is allocated.
+  const std::size_t huge = std::size_t(1) << 30;
+  expect_invalid_argument([&] { Grid(o, h, {huge, huge, huge}, v8); }, {"dimensions"});
+  const auto zero = [](const Point_3&) { return std::optional<Vector_3>(Vector_3(0, 0, 0)); };
+  expect_invalid_argument([&] { FAS::sample_on_grid(zero, o, h, {huge, huge, huge}); },
+                          {"dimensions"});
+  expect_invalid_argument([&] { FAS::sample_on_grid(zero, o, h, {2, 2, 1}); },
+                          {"dimensions", "1"});
+  expect_invalid_argument([&] { FAS::sample_on_grid(zero, o, Vector_3(1, 1, 0), {2, 2, 2}); },
+                          {"spacing", "hz"});
+  const auto too_big = [](const Point_3&) {
+    return std::optional<Vector_3>(Vector_3(1e300, 0, 0));
+  };
+  expect_invalid_argument([&] { FAS::sample_on_grid(too_big, o, h, {2, 2, 2}); },
+                          {"float", "1e+300"});
+}
+
+} // namespace
