@@ -218,7 +218,9 @@ public:
     const auto fim = CGAL::get_initialized_face_index_map(tm, np);
     m_vertices = internal::vertices_in_index_order(tm, vim);
     m_arrays = internal::make_mesh_arrays(tm, vim, fim);
-    rebuild_operators(internal::read_positions(m_vertices, m_vpm));
+    const Positions reference = internal::read_positions(m_vertices, m_vpm);
+    internal::check_finite_positions(reference, "Flow_aligned_deformation: tm");
+    rebuild_operators(reference);
   }
   /// @}
 
@@ -237,6 +239,8 @@ public:
     report.iteration = ++m_number_of_iterations;
 
     const Positions x = internal::read_positions(m_vertices, m_vpm);
+    // The user may have moved vertices since the last iteration.
+    internal::check_finite_positions(x, "Flow_aligned_deformation::step(): tm");
     const std::size_t n = m_ops.faces.size();
     m_transforms.resize(n);
     m_normals.resize(n);
@@ -368,25 +372,27 @@ public:
   /// Moves between iterations: they change the current surface only, so nothing is refactored.
   /// @{
 
-  /// Translates the surface by `v`.
+  /// Translates the surface by `v`.  \throws std::invalid_argument if `v` is not finite.
   void translate(const Vector_3& v)
   {
+    if (!to_eigen(v).allFinite())
+      throw std::invalid_argument("Flow_aligned_deformation::translate(): the vector is not finite");
     Positions x = internal::read_positions(m_vertices, m_vpm);
     x.rowwise() += to_eigen(v).transpose();
     internal::write_positions(x, m_vertices, m_vpm, m_gt);
   }
 
   /// Rotates the surface by `angle` (radians, right-handed) about the line through `center`
-  /// along `axis`.  \pre `axis` is not the zero vector.
+  /// along `axis`.  \throws std::invalid_argument if `axis` is zero or anything is not finite.
   void rotate(const Point_3& center, const Vector_3& axis, FT angle)
   {
     const Eigen::Vector3d a = to_eigen(axis);
-    if (!(a.norm() > 0) || !a.allFinite() || !std::isfinite(CGAL::to_double(angle)))
-      throw std::invalid_argument("Flow_aligned_deformation::rotate(): axis must be a finite non-zero "
-                                  "vector and angle finite");
-    const Eigen::Matrix3d r = internal::rotation_matrix(a.normalized(), CGAL::to_double(angle));
     const Eigen::RowVector3d c(CGAL::to_double(center.x()), CGAL::to_double(center.y()),
                                CGAL::to_double(center.z()));
+    if (!(a.norm() > 0) || !a.allFinite() || !std::isfinite(CGAL::to_double(angle)) || !c.allFinite())
+      throw std::invalid_argument("Flow_aligned_deformation::rotate(): the axis must be a finite non-zero "
+                                  "vector, and the angle and the center finite");
+    const Eigen::Matrix3d r = internal::rotation_matrix(a.normalized(), CGAL::to_double(angle));
     Positions x = internal::read_positions(m_vertices, m_vpm);
     x = ((x.rowwise() - c) * r.transpose()).rowwise() + c;
     internal::write_positions(x, m_vertices, m_vpm, m_gt);
@@ -516,10 +522,14 @@ private:
     }
     std::vector<std::size_t> nearest(components, 0);
     std::vector<double> nearest_distance(components, std::numeric_limits<double>::infinity());
+    // Symmetric patches have several faces at the same distance; a tolerance makes the choice
+    // (the lowest index among them) independent of rounding, so equal inputs in other mesh
+    // types or precisions anchor the same face.
+    const double tolerance = 1e-10 * (reference.colwise().maxCoeff() - reference.colwise().minCoeff()).squaredNorm();
     for (std::size_t j = 0; j < m_ops.faces.size(); ++j) {
       const std::size_t c = m_arrays.face_component[j];
       const double d = (centroid[j] - barycenter[c] / component_area[c]).squaredNorm();
-      if (d < nearest_distance[c]) {
+      if (d < nearest_distance[c] - tolerance) {
         nearest_distance[c] = d;
         nearest[c] = j;
       }

@@ -82,8 +82,10 @@ void visit_mesh_face_fluxes(const TriangleMesh& tm, const FlowField& field, cons
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> ordered_faces(num_faces(tm));
   for (auto f : faces(tm))
     ordered_faces[get(fim, f)] = f;
-  visit_face_fluxes(read_positions(vertices_in_index_order(tm, vim), vpm), make_mesh_arrays(tm, vim, fim).face_vertices,
-                    field, gt, [&](std::size_t j, double area, double flux) { visit(ordered_faces[j], area, flux); });
+  const Positions positions = read_positions(vertices_in_index_order(tm, vim), vpm);
+  check_finite_positions(positions, caller + ": tm");
+  visit_face_fluxes(positions, make_mesh_arrays(tm, vim, fim).face_vertices, field, gt,
+                    [&](std::size_t j, double area, double flux) { visit(ordered_faces[j], area, flux); });
 }
 
 } // namespace internal

@@ -18,6 +18,8 @@
 
 #include <array>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -59,6 +61,15 @@ Positions read_positions(const std::vector<VertexDescriptor>& ordered_vertices, 
     x.row(i++) << CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z());
   }
   return x;
+}
+
+/// Throws std::invalid_argument naming `name` and the first vertex (in index order) with a
+/// NaN or infinite coordinate, if any.
+inline void check_finite_positions(const Positions& x, const std::string& name)
+{
+  for (Eigen::Index i = 0; i < x.rows(); ++i)
+    if (!x.row(i).allFinite())
+      throw std::invalid_argument(name + ": vertex " + std::to_string(i) + " has a coordinate that is not finite");
 }
 
 template <class VertexDescriptor, class VertexPointMap, class GeomTraits>

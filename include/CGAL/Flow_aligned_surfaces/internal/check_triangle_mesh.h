@@ -7,12 +7,13 @@
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_CHECK_TRIANGLE_MESH_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_CHECK_TRIANGLE_MESH_H
 
-#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
@@ -25,6 +26,15 @@ void check_triangle_mesh(const TriangleMesh& tm, const std::string& name)
 {
   if (faces(tm).empty())
     throw std::invalid_argument(name + ": the mesh has no faces");
+  {
+    std::size_t vertex_index = 0;
+    for (auto v : vertices(tm)) {
+      if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
+        throw std::invalid_argument(name + ": vertex " + std::to_string(vertex_index) +
+                                    " is isolated (it belongs to no face)");
+      ++vertex_index;
+    }
+  }
   if (!CGAL::is_valid_polygon_mesh(tm))
     throw std::invalid_argument(name + ": the mesh is not a valid polygon mesh (broken halfedge structure)");
   std::size_t face_index = 0;
@@ -35,12 +45,22 @@ void check_triangle_mesh(const TriangleMesh& tm, const std::string& name)
                                   std::to_string(degree) + " vertices; the mesh must be a triangle mesh");
     ++face_index;
   }
+  // A vertex is manifold when the halfedges pointing to it form a single fan: its cycle holds
+  // all of them and at most one border halfedge (Surface_mesh links the fans of a bow tie
+  // into one cycle through their border halfedges).  Linear in the size of the mesh, where
+  // PMP's per-vertex test allocates per call and is quadratic over the whole mesh.
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+  std::vector<std::size_t> incoming(num_vertices(tm), 0);
+  for (auto h : halfedges(tm))
+    ++incoming[get(vim, target(h, tm))];
   std::size_t vertex_index = 0;
   for (auto v : vertices(tm)) {
-    if (halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
-      throw std::invalid_argument(name + ": vertex " + std::to_string(vertex_index) +
-                                  " is isolated (it belongs to no face)");
-    if (CGAL::Polygon_mesh_processing::is_non_manifold_vertex(v, tm))
+    std::size_t fan = 0, borders = 0;
+    for (auto h : halfedges_around_target(halfedge(v, tm), tm)) {
+      ++fan;
+      borders += is_border(h, tm) ? 1 : 0;
+    }
+    if (fan != incoming[get(vim, v)] || borders > 1)
       throw std::invalid_argument(name + ": vertex " + std::to_string(vertex_index) +
                                   " is non-manifold (its faces form more than one fan)");
     ++vertex_index;

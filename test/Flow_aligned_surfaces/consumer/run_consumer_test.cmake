@@ -1,0 +1,103 @@
+# Checks that the installed package works for an outside project:
+#   (1) cmake --install <PROJECT_BINARY_DIR> --prefix <WORK_DIR>/prefix
+#   (2) configure the consumer project with CMAKE_PREFIX_PATH=<prefix>
+#   (3) build it
+#   (4) run it (it returns nonzero when the alignment misses its flux)
+# Run as: cmake -DPROJECT_BINARY_DIR=... -DCONSUMER_SOURCE_DIR=... -DWORK_DIR=... -P run_consumer_test.cmake
+# Optional: -DCONSUMER_GENERATOR=..., -DCONSUMER_CXX_COMPILER=..., -DCONSUMER_BUILD_TYPE=...,
+#           -DEXPECT_CHOLMOD=ON|OFF (checks that the CHOLMOD usage requirement reached the consumer).
+cmake_minimum_required(VERSION 3.16)
+
+foreach(var IN ITEMS PROJECT_BINARY_DIR CONSUMER_SOURCE_DIR WORK_DIR)
+  if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
+    message(FATAL_ERROR "run_consumer_test.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+if(NOT EXISTS "${PROJECT_BINARY_DIR}/cmake_install.cmake")
+  message(FATAL_ERROR "run_consumer_test.cmake: ${PROJECT_BINARY_DIR} is not a configured build "
+                      "directory (no cmake_install.cmake)")
+endif()
+if(NOT EXISTS "${CONSUMER_SOURCE_DIR}/CMakeLists.txt")
+  message(FATAL_ERROR "run_consumer_test.cmake: no CMakeLists.txt in ${CONSUMER_SOURCE_DIR}")
+endif()
+if(NOT CONSUMER_BUILD_TYPE)
+  set(CONSUMER_BUILD_TYPE Release)
+endif()
+
+set(prefix "${WORK_DIR}/prefix")
+set(build "${WORK_DIR}/build")
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+
+# Runs one step; on failure stops with the step's name, command and output.
+function(run_step name)
+  execute_process(COMMAND ${ARGN}
+    RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
+  if(NOT result EQUAL 0)
+    string(REPLACE ";" " " command "${ARGN}")
+    message(FATAL_ERROR "consumer test: step '${name}' failed (exit code: ${result})\n"
+                        "command: ${command}\n--- stdout ---\n${output}\n--- stderr ---\n${error}")
+  endif()
+  set(step_output "${output}" PARENT_SCOPE)
+  message(STATUS "consumer test: step '${name}' done")
+endfunction()
+
+# (1) Install.
+run_step("1/4 install" "${CMAKE_COMMAND}" --install "${PROJECT_BINARY_DIR}" --prefix "${prefix}")
+foreach(file IN ITEMS
+    include/CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h
+    include/CGAL/Flow_aligned_surfaces/align_to_flow.h
+    include/CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h
+    share/cmake/Flow_aligned_surfaces/Flow_aligned_surfacesConfig.cmake
+    share/cmake/Flow_aligned_surfaces/Flow_aligned_surfacesConfigVersion.cmake
+    share/cmake/Flow_aligned_surfaces/Flow_aligned_surfacesTargets.cmake)
+  if(NOT EXISTS "${prefix}/${file}")
+    message(FATAL_ERROR "consumer test: step '1/4 install' did not install ${file} under ${prefix}")
+  endif()
+endforeach()
+
+# (2) Configure: only the fresh prefix may provide the package (no package registry).
+set(configure_args -S "${CONSUMER_SOURCE_DIR}" -B "${build}"
+    "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_BUILD_TYPE=${CONSUMER_BUILD_TYPE}"
+    -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON)
+if(CONSUMER_GENERATOR)
+  list(APPEND configure_args -G "${CONSUMER_GENERATOR}")
+endif()
+if(CONSUMER_CXX_COMPILER)
+  list(APPEND configure_args "-DCMAKE_CXX_COMPILER=${CONSUMER_CXX_COMPILER}")
+endif()
+run_step("2/4 configure" "${CMAKE_COMMAND}" ${configure_args})
+file(STRINGS "${build}/CMakeCache.txt" found_dir REGEX "^Flow_aligned_surfaces_DIR:")
+string(REGEX REPLACE "^[^=]*=" "" found_dir "${found_dir}")
+file(REAL_PATH "${prefix}" real_prefix)
+if(EXISTS "${found_dir}")
+  file(REAL_PATH "${found_dir}" found_dir)
+endif()
+string(FIND "${found_dir}" "${real_prefix}/" position)
+if(NOT position EQUAL 0)
+  message(FATAL_ERROR "consumer test: step '2/4 configure' found the package in '${found_dir}', "
+                      "not in the installed prefix ${real_prefix}")
+endif()
+
+# (3) Build.
+run_step("3/4 build" "${CMAKE_COMMAND}" --build "${build}" --config "${CONSUMER_BUILD_TYPE}")
+
+# (4) Run.
+set(executable "${build}/consumer")
+if(NOT EXISTS "${executable}" AND EXISTS "${build}/${CONSUMER_BUILD_TYPE}/consumer")
+  set(executable "${build}/${CONSUMER_BUILD_TYPE}/consumer")
+endif()
+run_step("4/4 run" "${executable}")
+message(STATUS "consumer output:\n${step_output}")
+if(NOT step_output MATCHES "normalized flux after: ")
+  message(FATAL_ERROR "consumer test: step '4/4 run' printed no flux:\n${step_output}")
+endif()
+if(DEFINED EXPECT_CHOLMOD AND NOT "${EXPECT_CHOLMOD}" STREQUAL "")
+  if(EXPECT_CHOLMOD AND NOT step_output MATCHES "sparse solver: CHOLMOD")
+    message(FATAL_ERROR "consumer test: the package was built with CHOLMOD but the consumer did not "
+                        "get CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD from the exported target:\n${step_output}")
+  endif()
+  if(NOT EXPECT_CHOLMOD AND step_output MATCHES "sparse solver: CHOLMOD")
+    message(FATAL_ERROR "consumer test: the package was built without CHOLMOD but the consumer uses it")
+  endif()
+endif()
