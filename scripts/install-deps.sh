@@ -11,6 +11,7 @@ packages=(
   libboost-dev                          # Boost (graph, property maps)
   libopenmesh-dev                       # OpenMesh, tested through CGAL's graph traits
   libsuitesparse-dev                    # CHOLMOD sparse Cholesky
+  libopenblas-dev                       # an optimized BLAS for CHOLMOD (Debian defaults to the reference one)
   libtbb-dev                            # parallel loops
   libgtest-dev libgmock-dev libbenchmark-dev
   doxygen graphviz                      # documentation, built in the tests

@@ -66,7 +66,7 @@ discretized; iterations never accumulate errors because they always reconstruct 
 \tparam SparseLinearSolver a model of `SparseLinearAlgebraWithFactorTraits_d` wrapping an Eigen
         sparse Cholesky solver, such as `CGAL::Eigen_solver_traits<S>`; its `solver()` is used to
         factor once and solve the three coordinates at once.  Default:
-        `CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>>`
+        `CGAL::Eigen_solver_traits<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>>>`
         when CHOLMOD was found (the macro `CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD`), else
         `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`.
 
@@ -209,6 +209,7 @@ public:
     check_parameter("convergence_step", m_convergence_step, m_convergence_step >= 0);
     check_parameter("max_dihedral_angle", m_theta_max, m_theta_max > 0 && m_theta_max <= CGAL_PI);
     check_parameter("constraint_weight", m_relative_constraint_weight, m_relative_constraint_weight > 0);
+    m_cos_theta_max_margin = std::cos(m_theta_max) + 1e-9;
     // Requested angles never exceed pi/2, so a larger eta never clamps.
     m_cos_eta = std::cos((std::min)(m_eta, CGAL_PI / 2));
     m_sin_eta = std::sin((std::min)(m_eta, CGAL_PI / 2));
@@ -291,6 +292,10 @@ public:
     for (const auto& edge : m_arrays.interior_edges) {
       const std::size_t p = edge.faces[0], q = edge.faces[1];
       if (!m_has_normal[p] || !m_has_normal[q])
+        continue;
+      // Cheap rejection of the unfolded edges, nearly all of them; the margin sends every edge
+      // near theta_max to the exact test.
+      if (m_normals[p].dot(m_normals[q]) >= m_cos_theta_max_margin)
         continue;
       const double theta = internal::angle_between(m_normals[p], m_normals[q]);
       const double delta = theta - m_theta_max;
@@ -559,7 +564,7 @@ private:
   Geom_traits m_gt;
   std::size_t m_max_iterations = 100;
   Visitor m_visitor;
-  double m_cos_eta = 1, m_sin_eta = 0;
+  double m_cos_eta = 1, m_sin_eta = 0, m_cos_theta_max_margin = -2;
   double m_eta = 0.1, m_epsilon = 1e-6, m_convergence_step = 1e-4, m_theta_max = CGAL_PI / 2;
   bool m_area_correction = true;
   double m_relative_constraint_weight = 1e-3;
@@ -578,7 +583,7 @@ private:
   // Per-iteration buffers, kept to avoid reallocations.
   std::vector<Eigen::Matrix3d> m_transforms;
   std::vector<Eigen::Vector3d> m_normals;
-  std::vector<bool> m_has_normal;
+  std::vector<unsigned char> m_has_normal; // not vector<bool>: read in the hot loop
   Positions m_rhs;
 };
 

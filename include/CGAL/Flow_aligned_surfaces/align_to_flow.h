@@ -41,7 +41,7 @@ its `run()`; the factorization is made once.
     \cgalParamDescription{an instance of the sparse linear solver; only its type is used}
     \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d` wrapping an Eigen sparse
       Cholesky solver, such as `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`}
-    \cgalParamDefault{CHOLMOD's supernodal Cholesky when found, else Eigen's `SimplicialLDLT`}
+    \cgalParamDefault{CHOLMOD's simplicial \f$ LDL^T \f$ when found, else Eigen's `SimplicialLDLT`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 

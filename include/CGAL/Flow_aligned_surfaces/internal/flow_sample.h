@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <limits>
 
 namespace CGAL {
@@ -36,15 +37,24 @@ Flow_sample sample_flow(const FlowField& field, const Point_3& p)
     return sample;
   sample.velocity = Eigen::Vector3d(CGAL::to_double(value->x()), CGAL::to_double(value->y()),
                                     CGAL::to_double(value->z()));
-  if (!sample.velocity.allFinite())
+  if (!sample.velocity.allFinite()) {
     sample.kind = Sample_kind::INVALID;
+    return sample;
+  }
+  const double squared_norm = sample.velocity.squaredNorm();
+  if (squared_norm > 1e-200 && squared_norm < 1e200) {
+    sample.kind = Sample_kind::VALID;
+    sample.direction = sample.velocity / std::sqrt(squared_norm);
+    return sample;
+  }
+  // Far from 1 the squared norm may under- or overflow: scale by the largest component first.
+  const double largest = sample.velocity.cwiseAbs().maxCoeff();
   // Below the smallest normal double, a direction computed from the vector is rounding noise.
-  else if (sample.velocity.norm() < std::numeric_limits<double>::min())
+  if (largest < std::numeric_limits<double>::min())
     sample.kind = Sample_kind::ZERO;
   else {
     sample.kind = Sample_kind::VALID;
-    // Scaling by the largest component first keeps huge but finite vectors from overflowing.
-    sample.direction = (sample.velocity / sample.velocity.cwiseAbs().maxCoeff()).normalized();
+    sample.direction = (sample.velocity / largest).normalized();
   }
   return sample;
 }
