@@ -286,6 +286,10 @@ struct Convergence_run {
   double initial_flux = 0, final_flux = 0;
 };
 
+// --parallel: the per-face work on all cores (FAS::parameters::use_parallelism); not Table 1,
+// which is single-threaded like the paper's.
+bool g_use_parallelism = false;
+
 Convergence_run run_to_convergence(const Grid& grid, FAS::Alignment alignment, std::size_t target_faces,
                                    std::size_t& faces, std::size_t& vertices)
 {
@@ -294,7 +298,8 @@ Convergence_run run_to_convergence(const Grid& grid, FAS::Alignment alignment, s
   faces = num_faces(tm);
   vertices = num_vertices(tm);
   const auto construct_start = Clock::now();
-  FAS::Flow_aligned_deformation<Mesh, Grid> deformation(tm, grid, alignment);
+  FAS::Flow_aligned_deformation<Mesh, Grid> deformation(tm, grid, alignment,
+                                                        FAS::parameters::use_parallelism(g_use_parallelism));
   Convergence_run run;
   run.construct_ms = ms_since(construct_start);
   run.factor_ms = deformation.run(0).factor_ms; // no iteration: only the constructor's factorization
@@ -597,13 +602,15 @@ int main(int argc, char** argv)
       repetitions = std::stoul(argv[++i]);
     else if(a == "--large-repetitions" && i + 1 < argc)
       large_repetitions = std::stoul(argv[++i]);
+    else if(a == "--parallel")
+      g_use_parallelism = true;
     else if(a == "--quick") {
       sizes = {800, 5000};
       repetitions = large_repetitions = 1;
     }
     else if(a == "--help" || a == "-h") {
       std::cout << "usage: " << argv[0]
-                << " [output.json] [--sizes 800,5000,...] [--repetitions N] [--large-repetitions N] [--quick]\n";
+                << " [output.json] [--sizes 800,5000,...] [--repetitions N] [--large-repetitions N] [--quick] [--parallel]\n";
       return 0;
     }
     else if(!a.empty() && a[0] != '-')
@@ -677,6 +684,7 @@ int main(int argc, char** argv)
           << grid_ms << " ms), trilinear interpolation (Regular_grid_flow_field_3)";
     json.open("setup", '{')
         .value("field", field.str())
+        .value("use_parallelism", g_use_parallelism)
         .value("patch", "make_planar_patch, 1 x 1, centered at (0, 0, 0.2) (distance 1.8 from the source)")
         .value("start_orthogonal", "normal = e_z rotated by 0.3 rad about e_x (aligned state: sphere R = 1.8)")
         .value("start_tangential", "normal = e_x rotated by 0.3 rad about e_y (aligned state: cone with apex at the source)")

@@ -337,3 +337,36 @@ TEST(FlowAlignedDeformation, PackageParametersAreHonoured)
 }
 
 } // namespace
+
+namespace {
+
+// The per-face work spread over threads gives the surfaces of the serial iteration.
+TEST(FlowAlignedDeformation, ParallelIterationsGiveTheSerialSurfaces)
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  GTEST_SKIP() << "built without TBB: use_parallelism has no effect";
+#else
+  const FAS::Point_source_flow<K> source(Point(0, 0, 0), 1.0);
+  Mesh serial = planar_patch(Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 12000);
+  Mesh parallel = serial;
+  ASSERT_GE(parallel.number_of_faces(), 4096u);
+  std::vector<FAS::Iteration_report> serial_reports, parallel_reports;
+  FAS::align_to_flow(serial, source, FAS::Alignment::ORTHOGONAL,
+                     CGAL::parameters::visitor([&](const FAS::Iteration_report& r) { serial_reports.push_back(r); }));
+  FAS::align_to_flow(parallel, source, FAS::Alignment::ORTHOGONAL,
+                     FAS::parameters::use_parallelism(true, CGAL::parameters::visitor([&](const FAS::Iteration_report& r) {
+                       parallel_reports.push_back(r);
+                     })));
+  ASSERT_EQ(serial_reports.size(), parallel_reports.size());
+  for (std::size_t k = 0; k < serial_reports.size(); ++k) {
+    EXPECT_EQ(serial_reports[k].max_rotation_angle, parallel_reports[k].max_rotation_angle);
+    // Only the order of the flux sums differs.
+    EXPECT_NEAR(serial_reports[k].normalized_flux, parallel_reports[k].normalized_flux, 1e-12);
+  }
+  auto p = parallel.vertices().begin();
+  for (auto v : serial.vertices())
+    EXPECT_EQ(serial.point(v), parallel.point(*p++));
+#endif
+}
+
+} // namespace

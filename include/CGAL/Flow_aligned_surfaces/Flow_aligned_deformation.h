@@ -33,6 +33,11 @@
 #include <Eigen/Geometry>
 #include <Eigen/Sparse>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+#endif
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -178,6 +183,15 @@ public:
       \cgalParamType{`double`}
       \cgalParamDefault{`1e-3`}
     \cgalParamNEnd
+    \cgalParamNBegin{use_parallelism}
+      \cgalParamDescription{whether the field is sampled and the faces are transformed on all
+        cores (with TBB, when the macro `CGAL_LINKED_WITH_TBB` is defined, as the CMake target
+        `CGAL::Flow_aligned_surfaces` does when TBB is found, and for 4096 faces or more); the
+        field's `operator()` must then be safe to call concurrently.  The surfaces are the same
+        either way.}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
   \cgalNamedParamsEnd
 
   \throws std::invalid_argument if `tm` is empty, not a valid manifold triangle mesh, has a
@@ -204,6 +218,7 @@ public:
     m_theta_max = choose_parameter(get_parameter(np, fnp::max_dihedral_angle_t()), CGAL_PI / 2);
     m_area_correction = choose_parameter(get_parameter(np, fnp::area_correction_t()), true);
     m_relative_constraint_weight = choose_parameter(get_parameter(np, fnp::constraint_weight_t()), 1e-3);
+    m_parallel = choose_parameter(get_parameter(np, fnp::use_parallelism_t()), false);
     check_parameter("max_rotation_angle", m_eta, m_eta > 0 && m_eta <= CGAL_PI);
     check_parameter("convergence_angle", m_epsilon, m_epsilon >= 0);
     check_parameter("convergence_step", m_convergence_step, m_convergence_step >= 0);
@@ -245,48 +260,30 @@ public:
     const std::size_t n = m_ops.faces.size();
     m_transforms.resize(n);
     m_normals.resize(n);
-    m_has_normal.assign(n, false);
+    m_has_normal.assign(n, 0);
 
-    double flux = 0, flux_area = 0;
-    Rotation_angle largest_requested;
-    auto construct_point = m_gt.construct_point_3_object();
-    for (std::size_t j = 0; j < n; ++j) {
-      const internal::Reference_face& face = m_ops.faces[j];
-      const Eigen::Vector3d a = x.row(face.vertices[0]), b = x.row(face.vertices[1]), c = x.row(face.vertices[2]);
-      const Eigen::Vector3d cross = (b - a).cross(c - a);
-      const double twice_area = cross.norm();
-      Eigen::Matrix3d& t = m_transforms[j];
-      t.setIdentity();
-      // A face collapsed by the user has no normal; it keeps its gradients (T = I).
-      if (!(twice_area > 0) || !std::isfinite(twice_area))
-        continue;
-      const Eigen::Vector3d normal = cross / twice_area;
-      m_normals[j] = normal;
-      m_has_normal[j] = true;
-
-      const Eigen::Vector3d centroid = (a + b + c) / 3;
-      const internal::Flow_sample sample =
-          internal::sample_flow(m_field, construct_point(centroid.x(), centroid.y(), centroid.z()));
-      switch (sample.kind) {
-      case internal::Sample_kind::OUTSIDE: ++report.number_of_outside_samples; break;
-      case internal::Sample_kind::INVALID: ++report.number_of_invalid_samples; break;
-      case internal::Sample_kind::ZERO: ++report.number_of_zero_samples; break;
-      case internal::Sample_kind::VALID: {
-        const double area = 0.5 * twice_area;
-        flux += area * std::abs(normal.dot(sample.direction));
-        flux_area += area;
-        Rotation_angle requested;
-        t = alignment_rotation(normal, sample.direction, requested);
-        if (requested.key() > largest_requested.key())
-          largest_requested = requested;
-        break;
-      }
-      }
-      if (m_area_correction)
-        t *= std::sqrt(face.area / (0.5 * twice_area));
-    }
-    report.normalized_flux = flux_area > 0 ? flux / flux_area : 0;
-    report.max_rotation_angle = largest_requested.radians();
+    Face_pass face_pass;
+#ifdef CGAL_LINKED_WITH_TBB
+    // Faces are independent; below a few thousand the threads cost more than they save.
+    if (m_parallel && n >= 4096)
+      face_pass = tbb::parallel_reduce(
+          tbb::blocked_range<std::size_t>(0, n, 1024), Face_pass(),
+          [&](const tbb::blocked_range<std::size_t>& range, Face_pass partial) {
+            transform_faces(x, range.begin(), range.end(), partial);
+            return partial;
+          },
+          [](Face_pass left, const Face_pass& right) {
+            left.join(right);
+            return left;
+          });
+    else
+#endif
+      transform_faces(x, 0, n, face_pass);
+    report.number_of_outside_samples = face_pass.outside;
+    report.number_of_invalid_samples = face_pass.invalid;
+    report.number_of_zero_samples = face_pass.zero;
+    report.normalized_flux = face_pass.area > 0 ? face_pass.flux / face_pass.area : 0;
+    report.max_rotation_angle = face_pass.largest_requested.radians();
 
     // Fold correction: open every crease sharper than theta_max by delta/2 on each side.
     for (const auto& edge : m_arrays.interior_edges) {
@@ -463,6 +460,65 @@ private:
     double radians() const { return std::atan2(sin, cos); }
   };
 
+  // What the pass over the faces accumulates besides the per-face transforms.
+  struct Face_pass {
+    double flux = 0, area = 0;
+    Rotation_angle largest_requested;
+    std::size_t outside = 0, invalid = 0, zero = 0;
+    void join(const Face_pass& other)
+    {
+      flux += other.flux;
+      area += other.area;
+      if (other.largest_requested.key() > largest_requested.key())
+        largest_requested = other.largest_requested;
+      outside += other.outside;
+      invalid += other.invalid;
+      zero += other.zero;
+    }
+  };
+
+  // The local transformation T_j of the faces [begin, end) of the current positions `x`:
+  // samples the field at the centroid, rotates toward alignment and corrects the area.
+  void transform_faces(const Positions& x, std::size_t begin, std::size_t end, Face_pass& pass)
+  {
+    auto construct_point = m_gt.construct_point_3_object();
+    for (std::size_t j = begin; j < end; ++j) {
+      const internal::Reference_face& face = m_ops.faces[j];
+      const Eigen::Vector3d a = x.row(face.vertices[0]), b = x.row(face.vertices[1]), c = x.row(face.vertices[2]);
+      const Eigen::Vector3d cross = (b - a).cross(c - a);
+      const double twice_area = cross.norm();
+      Eigen::Matrix3d& t = m_transforms[j];
+      t.setIdentity();
+      // A face collapsed by the user has no normal; it keeps its gradients (T = I).
+      if (!(twice_area > 0) || !std::isfinite(twice_area))
+        continue;
+      const Eigen::Vector3d normal = cross / twice_area;
+      m_normals[j] = normal;
+      m_has_normal[j] = true;
+
+      const Eigen::Vector3d centroid = (a + b + c) / 3;
+      const internal::Flow_sample sample =
+          internal::sample_flow(m_field, construct_point(centroid.x(), centroid.y(), centroid.z()));
+      switch (sample.kind) {
+      case internal::Sample_kind::OUTSIDE: ++pass.outside; break;
+      case internal::Sample_kind::INVALID: ++pass.invalid; break;
+      case internal::Sample_kind::ZERO: ++pass.zero; break;
+      case internal::Sample_kind::VALID: {
+        const double area = 0.5 * twice_area;
+        pass.flux += area * std::abs(normal.dot(sample.direction));
+        pass.area += area;
+        Rotation_angle requested;
+        t = alignment_rotation(normal, sample.direction, requested);
+        if (requested.key() > pass.largest_requested.key())
+          pass.largest_requested = requested;
+        break;
+      }
+      }
+      if (m_area_correction)
+        t *= std::sqrt(face.area / (0.5 * twice_area));
+    }
+  }
+
   // The rotation that turns the unit normal toward alignment, clamped to eta; `requested`
   // receives the unclamped angle's magnitude.  With c = cos(gamma), s = sin(gamma) the angle
   // is gamma (orthogonal; gamma - pi when -v is nearer, so that a patch whose normal faces
@@ -567,6 +623,7 @@ private:
   double m_cos_eta = 1, m_sin_eta = 0, m_cos_theta_max_margin = -2;
   double m_eta = 0.1, m_epsilon = 1e-6, m_convergence_step = 1e-4, m_theta_max = CGAL_PI / 2;
   bool m_area_correction = true;
+  bool m_parallel = false;
   double m_relative_constraint_weight = 1e-3;
 
   std::vector<vertex_descriptor> m_vertices; // in vertex-index order

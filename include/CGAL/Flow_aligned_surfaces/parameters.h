@@ -28,6 +28,7 @@ CGAL_FAS_DECLARE_TAG(convergence_step)
 CGAL_FAS_DECLARE_TAG(max_dihedral_angle)
 CGAL_FAS_DECLARE_TAG(area_correction)
 CGAL_FAS_DECLARE_TAG(constraint_weight)
+CGAL_FAS_DECLARE_TAG(use_parallelism)
 CGAL_FAS_DECLARE_TAG(patch_axis)
 #undef CGAL_FAS_DECLARE_TAG
 } // namespace internal_np
@@ -73,6 +74,10 @@ CGAL_FAS_NAMED_PARAMETER(area_correction, bool)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// The soft-constraint weight relative to the mean diagonal of `L`.  Default: `1e-3`.
 CGAL_FAS_NAMED_PARAMETER(constraint_weight, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Whether the per-face work of an iteration (field samples, local transformations) runs in
+/// parallel with TBB; the field must then be safe to call concurrently.  Default: `false`.
+CGAL_FAS_NAMED_PARAMETER(use_parallelism, bool)
 
 #undef CGAL_FAS_NAMED_PARAMETER
 
