@@ -128,6 +128,22 @@ struct Factor_stats {
 };
 Factor_stats last_factor_stats;
 
+// Runs the symbolic and the numeric phase of `solver` on `matrix` (then `after_numeric()`, timed
+// with the numeric phase) and records their times in last_factor_stats.
+template <class Solver, class AfterNumeric>
+void timed_factorization(Solver& solver, const Sparse_matrix& matrix, const AfterNumeric& after_numeric)
+{
+  const double cpu_start = thread_cpu_ms();
+  const auto start = Clock::now();
+  solver.analyzePattern(matrix);
+  last_factor_stats.analyze_ms = ms_since(start);
+  const auto numeric = Clock::now();
+  solver.factorize(matrix);
+  after_numeric();
+  last_factor_stats.numeric_ms = ms_since(numeric);
+  last_factor_stats.cpu_ms = thread_cpu_ms() - cpu_start;
+}
+
 // The last solve, timed inside the solver: wall clock and thread CPU time.
 struct Solve_stats {
   double wall_ms = 0, cpu_ms = 0;
@@ -186,19 +202,13 @@ public:
 
   Instrumented_cholmod& compute(const Sparse_matrix& matrix)
   {
-    const double cpu_start = thread_cpu_ms();
-    const auto start = Clock::now();
-    this->analyzePattern(matrix);
-    const double analyze_ms = ms_since(start);
-    const auto numeric = Clock::now();
-    this->factorize(matrix);
-    const bool supernodal = this->m_cholmodFactor && this->m_cholmodFactor->is_super;
-    if(ToSimplicial && this->info() == Eigen::Success && supernodal &&
-       !cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, this->m_cholmodFactor, &this->cholmod()))
-      throw std::runtime_error("cholmod_change_factor failed");
-    last_factor_stats.analyze_ms = analyze_ms;
-    last_factor_stats.numeric_ms = ms_since(numeric);
-    last_factor_stats.cpu_ms = thread_cpu_ms() - cpu_start;
+    bool supernodal = false;
+    timed_factorization(*this, matrix, [&] {
+      supernodal = this->m_cholmodFactor && this->m_cholmodFactor->is_super;
+      if(ToSimplicial && this->info() == Eigen::Success && supernodal &&
+         !cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, this->m_cholmodFactor, &this->cholmod()))
+        throw std::runtime_error("cholmod_change_factor failed");
+    });
     const cholmod_common& common = this->cholmod();
     last_factor_stats.nnz_L = common.lnz;
     last_factor_stats.flops = common.fl;
@@ -216,15 +226,7 @@ class Instrumented_eigen : public Timed_solve<EigenSimplicialSolver>
 public:
   Instrumented_eigen& compute(const Sparse_matrix& matrix)
   {
-    const double cpu_start = thread_cpu_ms();
-    const auto start = Clock::now();
-    this->analyzePattern(matrix);
-    const double analyze_ms = ms_since(start);
-    const auto numeric = Clock::now();
-    this->factorize(matrix);
-    last_factor_stats.analyze_ms = analyze_ms;
-    last_factor_stats.numeric_ms = ms_since(numeric);
-    last_factor_stats.cpu_ms = thread_cpu_ms() - cpu_start;
+    timed_factorization(*this, matrix, [] {});
     // Strictly lower part plus the diagonal, as CHOLMOD counts it.
     last_factor_stats.nnz_L = double(this->m_matrix.nonZeros()) + double(this->m_matrix.rows());
     last_factor_stats.flops = -1;
