@@ -106,7 +106,7 @@ double thread_cpu_ms()
 
 double median(std::vector<double> v)
 {
-  if(v.empty())
+  if (v.empty())
     return std::numeric_limits<double>::quiet_NaN();
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
@@ -153,8 +153,7 @@ Solve_stats last_solve_stats;
 // Hides the solver's solve() to time it; Flow_aligned_deformation calls solve() on the static
 // type.  The result has the right-hand side's shape, so no copy is added.
 template <class EigenSolver>
-class Timed_solve : public EigenSolver
-{
+class Timed_solve : public EigenSolver {
 public:
   template <class Rhs>
   Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Eigen::MatrixBase<Rhs>& b) const
@@ -171,15 +170,23 @@ public:
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
 const char* cholmod_ordering_name(int ordering)
 {
-  switch(ordering) {
-  case CHOLMOD_NATURAL: return "natural";
-  case CHOLMOD_GIVEN: return "given";
-  case CHOLMOD_AMD: return "AMD";
-  case CHOLMOD_METIS: return "METIS";
-  case CHOLMOD_NESDIS: return "NESDIS";
-  case CHOLMOD_COLAMD: return "COLAMD";
-  case CHOLMOD_POSTORDERED: return "postordered";
-  default: return "unknown";
+  switch (ordering) {
+  case CHOLMOD_NATURAL:
+    return "natural";
+  case CHOLMOD_GIVEN:
+    return "given";
+  case CHOLMOD_AMD:
+    return "AMD";
+  case CHOLMOD_METIS:
+    return "METIS";
+  case CHOLMOD_NESDIS:
+    return "NESDIS";
+  case CHOLMOD_COLAMD:
+    return "COLAMD";
+  case CHOLMOD_POSTORDERED:
+    return "postordered";
+  default:
+    return "unknown";
   }
 }
 
@@ -189,12 +196,11 @@ const char* cholmod_ordering_name(int ordering)
 // that the solves use CHOLMOD's simplicial triangular solves, which handle the three right-hand
 // sides in one sweep instead of many small BLAS calls per supernode.
 template <class CholmodSolver, int Ordering, bool ToSimplicial = false>
-class Instrumented_cholmod : public Timed_solve<CholmodSolver>
-{
+class Instrumented_cholmod : public Timed_solve<CholmodSolver> {
 public:
   Instrumented_cholmod()
   {
-    if(Ordering >= 0) {
+    if (Ordering >= 0) {
       this->cholmod().nmethods = 1;
       this->cholmod().method[0].ordering = Ordering;
     }
@@ -205,15 +211,16 @@ public:
     bool supernodal = false;
     timed_factorization(*this, matrix, [&] {
       supernodal = this->m_cholmodFactor && this->m_cholmodFactor->is_super;
-      if(ToSimplicial && this->info() == Eigen::Success && supernodal &&
-         !cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, this->m_cholmodFactor, &this->cholmod()))
+      if (ToSimplicial && this->info() == Eigen::Success && supernodal &&
+          !cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, this->m_cholmodFactor,
+                                 &this->cholmod()))
         throw std::runtime_error("cholmod_change_factor failed");
     });
     const cholmod_common& common = this->cholmod();
     last_factor_stats.nnz_L = common.lnz;
     last_factor_stats.flops = common.fl;
-    last_factor_stats.ordering = this->m_cholmodFactor ? cholmod_ordering_name(this->m_cholmodFactor->ordering)
-                                                       : "none";
+    last_factor_stats.ordering =
+        this->m_cholmodFactor ? cholmod_ordering_name(this->m_cholmodFactor->ordering) : "none";
     last_factor_stats.supernodal = supernodal;
     return *this;
   }
@@ -221,8 +228,7 @@ public:
 #endif
 
 template <class EigenSimplicialSolver>
-class Instrumented_eigen : public Timed_solve<EigenSimplicialSolver>
-{
+class Instrumented_eigen : public Timed_solve<EigenSimplicialSolver> {
 public:
   Instrumented_eigen& compute(const Sparse_matrix& matrix)
   {
@@ -242,8 +248,8 @@ public:
 constexpr std::size_t kGridNodes = 128;
 const Point_3 kSource(0, 0, -1.6);
 const Point_3 kPatchCenter(0, 0, 0.2);
-constexpr double kTilt = 0.3;       // radians from alignment at the patch center
-constexpr double kPatchSize = 1.0;  // width = height
+constexpr double kTilt = 0.3;      // radians from alignment at the patch center
+constexpr double kPatchSize = 1.0; // width = height
 constexpr std::size_t kMaxIterations = 200;
 
 Grid make_grid()
@@ -305,16 +311,16 @@ Convergence_run run_to_convergence(const Grid& grid, FAS::Alignment alignment, s
   Convergence_run run;
   run.construct_ms = ms_since(construct_start);
   run.factor_ms = deformation.run(0).factor_ms; // no iteration: only the constructor's factorization
-  for(std::size_t k = 0; k < kMaxIterations; ++k) {
+  for (std::size_t k = 0; k < kMaxIterations; ++k) {
     const double cpu_start = thread_cpu_ms();
     const auto start = Clock::now();
     const FAS::Iteration_report report = deformation.step();
     run.step_wall_ms.push_back(ms_since(start));
     run.step_cpu_ms.push_back(thread_cpu_ms() - cpu_start);
     run.iterations.push_back(report);
-    if(k == 0)
+    if (k == 0)
       run.initial_flux = report.normalized_flux;
-    if(report.converged) {
+    if (report.converged) {
       run.converged = true;
       run.rule = (report.max_rotation_angle < 1e-6 && report.number_of_folds == 0) ? "angle" : "step";
       break;
@@ -345,7 +351,7 @@ Solver_sample measure_solver(const Grid& grid, std::size_t target_faces)
   sample.stats = last_factor_stats;
   sample.factor_ms = deformation.run(0).factor_ms;
   std::vector<double> solve, gtransf, solve_cpu;
-  for(std::size_t k = 0; k < kSolverSteps; ++k) {
+  for (std::size_t k = 0; k < kSolverSteps; ++k) {
     const FAS::Iteration_report r = deformation.step();
     solve.push_back(r.solve_ms);
     gtransf.push_back(r.gradient_transformation_ms);
@@ -370,18 +376,22 @@ std::vector<Solver_config> solver_configs()
   typedef Eigen::CholmodSimplicialLDLT<Sparse_matrix> Cholmod_simplicial;
   configs.push_back({"cholmod_supernodal", "CHOLMOD supernodal LL^T, default ordering strategy",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, -1>>>});
-  configs.push_back({"cholmod_supernodal_amd", "CHOLMOD supernodal LL^T, AMD only (nmethods = 1)",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, CHOLMOD_AMD>>>});
-  configs.push_back({"cholmod_supernodal_metis", "CHOLMOD supernodal LL^T, METIS only (nmethods = 1)",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, CHOLMOD_METIS>>>});
+  configs.push_back(
+      {"cholmod_supernodal_amd", "CHOLMOD supernodal LL^T, AMD only (nmethods = 1)",
+       measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, CHOLMOD_AMD>>>});
+  configs.push_back(
+      {"cholmod_supernodal_metis", "CHOLMOD supernodal LL^T, METIS only (nmethods = 1)",
+       measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, CHOLMOD_METIS>>>});
   configs.push_back({"cholmod_supernodal_to_simplicial",
                      "CHOLMOD supernodal LL^T (default ordering) converted to simplicial LL^T for the solves",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, -1, true>>>});
-  configs.push_back({"cholmod_simplicial_ldlt", "CHOLMOD simplicial LDL^T, default ordering strategy",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Cholmod_simplicial, -1>>>});
+  configs.push_back(
+      {"cholmod_simplicial_ldlt", "CHOLMOD simplicial LDL^T, default ordering strategy",
+       measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Cholmod_simplicial, -1>>>});
 #endif
-  configs.push_back({"eigen_simplicial_ldlt", "Eigen SimplicialLDLT (Eigen's AMD)",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_eigen<Eigen::SimplicialLDLT<Sparse_matrix>>>>});
+  configs.push_back(
+      {"eigen_simplicial_ldlt", "Eigen SimplicialLDLT (Eigen's AMD)",
+       measure_solver<CGAL::Eigen_solver_traits<Instrumented_eigen<Eigen::SimplicialLDLT<Sparse_matrix>>>>});
   return configs;
 }
 
@@ -390,12 +400,12 @@ const char* default_solver_name()
 {
   typedef FAS::internal::Default_sparse_linear_solver::Solver Default;
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
-  if(std::is_same<Default, Eigen::CholmodSupernodalLLT<Sparse_matrix>>::value)
+  if (std::is_same<Default, Eigen::CholmodSupernodalLLT<Sparse_matrix>>::value)
     return "cholmod_supernodal";
-  if(std::is_same<Default, Eigen::CholmodSimplicialLDLT<Sparse_matrix>>::value)
+  if (std::is_same<Default, Eigen::CholmodSimplicialLDLT<Sparse_matrix>>::value)
     return "cholmod_simplicial_ldlt";
 #endif
-  if(std::is_same<Default, Eigen::SimplicialLDLT<Sparse_matrix>>::value)
+  if (std::is_same<Default, Eigen::SimplicialLDLT<Sparse_matrix>>::value)
     return "eigen_simplicial_ldlt";
   return "other";
 }
@@ -403,13 +413,12 @@ const char* default_solver_name()
 // ---------------------------------------------------------------------------------------------
 // JSON output (hand-written: no dependency).
 
-class Json
-{
+class Json {
 public:
   Json& open(const std::string& key, char bracket)
   {
     separator();
-    if(!key.empty())
+    if (!key.empty())
       m_out << quote(key) << ": ";
     m_out << bracket;
     m_first = true;
@@ -427,7 +436,7 @@ public:
   {
     separator();
     m_out << quote(key) << ": ";
-    if(std::isfinite(v)) {
+    if (std::isfinite(v)) {
       std::ostringstream s;
       s.precision(6);
       s << v;
@@ -460,10 +469,10 @@ public:
   {
     separator();
     m_out << quote(key) << ": [";
-    for(std::size_t i = 0; i < v.size(); ++i) {
+    for (std::size_t i = 0; i < v.size(); ++i) {
       std::ostringstream s;
       s.precision(6);
-      if(std::isfinite(v[i]))
+      if (std::isfinite(v[i]))
         s << v[i];
       else
         s << "null";
@@ -477,19 +486,19 @@ public:
 private:
   void separator()
   {
-    if(m_depth > 0)
+    if (m_depth > 0)
       m_out << (m_first ? "" : ",") << '\n' << std::string(2 * m_depth, ' ');
     m_first = false;
   }
   static std::string quote(const std::string& s)
   {
     std::string q = "\"";
-    for(char c : s) {
-      if(c == '"' || c == '\\')
+    for (char c : s) {
+      if (c == '"' || c == '\\')
         q += '\\';
-      if(c == '\n')
+      if (c == '\n')
         q += "\\n";
-      else if(static_cast<unsigned char>(c) >= 0x20)
+      else if (static_cast<unsigned char>(c) >= 0x20)
         q += c;
     }
     return q + "\"";
@@ -503,8 +512,8 @@ std::string read_first_line_matching(const char* path, const std::string& prefix
 {
   std::ifstream in(path);
   std::string line;
-  while(std::getline(in, line))
-    if(line.compare(0, prefix.size(), prefix) == 0) {
+  while (std::getline(in, line))
+    if (line.compare(0, prefix.size(), prefix) == 0) {
       const std::size_t colon = line.find(':');
       std::string v = colon == std::string::npos ? line : line.substr(colon + 1);
       v.erase(0, v.find_first_not_of(" \t"));
@@ -528,15 +537,15 @@ std::string loaded_libraries()
   std::ifstream maps("/proc/self/maps");
   std::string line, list;
   std::vector<std::string> seen;
-  while(std::getline(maps, line)) {
+  while (std::getline(maps, line)) {
     const std::size_t slash = line.find('/');
-    if(slash == std::string::npos)
+    if (slash == std::string::npos)
       continue;
     const std::string path = line.substr(slash);
     const std::string file = path.substr(path.rfind('/') + 1);
     const bool wanted = file.find("blas") != std::string::npos || file.find("lapack") != std::string::npos ||
                         file.find("cholmod") != std::string::npos || file.find("metis") != std::string::npos;
-    if(wanted && std::find(seen.begin(), seen.end(), path) == seen.end()) {
+    if (wanted && std::find(seen.begin(), seen.end(), path) == seen.end()) {
       seen.push_back(path);
       list += (list.empty() ? "" : " ") + path;
     }
@@ -565,7 +574,7 @@ std::vector<std::size_t> parse_sizes(const std::string& list)
   std::vector<std::size_t> sizes;
   std::stringstream in(list);
   std::string item;
-  while(std::getline(in, item, ','))
+  while (std::getline(in, item, ','))
     sizes.push_back(static_cast<std::size_t>(std::stod(item)));
   return sizes;
 }
@@ -580,14 +589,15 @@ int main(int argc, char** argv)
   // supernodal factorization asks for num_threads(CHOLMOD_OMP_NUM_THREADS = 4) explicitly in
   // some loops, which OMP_NUM_THREADS does not override.
   bool restart = false;
-  for(const char* variable : {"OMP_NUM_THREADS", "OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"}) {
+  for (const char* variable :
+       {"OMP_NUM_THREADS", "OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"}) {
     const char* value = std::getenv(variable);
-    if(value == nullptr || std::string(value) != "1") {
+    if (value == nullptr || std::string(value) != "1") {
       setenv(variable, "1", 1);
       restart = true;
     }
   }
-  if(restart) {
+  if (restart) {
     execv("/proc/self/exe", argv);
     std::cerr << "bench_deformation: could not re-execute with one thread; continuing\n";
   }
@@ -596,33 +606,34 @@ int main(int argc, char** argv)
   std::vector<std::size_t> sizes = {800, 5000, 20000, 80000, 320000};
   std::size_t repetitions = 5, large_repetitions = 3;
   const std::size_t large_size = 200000; // sizes from here on use large_repetitions
-  for(int i = 1; i < argc; ++i) {
+  for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if(a == "--sizes" && i + 1 < argc)
+    if (a == "--sizes" && i + 1 < argc)
       sizes = parse_sizes(argv[++i]);
-    else if(a == "--repetitions" && i + 1 < argc)
+    else if (a == "--repetitions" && i + 1 < argc)
       repetitions = std::stoul(argv[++i]);
-    else if(a == "--large-repetitions" && i + 1 < argc)
+    else if (a == "--large-repetitions" && i + 1 < argc)
       large_repetitions = std::stoul(argv[++i]);
-    else if(a == "--parallel")
+    else if (a == "--parallel")
       g_use_parallelism = true;
-    else if(a == "--quick") {
+    else if (a == "--quick") {
       sizes = {800, 5000};
       repetitions = large_repetitions = 1;
     }
-    else if(a == "--help" || a == "-h") {
+    else if (a == "--help" || a == "-h") {
       std::cout << "usage: " << argv[0]
-                << " [output.json] [--sizes 800,5000,...] [--repetitions N] [--large-repetitions N] [--quick] [--parallel]\n";
+                << " [output.json] [--sizes 800,5000,...] [--repetitions N] [--large-repetitions N] "
+                   "[--quick] [--parallel]\n";
       return 0;
     }
-    else if(!a.empty() && a[0] != '-')
+    else if (!a.empty() && a[0] != '-')
       output = a;
     else {
       std::cerr << "bench_deformation: unknown argument " << a << "\n";
       return 2;
     }
   }
-  if(repetitions == 0 || large_repetitions == 0) {
+  if (repetitions == 0 || large_repetitions == 0) {
     std::cerr << "bench_deformation: repetitions must be at least 1\n";
     return 2;
   }
@@ -660,8 +671,8 @@ int main(int argc, char** argv)
       .value("eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
                           std::to_string(EIGEN_MINOR_VERSION))
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
-      .value("cholmod", std::to_string(CHOLMOD_MAIN_VERSION) + "." + std::to_string(CHOLMOD_SUB_VERSION) + "." +
-                            std::to_string(CHOLMOD_SUBSUB_VERSION))
+      .value("cholmod", std::to_string(CHOLMOD_MAIN_VERSION) + "." + std::to_string(CHOLMOD_SUB_VERSION) +
+                            "." + std::to_string(CHOLMOD_SUBSUB_VERSION))
 #else
       .value("cholmod", "not used")
 #endif
@@ -677,21 +688,26 @@ int main(int argc, char** argv)
 #endif
       .value("omp_num_threads", std::getenv("OMP_NUM_THREADS") ? std::getenv("OMP_NUM_THREADS") : "unset")
       .value("omp_thread_limit", std::getenv("OMP_THREAD_LIMIT") ? std::getenv("OMP_THREAD_LIMIT") : "unset")
-      .value("openblas_num_threads", std::getenv("OPENBLAS_NUM_THREADS") ? std::getenv("OPENBLAS_NUM_THREADS") : "unset")
+      .value("openblas_num_threads",
+             std::getenv("OPENBLAS_NUM_THREADS") ? std::getenv("OPENBLAS_NUM_THREADS") : "unset")
       .value("libraries", loaded_libraries())
       .close('}');
   {
     std::ostringstream field;
-    field << "point source, |v| = 1/r^2, at (0, 0, -1.6); sampled on a " << kGridNodes << "^3 grid over [-1, 1]^3 ("
-          << grid_ms << " ms), trilinear interpolation (Regular_grid_flow_field_3)";
+    field << "point source, |v| = 1/r^2, at (0, 0, -1.6); sampled on a " << kGridNodes
+          << "^3 grid over [-1, 1]^3 (" << grid_ms
+          << " ms), trilinear interpolation (Regular_grid_flow_field_3)";
     json.open("setup", '{')
         .value("field", field.str())
         .value("use_parallelism", g_use_parallelism)
         .value("patch", "make_planar_patch, 1 x 1, centered at (0, 0, 0.2) (distance 1.8 from the source)")
-        .value("start_orthogonal", "normal = e_z rotated by 0.3 rad about e_x (aligned state: sphere R = 1.8)")
-        .value("start_tangential", "normal = e_x rotated by 0.3 rad about e_y (aligned state: cone with apex at the source)")
-        .value("convergence", "package rule: every requested rotation < epsilon = 1e-6 (and no fold), or the largest "
-                              "vertex step < 1e-4 of the bounding-box diagonal; default eta = 0.1, theta_max = pi/2")
+        .value("start_orthogonal",
+               "normal = e_z rotated by 0.3 rad about e_x (aligned state: sphere R = 1.8)")
+        .value("start_tangential",
+               "normal = e_x rotated by 0.3 rad about e_y (aligned state: cone with apex at the source)")
+        .value("convergence",
+               "package rule: every requested rotation < epsilon = 1e-6 (and no fold), or the largest "
+               "vertex step < 1e-4 of the bounding-box diagonal; default eta = 0.1, theta_max = pi/2")
         .value("max_iterations", kMaxIterations)
         .value("default_solver", default_solver_name())
         .value("solver_steps", kSolverSteps)
@@ -700,7 +716,7 @@ int main(int argc, char** argv)
   }
 
   json.open("sizes", '[');
-  for(const std::size_t target : sizes) {
+  for (const std::size_t target : sizes) {
     const std::size_t reps = target >= large_size ? large_repetitions : repetitions;
     std::cerr << "size " << target << " (" << reps << " repetitions)\n";
     std::size_t faces = 0, vertices = 0;
@@ -712,11 +728,11 @@ int main(int argc, char** argv)
     Convergence_run first[2];
     // The solver comparison, interleaved with the convergence runs so that both see the same noise.
     std::vector<std::vector<Solver_sample>> solver_samples(configs.size());
-    for(std::size_t r = 0; r < reps; ++r) {
-      for(int a = 0; a < 2; ++a) {
+    for (std::size_t r = 0; r < reps; ++r) {
+      for (int a = 0; a < 2; ++a) {
         const Convergence_run run = run_to_convergence(grid, alignments[a], target, faces, vertices);
         std::vector<double> g, s, w, u;
-        for(std::size_t k = 0; k < run.iterations.size(); ++k) {
+        for (std::size_t k = 0; k < run.iterations.size(); ++k) {
           g.push_back(run.iterations[k].gradient_transformation_ms);
           s.push_back(run.iterations[k].solve_ms);
           w.push_back(run.step_wall_ms[k]);
@@ -730,20 +746,22 @@ int main(int argc, char** argv)
         cpu_runs.push_back(median(u));
         gtransf_by[a].push_back(median(g));
         solve_by[a].push_back(median(s));
-        if(r == 0)
+        if (r == 0)
           first[a] = run;
-        else if(run.nconv != first[a].nconv)
-          std::cerr << "  note: NCONV changed between repetitions (" << first[a].nconv << " vs " << run.nconv << ")\n";
+        else if (run.nconv != first[a].nconv)
+          std::cerr << "  note: NCONV changed between repetitions (" << first[a].nconv << " vs " << run.nconv
+                    << ")\n";
         std::cerr << "  " << name(alignments[a]) << ": NCONV " << run.nconv << " (" << run.rule << "), flux "
-                  << run.initial_flux << " -> " << run.final_flux << ", construct " << run.construct_ms << " ms, factor " << run.factor_ms
-                  << " ms, gtransf " << median(g) << " ms, solve " << median(s) << " ms\n";
+                  << run.initial_flux << " -> " << run.final_flux << ", construct " << run.construct_ms
+                  << " ms, factor " << run.factor_ms << " ms, gtransf " << median(g) << " ms, solve "
+                  << median(s) << " ms\n";
       }
-      for(std::size_t c = 0; c < configs.size(); ++c) {
+      for (std::size_t c = 0; c < configs.size(); ++c) {
         solver_samples[c].push_back(configs[c].measure(grid, target));
         const Solver_sample& s = solver_samples[c].back();
-        std::cerr << "  " << configs[c].name << ": factor " << s.factor_ms << " ms (analyze " << s.stats.analyze_ms
-                  << ", numeric " << s.stats.numeric_ms << ", " << s.stats.ordering << "), solve " << s.solve_ms
-                  << " ms\n";
+        std::cerr << "  " << configs[c].name << ": factor " << s.factor_ms << " ms (analyze "
+                  << s.stats.analyze_ms << ", numeric " << s.stats.numeric_ms << ", " << s.stats.ordering
+                  << "), solve " << s.solve_ms << " ms\n";
       }
     }
 
@@ -766,10 +784,10 @@ int main(int argc, char** argv)
         .array("gtransf_ms_runs", gtransf_runs)
         .array("solve_ms_runs", solve_runs);
     json.open("by_alignment", '{');
-    for(int a = 0; a < 2; ++a) {
+    for (int a = 0; a < 2; ++a) {
       const Convergence_run& run = first[a];
       std::vector<double> flux, rotation, step;
-      for(const auto& it : run.iterations) {
+      for (const auto& it : run.iterations) {
         flux.push_back(it.normalized_flux);
         rotation.push_back(it.max_rotation_angle);
         step.push_back(it.max_vertex_step);
@@ -780,7 +798,8 @@ int main(int argc, char** argv)
           .value("rule", run.rule)
           .value("initial_flux", run.initial_flux)
           .value("final_flux", run.final_flux)
-          .value("last_max_rotation_angle", run.iterations.empty() ? 0. : run.iterations.back().max_rotation_angle)
+          .value("last_max_rotation_angle",
+                 run.iterations.empty() ? 0. : run.iterations.back().max_rotation_angle)
           .value("gtransf_ms", median(gtransf_by[a]))
           .value("solve_ms", median(solve_by[a]))
           .array("flux_before_iteration", flux)
@@ -790,9 +809,9 @@ int main(int argc, char** argv)
     }
     json.close('}');
     json.open("solvers", '[');
-    for(std::size_t c = 0; c < configs.size(); ++c) {
+    for (std::size_t c = 0; c < configs.size(); ++c) {
       std::vector<double> f, s, an, nu, cpu, scpu;
-      for(const Solver_sample& x : solver_samples[c]) {
+      for (const Solver_sample& x : solver_samples[c]) {
         f.push_back(x.factor_ms);
         s.push_back(x.solve_ms);
         an.push_back(x.stats.analyze_ms);
@@ -833,7 +852,7 @@ int main(int argc, char** argv)
 
   std::ofstream out(output);
   out << json.str();
-  if(!out) {
+  if (!out) {
     std::cerr << "bench_deformation: could not write " << output << "\n";
     return 1;
   }

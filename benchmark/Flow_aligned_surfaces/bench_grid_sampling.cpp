@@ -42,16 +42,14 @@ Grid make_grid(bool with_solid_ball)
 {
   const auto abc = [with_solid_ball](const Point_3& p) -> std::optional<Vector_3> {
     const double x = p.x() - kTwoPi / 2, y = p.y() - kTwoPi / 2, z = p.z() - kTwoPi / 2;
-    if(with_solid_ball && x * x + y * y + z * z < 1.)
+    if (with_solid_ball && x * x + y * y + z * z < 1.)
       return std::nullopt;
     const double a = std::sqrt(3.), b = std::sqrt(2.), c = 1.;
-    return Vector_3(a * std::sin(p.z()) + c * std::cos(p.y()),
-                    b * std::sin(p.x()) + a * std::cos(p.z()),
+    return Vector_3(a * std::sin(p.z()) + c * std::cos(p.y()), b * std::sin(p.x()) + a * std::cos(p.z()),
                     c * std::sin(p.y()) + b * std::cos(p.x()));
   };
   const double h = kTwoPi / double(kNodes - 1);
-  return FAS::sample_on_grid(abc, Point_3(0, 0, 0), Vector_3(h, h, h),
-                             {kNodes, kNodes, kNodes});
+  return FAS::sample_on_grid(abc, Point_3(0, 0, 0), Vector_3(h, h, h), {kNodes, kNodes, kNodes});
 }
 
 const Grid& grid(bool with_solid_ball)
@@ -69,7 +67,7 @@ std::vector<Point_3> coherent_points()
   std::vector<Point_3> points;
   points.reserve(kNumberOfPoints);
   double s = 0;
-  for(std::size_t q = 0; q < kNumberOfPoints; ++q) {
+  for (std::size_t q = 0; q < kNumberOfPoints; ++q) {
     points.emplace_back(center + radius * std::cos(s), center + radius * std::sin(1.3 * s),
                         center + radius * std::sin(0.7 * s + 1.));
     // The path's speed is at most about 1.8 radius per unit of s.
@@ -84,7 +82,7 @@ std::vector<Point_3> random_points()
   std::uniform_real_distribution<double> u(0., kTwoPi);
   std::vector<Point_3> points;
   points.reserve(kNumberOfPoints);
-  for(std::size_t q = 0; q < kNumberOfPoints; ++q)
+  for (std::size_t q = 0; q < kNumberOfPoints; ++q)
     points.emplace_back(u(rng), u(rng), u(rng));
   return points;
 }
@@ -92,7 +90,7 @@ std::vector<Point_3> random_points()
 void run_queries(benchmark::State& state, const Grid& g, const std::vector<Point_3>& points)
 {
   std::size_t q = 0, inside = 0;
-  for(auto _ : state) {
+  for (auto _ : state) {
     const std::optional<Vector_3> v = g(points[q]);
     inside += v.has_value();
     benchmark::DoNotOptimize(v);
@@ -130,7 +128,7 @@ void BM_Grid_masked_random(benchmark::State& state)
 void BM_Grid_copy(benchmark::State& state)
 {
   const Grid& g = grid(false);
-  for(auto _ : state) {
+  for (auto _ : state) {
     Grid copy = g;
     benchmark::DoNotOptimize(copy);
   }

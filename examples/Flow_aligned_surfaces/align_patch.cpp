@@ -50,36 +50,53 @@ struct Scene {
 std::optional<Scene> make_scene(const std::string& name)
 {
   if (name == "cylinder") // potential flow past a cylinder of radius 1 along z
-    return Scene{FAS::Cylinder_potential_flow<Kernel>(1.0, 1.0), Point(-2.0, 0.8, 0), Point(-2.2, 0.6, 0.3),
-                 Vector(0.3, 1.0, 0.4), Vector(1.0, 0.4, 0.2), 1.2};
+    return Scene{FAS::Cylinder_potential_flow<Kernel>(1.0, 1.0),
+                 Point(-2.0, 0.8, 0),
+                 Point(-2.2, 0.6, 0.3),
+                 Vector(0.3, 1.0, 0.4),
+                 Vector(1.0, 0.4, 0.2),
+                 1.2};
   if (name == "point-source")
-    return Scene{FAS::Point_source_flow<Kernel>(Point(0, 0, 0), 1.0), Point(0, 0, 2), Point(0.2, -0.1, 2.0),
-                 Vector(1.0, 0.2, 0.1), Vector(0.3, 0.2, 1.0), 1.0};
+    return Scene{FAS::Point_source_flow<Kernel>(Point(0, 0, 0), 1.0),
+                 Point(0, 0, 2),
+                 Point(0.2, -0.1, 2.0),
+                 Vector(1.0, 0.2, 0.1),
+                 Vector(0.3, 0.2, 1.0),
+                 1.0};
   if (name == "sphere")
-    return Scene{FAS::Sphere_potential_flow<Kernel>(1.0, 1.0), Point(0.8, 0.2, -2.0), Point(0.3, 0.2, -2.0),
-                 Vector(1.0, 0.3, 0.2), Vector(0.2, 0.1, 1.0), 1.2};
+    return Scene{FAS::Sphere_potential_flow<Kernel>(1.0, 1.0),
+                 Point(0.8, 0.2, -2.0),
+                 Point(0.3, 0.2, -2.0),
+                 Vector(1.0, 0.3, 0.2),
+                 Vector(0.2, 0.1, 1.0),
+                 1.2};
   if (name == "helical")
-    return Scene{FAS::Helical_flow<Kernel>(0.5), Point(1.0, 0.2, 0), Point(1.0, 0.0, 0.0), Vector(1.0, 0.3, 0.2),
-                 Vector(0.0, 1.0, 0.3), 0.8};
+    return Scene{FAS::Helical_flow<Kernel>(0.5), Point(1.0, 0.2, 0),    Point(1.0, 0.0, 0.0),
+                 Vector(1.0, 0.3, 0.2),          Vector(0.0, 1.0, 0.3), 0.8};
   if (name == "hill")
-    return Scene{FAS::Hill_spherical_vortex<Kernel>(1.0, 1.0), Point(0.5, 0.1, 0.2), Point(0.5, 0.0, 0.0),
-                 Vector(0.2, 1.0, 0.3), Vector(0.2, 0.1, 1.0), 0.4};
+    return Scene{FAS::Hill_spherical_vortex<Kernel>(1.0, 1.0),
+                 Point(0.5, 0.1, 0.2),
+                 Point(0.5, 0.0, 0.0),
+                 Vector(0.2, 1.0, 0.3),
+                 Vector(0.2, 0.1, 1.0),
+                 0.4};
   if (name == "burgers")
-    return Scene{FAS::Burgers_vortex<Kernel>(), Point(1.0, 0, 0.5), Point(0.8, 0.3, 0.8), Vector(0, 1.0, 0.2),
-                 Vector(0.2, 0.1, 1.0), 0.6};
+    return Scene{FAS::Burgers_vortex<Kernel>(), Point(1.0, 0, 0.5),    Point(0.8, 0.3, 0.8),
+                 Vector(0, 1.0, 0.2),           Vector(0.2, 0.1, 1.0), 0.6};
   if (name == "abc")
-    return Scene{FAS::ABC_flow<Kernel>(), Point(1, 1, 1), Point(1, 1, 1), Vector(0.3, 0.2, 1.0),
-                 Vector(0.5, 0.8, 1.0), 0.5};
+    return Scene{FAS::ABC_flow<Kernel>(), Point(1, 1, 1),        Point(1, 1, 1),
+                 Vector(0.3, 0.2, 1.0),   Vector(0.5, 0.8, 1.0), 0.5};
   if (name == "tornado")
-    return Scene{FAS::Crawfis_tornado<Kernel>(), Point(0.5, 0.3, 0.5), Point(0.5, 0.5, 0.3),
-                 Vector(0.1, 1.0, 0.1), Vector(0.1, 0.1, 1.0), 0.3};
+    return Scene{FAS::Crawfis_tornado<Kernel>(), Point(0.5, 0.3, 0.5),  Point(0.5, 0.5, 0.3),
+                 Vector(0.1, 1.0, 0.1),          Vector(0.1, 0.1, 1.0), 0.3};
   return std::nullopt;
 }
 
 std::vector<double> face_fluxes(const Mesh& tm, const Flow& flow)
 {
   std::vector<double> values(tm.number_of_faces());
-  FAS::compute_face_normalized_flux(tm, flow, boost::make_iterator_property_map(values.begin(), get(CGAL::face_index, tm)));
+  FAS::compute_face_normalized_flux(
+      tm, flow, boost::make_iterator_property_map(values.begin(), get(CGAL::face_index, tm)));
   return values;
 }
 
@@ -113,9 +130,9 @@ bool write_surface(const std::filesystem::path& stem, const Mesh& tm, const Flow
     return false;
   }
   std::string error;
-  const bool vtp = FAS::IO::write_VTP(stem.string() + ".vtp", tm, {{"velocity", 3, vertex_velocities(tm, flow)}},
-                                      {{"normalized_flux", 1, face_fluxes(tm, flow)}},
-                                      CGAL::parameters::default_values(), &error);
+  const bool vtp = FAS::IO::write_VTP(
+      stem.string() + ".vtp", tm, {{"velocity", 3, vertex_velocities(tm, flow)}},
+      {{"normalized_flux", 1, face_fluxes(tm, flow)}}, CGAL::parameters::default_values(), &error);
   if (!vtp)
     std::cerr << "error: " << error << "\n";
   return vtp;
@@ -136,8 +153,8 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   const std::string name = tangential ? "tangential" : "orthogonal";
   Mesh tm;
   FAS::make_planar_patch(tm, tangential ? scene.tangential_center : scene.orthogonal_center,
-                         tangential ? scene.tangential_normal : scene.orthogonal_normal, scene.size, scene.size,
-                         faces);
+                         tangential ? scene.tangential_normal : scene.orthogonal_normal, scene.size,
+                         scene.size, faces);
   if (!write_surface(out / (name + "_initial"), tm, scene.flow))
     return std::nullopt;
 
@@ -163,13 +180,14 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     return std::nullopt;
   {
     std::ostream& os = *csv;
-    os << "iteration,normalized_flux,max_rotation_angle,max_vertex_step,folds,outside_samples,invalid_samples,"
+    os << "iteration,normalized_flux,max_rotation_angle,max_vertex_step,folds,outside_samples,invalid_"
+          "samples,"
           "zero_samples,gtransf_ms,solve_ms,converged\n";
     for (const auto& r : iterations)
-      os << r.iteration << ',' << r.normalized_flux << ',' << r.max_rotation_angle << ',' << r.max_vertex_step << ','
-         << r.number_of_folds << ',' << r.number_of_outside_samples << ',' << r.number_of_invalid_samples << ','
-         << r.number_of_zero_samples << ',' << r.gradient_transformation_ms << ',' << r.solve_ms << ','
-         << (r.converged ? 1 : 0) << '\n';
+      os << r.iteration << ',' << r.normalized_flux << ',' << r.max_rotation_angle << ',' << r.max_vertex_step
+         << ',' << r.number_of_folds << ',' << r.number_of_outside_samples << ','
+         << r.number_of_invalid_samples << ',' << r.number_of_zero_samples << ','
+         << r.gradient_transformation_ms << ',' << r.solve_ms << ',' << (r.converged ? 1 : 0) << '\n';
     // The flux of the final surface, which no iteration started from.
     os << iterations.size() + 1 << ',' << summary.report.normalized_flux << ",,,,,,,,,\n";
   }
@@ -251,11 +269,12 @@ int main(int argc, char** argv)
          << ", \"iterations\": " << r.report.number_of_iterations
          << ", \"converged\": " << (r.report.converged ? "true" : "false")
          << ", \"initial_normalized_flux\": " << r.initial_flux
-         << ", \"final_normalized_flux\": " << r.report.normalized_flux << ", \"factor_ms\": " << r.report.factor_ms
-         << ", \"mean_gtransf_ms\": " << r.mean_gtransf_ms << ", \"mean_solve_ms\": " << r.mean_solve_ms
-         << ", \"files\": [\"" << r.alignment << "_initial.ply\", \"" << r.alignment << "_initial.vtp\", \""
-         << r.alignment << "_aligned.ply\", \"" << r.alignment << "_aligned.vtp\", \"" << r.alignment
-         << "_flux.csv\"]}" << (i + 1 < runs.size() ? "," : "") << "\n";
+         << ", \"final_normalized_flux\": " << r.report.normalized_flux
+         << ", \"factor_ms\": " << r.report.factor_ms << ", \"mean_gtransf_ms\": " << r.mean_gtransf_ms
+         << ", \"mean_solve_ms\": " << r.mean_solve_ms << ", \"files\": [\"" << r.alignment
+         << "_initial.ply\", \"" << r.alignment << "_initial.vtp\", \"" << r.alignment << "_aligned.ply\", \""
+         << r.alignment << "_aligned.vtp\", \"" << r.alignment << "_flux.csv\"]}"
+         << (i + 1 < runs.size() ? "," : "") << "\n";
     }
     os << "  ]\n}\n";
   }

@@ -47,5 +47,7 @@ int main()
 
   std::cout << "final flux " << report.normalized_flux << " after " << deformation.number_of_iterations()
             << " iterations and " << deformation.number_of_factorizations() << " factorization\n";
-  return report.converged && report.normalized_flux <= 0.01 && deformation.number_of_factorizations() == 1 ? 0 : 1;
+  return report.converged && report.normalized_flux <= 0.01 && deformation.number_of_factorizations() == 1
+             ? 0
+             : 1;
 }

@@ -265,7 +265,8 @@ TEST(FlowAlignedDeformation, RigidMovesReconvergeWithoutRefactorization)
 {
   const FAS::Point_source_flow<K> source(Point(0, 0, 0), 1.0);
   Mesh tm = planar_patch(Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 3000);
-  FAS::Flow_aligned_deformation<Mesh, FAS::Point_source_flow<K>> deformation(tm, source, FAS::Alignment::ORTHOGONAL);
+  FAS::Flow_aligned_deformation<Mesh, FAS::Point_source_flow<K>> deformation(tm, source,
+                                                                             FAS::Alignment::ORTHOGONAL);
   EXPECT_TRUE(deformation.run().converged);
   deformation.translate(Vector(0.3, 0.2, 0.8));
   deformation.rotate(Vector(1, 1, 0), 0.4);
@@ -304,9 +305,9 @@ TEST(FlowAlignedDeformation, VisitorReceivesEveryIterationWithTheFluxBeforeIt)
   Mesh tm = planar_patch(Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 1000);
   const double initial_flux = FAS::normalized_flux(tm, source);
   std::vector<FAS::Iteration_report> reports;
-  const FAS::Alignment_report report =
-      FAS::align_to_flow(tm, source, FAS::Alignment::ORTHOGONAL,
-                         CGAL::parameters::visitor([&](const FAS::Iteration_report& r) { reports.push_back(r); }));
+  const FAS::Alignment_report report = FAS::align_to_flow(
+      tm, source, FAS::Alignment::ORTHOGONAL,
+      CGAL::parameters::visitor([&](const FAS::Iteration_report& r) { reports.push_back(r); }));
   ASSERT_EQ(reports.size(), report.number_of_iterations);
   EXPECT_NEAR(reports.front().normalized_flux, initial_flux, 1e-12);
   for (std::size_t k = 0; k < reports.size(); ++k) {
@@ -324,16 +325,19 @@ TEST(FlowAlignedDeformation, PackageParametersAreHonoured)
   const FAS::Point_source_flow<K> source(Point(0, 0, 0), 1.0);
   Mesh slow = planar_patch(Point(0.2, -0.1, 2.0), Vector(0.6, 0.2, 1.0), 1.0, 1000);
   Mesh fast = slow;
-  const auto eta_small = FAS::parameters::max_rotation_angle(0.02, CGAL::parameters::number_of_iterations(500));
-  const FAS::Alignment_report r_slow = FAS::align_to_flow(slow, source, FAS::Alignment::ORTHOGONAL, eta_small);
+  const auto eta_small =
+      FAS::parameters::max_rotation_angle(0.02, CGAL::parameters::number_of_iterations(500));
+  const FAS::Alignment_report r_slow =
+      FAS::align_to_flow(slow, source, FAS::Alignment::ORTHOGONAL, eta_small);
   const FAS::Alignment_report r_fast = FAS::align_to_flow(fast, source, FAS::Alignment::ORTHOGONAL);
   // The initial tilt is about 0.6 rad: at 0.02 rad per iteration it takes at least 25 iterations.
   EXPECT_GE(r_slow.number_of_iterations, 25u);
   EXPECT_LT(r_fast.number_of_iterations, r_slow.number_of_iterations);
-  EXPECT_EQ(FAS::align_to_flow(fast, source, FAS::Alignment::ORTHOGONAL,
-                               FAS::parameters::convergence_step(0.0, CGAL::parameters::number_of_iterations(1)))
-                .number_of_iterations,
-            1u);
+  EXPECT_EQ(
+      FAS::align_to_flow(fast, source, FAS::Alignment::ORTHOGONAL,
+                         FAS::parameters::convergence_step(0.0, CGAL::parameters::number_of_iterations(1)))
+          .number_of_iterations,
+      1u);
 }
 
 } // namespace
@@ -351,12 +355,14 @@ TEST(FlowAlignedDeformation, ParallelIterationsGiveTheSerialSurfaces)
   Mesh parallel = serial;
   ASSERT_GE(parallel.number_of_faces(), 4096u);
   std::vector<FAS::Iteration_report> serial_reports, parallel_reports;
-  FAS::align_to_flow(serial, source, FAS::Alignment::ORTHOGONAL,
-                     CGAL::parameters::visitor([&](const FAS::Iteration_report& r) { serial_reports.push_back(r); }));
-  FAS::align_to_flow(parallel, source, FAS::Alignment::ORTHOGONAL,
-                     FAS::parameters::use_parallelism(true, CGAL::parameters::visitor([&](const FAS::Iteration_report& r) {
-                       parallel_reports.push_back(r);
-                     })));
+  FAS::align_to_flow(
+      serial, source, FAS::Alignment::ORTHOGONAL,
+      CGAL::parameters::visitor([&](const FAS::Iteration_report& r) { serial_reports.push_back(r); }));
+  FAS::align_to_flow(
+      parallel, source, FAS::Alignment::ORTHOGONAL,
+      FAS::parameters::use_parallelism(true, CGAL::parameters::visitor([&](const FAS::Iteration_report& r) {
+                                         parallel_reports.push_back(r);
+                                       })));
   ASSERT_EQ(serial_reports.size(), parallel_reports.size());
   for (std::size_t k = 0; k < serial_reports.size(); ++k) {
     EXPECT_EQ(serial_reports[k].max_rotation_angle, parallel_reports[k].max_rotation_angle);

@@ -39,7 +39,8 @@ Curved_patch make_curved_patch(std::size_t faces)
   const auto vim = get(CGAL::vertex_index, tm);
   patch.x = FASI::read_positions(FASI::vertices_in_index_order(tm, vim), tm.points());
   patch.arrays = FASI::make_mesh_arrays(tm, vim, get(CGAL::face_index, tm));
-  patch.ops = std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(patch.x, patch.arrays.face_vertices));
+  patch.ops =
+      std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(patch.x, patch.arrays.face_vertices));
   return patch;
 }
 
@@ -87,7 +88,8 @@ TEST(PoissonOperators, LaplacianEqualsCotangentFormula)
       expected(i, i) += 0.5 * cot;
       expected(k, k) += 0.5 * cot;
     }
-  EXPECT_LT((Eigen::MatrixXd(patch.ops.L) - expected).cwiseAbs().maxCoeff(), 1e-10 * expected.cwiseAbs().maxCoeff());
+  EXPECT_LT((Eigen::MatrixXd(patch.ops.L) - expected).cwiseAbs().maxCoeff(),
+            1e-10 * expected.cwiseAbs().maxCoeff());
 }
 
 TEST(PoissonOperators, DivergenceOfGradientIsLaplacian)

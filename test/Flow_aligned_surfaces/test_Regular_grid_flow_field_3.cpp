@@ -32,22 +32,21 @@ typedef Grid::Dimensions Dimensions;
 
 // A general trilinear map R^3 -> R^3: each component has its own 8 coefficients of
 // 1, x, y, z, xy, yz, xz, xyz, so swapped components or axes show up.
-struct Trilinear_field
-{
+struct Trilinear_field {
   std::array<std::array<double, 8>, 3> c;
 
   explicit Trilinear_field(std::mt19937& rng)
   {
     std::uniform_real_distribution<double> u(-2., 2.);
-    for(auto& comp : c)
-      for(double& a : comp)
+    for (auto& comp : c)
+      for (double& a : comp)
         a = u(rng);
   }
 
   Vector_3 operator()(double x, double y, double z) const
   {
     double r[3];
-    for(int d = 0; d < 3; ++d) {
+    for (int d = 0; d < 3; ++d) {
       const auto& a = c[d];
       r[d] = a[0] + a[1] * x + a[2] * y + a[3] * z + a[4] * x * y + a[5] * y * z + a[6] * x * z +
              a[7] * x * y * z;
@@ -61,11 +60,10 @@ std::vector<float> node_values(const Point_3& o, const Vector_3& h, const Dimens
 {
   std::vector<float> v;
   v.reserve(3 * n[0] * n[1] * n[2]);
-  for(std::size_t k = 0; k < n[2]; ++k)
-    for(std::size_t j = 0; j < n[1]; ++j)
-      for(std::size_t i = 0; i < n[0]; ++i) {
-        const Vector_3 w = f(o.x() + double(i) * h.x(), o.y() + double(j) * h.y(),
-                             o.z() + double(k) * h.z());
+  for (std::size_t k = 0; k < n[2]; ++k)
+    for (std::size_t j = 0; j < n[1]; ++j)
+      for (std::size_t i = 0; i < n[0]; ++i) {
+        const Vector_3 w = f(o.x() + double(i) * h.x(), o.y() + double(j) * h.y(), o.z() + double(k) * h.z());
         v.push_back(float(w.x()));
         v.push_back(float(w.y()));
         v.push_back(float(w.z()));
@@ -76,15 +74,14 @@ std::vector<float> node_values(const Point_3& o, const Vector_3& h, const Dimens
 Point_3 random_point_in(const CGAL::Bbox_3& b, std::mt19937& rng)
 {
   std::uniform_real_distribution<double> u(0., 1.);
-  return Point_3(b.xmin() + u(rng) * (b.xmax() - b.xmin()),
-                 b.ymin() + u(rng) * (b.ymax() - b.ymin()),
+  return Point_3(b.xmin() + u(rng) * (b.xmax() - b.xmin()), b.ymin() + u(rng) * (b.ymax() - b.ymin()),
                  b.zmin() + u(rng) * (b.zmax() - b.zmin()));
 }
 
 double max_abs_node_value(const Grid& g)
 {
   double m = 0;
-  for(float x : g.values())
+  for (float x : g.values())
     m = std::max(m, double(std::abs(x)));
   return m;
 }
@@ -107,11 +104,11 @@ const Dimensions kDims = {7, 9, 5};
 TEST(RegularGridFlowField3, TrilinearFieldIsReproducedAtRandomPoints)
 {
   std::mt19937 rng(42);
-  for(int trial = 0; trial < 5; ++trial) {
+  for (int trial = 0; trial < 5; ++trial) {
     const Trilinear_field f(rng);
     const Grid g(kOrigin, kSpacing, kDims, node_values(kOrigin, kSpacing, kDims, f));
     const double scale = max_abs_node_value(g);
-    for(int s = 0; s < 2000; ++s) {
+    for (int s = 0; s < 2000; ++s) {
       const Point_3 p = random_point_in(g.bbox(), rng);
       const std::optional<Vector_3> v = g(p);
       ASSERT_TRUE(v.has_value()) << p;
@@ -129,7 +126,7 @@ TEST(RegularGridFlowField3, LinearFieldIsReproducedAtRandomPoints)
                node_values(kOrigin, kSpacing, kDims, f));
   const double scale = max_abs_node_value(g);
   std::mt19937 rng(7);
-  for(int s = 0; s < 2000; ++s) {
+  for (int s = 0; s < 2000; ++s) {
     const Point_3 p = random_point_in(g.bbox(), rng);
     const std::optional<Vector_3> v = g(p);
     ASSERT_TRUE(v.has_value()) << p;
@@ -147,17 +144,16 @@ TEST(RegularGridFlowField3, NodeValuesAreReturnedExactlyAtNodes)
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(-10.f, 10.f);
   std::vector<float> values(3 * n[0] * n[1] * n[2]);
-  for(float& x : values)
+  for (float& x : values)
     x = u(rng);
   const std::vector<float> copy = values;
   const Grid g(o, h, n, std::move(values));
-  for(std::size_t k = 0; k < n[2]; ++k)
-    for(std::size_t j = 0; j < n[1]; ++j)
-      for(std::size_t i = 0; i < n[0]; ++i) {
+  for (std::size_t k = 0; k < n[2]; ++k)
+    for (std::size_t j = 0; j < n[1]; ++j)
+      for (std::size_t i = 0; i < n[0]; ++i) {
         const std::size_t v = i + n[0] * (j + n[1] * k);
         const Vector_3 expected(copy[3 * v], copy[3 * v + 1], copy[3 * v + 2]);
-        const Point_3 p(o.x() + double(i) * h.x(), o.y() + double(j) * h.y(),
-                        o.z() + double(k) * h.z());
+        const Point_3 p(o.x() + double(i) * h.x(), o.y() + double(j) * h.y(), o.z() + double(k) * h.z());
         EXPECT_EQ(g.node_point(i, j, k), p);
         EXPECT_EQ(g.node_value(i, j, k), expected);
         const std::optional<Vector_3> q = g(p);
@@ -171,12 +167,12 @@ TEST(RegularGridFlowField3, NodeValuesAreReturnedAtNodesOfANonDyadicGrid)
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> u(-10.f, 10.f);
   std::vector<float> values(3 * kDims[0] * kDims[1] * kDims[2]);
-  for(float& x : values)
+  for (float& x : values)
     x = u(rng);
   const Grid g(kOrigin, kSpacing, kDims, values);
-  for(std::size_t k = 0; k < kDims[2]; ++k)
-    for(std::size_t j = 0; j < kDims[1]; ++j)
-      for(std::size_t i = 0; i < kDims[0]; ++i) {
+  for (std::size_t k = 0; k < kDims[2]; ++k)
+    for (std::size_t j = 0; j < kDims[1]; ++j)
+      for (std::size_t i = 0; i < kDims[0]; ++i) {
         const std::optional<Vector_3> q = g(g.node_point(i, j, k));
         ASSERT_TRUE(q.has_value());
         // The node position is rounded, so the cell coordinate may be off by an ulp.
@@ -193,15 +189,15 @@ TEST(RegularGridFlowField3, UpperBoundaryIsExactWhereTheCellCoordinateOvershoots
   const Dimensions n = {4, 2, 2};
   ASSERT_GT((3 * 0.1 - 0.) * (1. / 0.1), 3.);
   std::vector<float> values(3 * 16);
-  for(std::size_t q = 0; q < values.size(); ++q)
+  for (std::size_t q = 0; q < values.size(); ++q)
     values[q] = 0.1f * float(q) - 1.f;
   std::vector<unsigned char> mask(16, 1);
-  for(std::size_t v = 0; v < 16; ++v)
-    if(v % 4 == 2)
+  for (std::size_t v = 0; v < 16; ++v)
+    if (v % 4 == 2)
       mask[v] = 0;
   const Grid g(Point_3(0, 0, 0), 0.1, 1., 1., n, std::move(values), std::move(mask));
-  for(std::size_t k = 0; k < 2; ++k)
-    for(std::size_t j = 0; j < 2; ++j) {
+  for (std::size_t k = 0; k < 2; ++k)
+    for (std::size_t j = 0; j < 2; ++j) {
       const std::optional<Vector_3> v = g(g.node_point(3, j, k));
       ASSERT_TRUE(v.has_value()) << j << " " << k;
       EXPECT_EQ(*v, g.node_value(3, j, k));
@@ -218,17 +214,17 @@ TEST(RegularGridFlowField3, ClosedBoxIsInsideAndJustOutsideIsNot)
   const double lo[3] = {kOrigin.x(), kOrigin.y(), kOrigin.z()};
   const double hi[3] = {kOrigin.x() + 6. * kSpacing.x(), kOrigin.y() + 8. * kSpacing.y(),
                         kOrigin.z() + 4. * kSpacing.z()};
-  for(int a = 0; a < 3; ++a) {
+  for (int a = 0; a < 3; ++a) {
     EXPECT_EQ(b.min(a), lo[a]);
     EXPECT_EQ(b.max(a), hi[a]);
   }
   const double scale = max_abs_node_value(g);
   const double inf = std::numeric_limits<double>::infinity();
   std::mt19937 rng(11);
-  for(int s = 0; s < 200; ++s) {
+  for (int s = 0; s < 200; ++s) {
     const Point_3 r = random_point_in(b, rng);
-    for(int a = 0; a < 3; ++a) {
-      for(int side = 0; side < 2; ++side) {
+    for (int a = 0; a < 3; ++a) {
+      for (int side = 0; side < 2; ++side) {
         double x[3] = {r.x(), r.y(), r.z()};
         x[a] = side ? hi[a] : lo[a];
         const Point_3 on(x[0], x[1], x[2]);
@@ -241,7 +237,7 @@ TEST(RegularGridFlowField3, ClosedBoxIsInsideAndJustOutsideIsNot)
     }
   }
   // The 8 corners of the box, and points with a NaN coordinate.
-  for(int q = 0; q < 8; ++q) {
+  for (int q = 0; q < 8; ++q) {
     const Point_3 c((q & 1) ? hi[0] : lo[0], (q & 2) ? hi[1] : lo[1], (q & 4) ? hi[2] : lo[2]);
     ASSERT_TRUE(g(c).has_value()) << c;
     expect_near_vector(*g(c), f(c.x(), c.y(), c.z()), scale);
@@ -268,15 +264,15 @@ TEST(RegularGridFlowField3, MaskExcludesTheCellsTouchingASolidNode)
   EXPECT_TRUE(g.is_fluid(2, 2, 1));
 
   std::size_t outside = 0;
-  for(int k = 0; k < 4; ++k)
-    for(int j = 0; j < 4; ++j)
-      for(int i = 0; i < 4; ++i) {
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) {
         const bool touches = (i == 1 || i == 2) && (j == 1 || j == 2) && (k == 1 || k == 2);
         const Point_3 center(i + 0.5, j + 0.5, k + 0.5);
         const Point_3 near_corner(i + 0.01, j + 0.99, k + 0.5);
         EXPECT_EQ(g(center).has_value(), !touches) << "cell " << i << " " << j << " " << k;
         EXPECT_EQ(g(near_corner).has_value(), !touches) << "cell " << i << " " << j << " " << k;
-        if(!touches) {
+        if (!touches) {
           expect_near_vector(*g(center), f(i + 0.5, j + 0.5, k + 0.5), 10.);
         }
         outside += touches;
@@ -314,7 +310,7 @@ TEST(RegularGridFlowField3, SampleOnGridReproducesALinearField)
   EXPECT_EQ(g.values().size(), 3 * g.number_of_nodes());
   const double scale = max_abs_node_value(g);
   std::mt19937 rng(13);
-  for(int s = 0; s < 2000; ++s) {
+  for (int s = 0; s < 2000; ++s) {
     const Point_3 p = random_point_in(g.bbox(), rng);
     ASSERT_TRUE(g(p).has_value());
     expect_near_vector(*g(p), *f(p), scale);
@@ -325,9 +321,9 @@ TEST(RegularGridFlowField3, SampleOnGridMasksTheNodesOutsideTheField)
 {
   // Defined for x <= 0.5 only: nodes x = 0, 0.5 fluid, x = 1, 1.5 solid (and a NaN node).
   const auto f = [](const Point_3& p) -> std::optional<Vector_3> {
-    if(p.x() > 0.5)
+    if (p.x() > 0.5)
       return std::nullopt;
-    if(p.y() == 1. && p.z() == 1.)
+    if (p.y() == 1. && p.z() == 1.)
       return Vector_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
     return Vector_3(1, 2, 3);
   };
@@ -369,9 +365,9 @@ void expect_invalid_argument(const Make& make, const std::vector<std::string>& w
   try {
     make();
     ADD_FAILURE() << "no exception; expected one mentioning " << words.front();
-  } catch(const std::invalid_argument& e) {
+  } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
-    for(const std::string& w : words)
+    for (const std::string& w : words)
       EXPECT_NE(what.find(w), std::string::npos) << "'" << w << "' missing from: " << what;
   }
 }
@@ -384,22 +380,19 @@ TEST(RegularGridFlowField3, BadInputThrowsWithTheArgumentsName)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
 
-  expect_invalid_argument([&] { Grid(o, h, {2, 2, 2}, std::vector<float>(10)); },
-                          {"values", "10", "24"});
-  expect_invalid_argument([&] { Grid(o, h, {2, 2, 2}, std::vector<float>(25)); },
-                          {"values", "25", "24"});
-  expect_invalid_argument([&] { Grid(o, h, {2, 2, 2}, v8, std::vector<unsigned char>(5, 1)); },
-                          {"mask", "5", "8"});
-  expect_invalid_argument([&] { Grid(o, h, {2, 1, 2}, std::vector<float>(12)); },
-                          {"dimensions", "1", "2"});
-  expect_invalid_argument([&] { Grid(o, h, {0, 2, 2}, std::vector<float>()); },
-                          {"dimensions", "0"});
-  expect_invalid_argument([&] { Grid(o, 1., -0.5, 1., {2, 2, 2}, v8); },
-                          {"spacing", "hy", "-0.5"});
+  expect_invalid_argument([&] { Grid(o, h, {2, 2, 2}, std::vector<float>(10)); }, {"values", "10", "24"});
+  expect_invalid_argument([&] { Grid(o, h, {2, 2, 2}, std::vector<float>(25)); }, {"values", "25", "24"});
+  expect_invalid_argument(
+      [&] {
+        Grid(o, h, {2, 2, 2}, v8, std::vector<unsigned char>(5, 1));
+      },
+      {"mask", "5", "8"});
+  expect_invalid_argument([&] { Grid(o, h, {2, 1, 2}, std::vector<float>(12)); }, {"dimensions", "1", "2"});
+  expect_invalid_argument([&] { Grid(o, h, {0, 2, 2}, std::vector<float>()); }, {"dimensions", "0"});
+  expect_invalid_argument([&] { Grid(o, 1., -0.5, 1., {2, 2, 2}, v8); }, {"spacing", "hy", "-0.5"});
   expect_invalid_argument([&] { Grid(o, 0., 1., 1., {2, 2, 2}, v8); }, {"spacing", "hx"});
   expect_invalid_argument([&] { Grid(o, 1., 1., nan, {2, 2, 2}, v8); }, {"spacing", "hz"});
-  expect_invalid_argument([&] { Grid(o, Vector_3(1, inf, 1), {2, 2, 2}, v8); },
-                          {"spacing", "hy"});
+  expect_invalid_argument([&] { Grid(o, Vector_3(1, inf, 1), {2, 2, 2}, v8); }, {"spacing", "hy"});
   expect_invalid_argument([&] { Grid(Point_3(nan, 0, 0), h, {2, 2, 2}, v8); }, {"origin"});
 
   std::vector<float> with_nan = v8;
@@ -414,17 +407,15 @@ TEST(RegularGridFlowField3, BadInputThrowsWithTheArgumentsName)
   const std::size_t huge = std::size_t(1) << 30;
   expect_invalid_argument([&] { Grid(o, h, {huge, huge, huge}, v8); }, {"dimensions"});
   const auto zero = [](const Point_3&) { return std::optional<Vector_3>(Vector_3(0, 0, 0)); };
-  expect_invalid_argument([&] { FAS::sample_on_grid(zero, o, h, {huge, huge, huge}); },
-                          {"dimensions"});
-  expect_invalid_argument([&] { FAS::sample_on_grid(zero, o, h, {2, 2, 1}); },
-                          {"dimensions", "1"});
-  expect_invalid_argument([&] { FAS::sample_on_grid(zero, o, Vector_3(1, 1, 0), {2, 2, 2}); },
-                          {"spacing", "hz"});
-  const auto too_big = [](const Point_3&) {
-    return std::optional<Vector_3>(Vector_3(1e300, 0, 0));
-  };
-  expect_invalid_argument([&] { FAS::sample_on_grid(too_big, o, h, {2, 2, 2}); },
-                          {"float", "1e+300"});
+  expect_invalid_argument([&] { FAS::sample_on_grid(zero, o, h, {huge, huge, huge}); }, {"dimensions"});
+  expect_invalid_argument([&] { FAS::sample_on_grid(zero, o, h, {2, 2, 1}); }, {"dimensions", "1"});
+  expect_invalid_argument(
+      [&] {
+        FAS::sample_on_grid(zero, o, Vector_3(1, 1, 0), {2, 2, 2});
+      },
+      {"spacing", "hz"});
+  const auto too_big = [](const Point_3&) { return std::optional<Vector_3>(Vector_3(1e300, 0, 0)); };
+  expect_invalid_argument([&] { FAS::sample_on_grid(too_big, o, h, {2, 2, 2}); }, {"float", "1e+300"});
 }
 
 } // namespace

@@ -31,7 +31,10 @@ using Matrix3 = std::array<std::array<double, 3>, 3>;
 constexpr double h = 1e-5;
 constexpr double tol = 1e-6;
 
-double norm(const Vector& v) { return std::sqrt(v.squared_length()); }
+double norm(const Vector& v)
+{
+  return std::sqrt(v.squared_length());
+}
 
 template <typename Field>
 Vector velocity(const Field& field, const Point& p)
@@ -41,13 +44,16 @@ Vector velocity(const Field& field, const Point& p)
   return v ? *v : Vector(0, 0, 0);
 }
 
-Vector unit(int i) { return Vector(i == 0, i == 1, i == 2); }
+Vector unit(int i)
+{
+  return Vector(i == 0, i == 1, i == 2);
+}
 
 template <typename Scalar>
 Vector fd_gradient(const Scalar& f, const Point& p)
 {
   double g[3];
-  for(int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i)
     g[i] = (f(p + h * unit(i)) - f(p - h * unit(i))) / (2 * h);
   return Vector(g[0], g[1], g[2]);
 }
@@ -57,9 +63,9 @@ template <typename Field>
 Matrix3 fd_jacobian(const Field& field, const Point& p)
 {
   Matrix3 J;
-  for(int j = 0; j < 3; ++j) {
+  for (int j = 0; j < 3; ++j) {
     const Vector d = (velocity(field, p + h * unit(j)) - velocity(field, p - h * unit(j))) / (2 * h);
-    for(int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i)
       J[i][j] = d[i];
   }
   return J;
@@ -68,13 +74,16 @@ Matrix3 fd_jacobian(const Field& field, const Point& p)
 double frobenius_norm(const Matrix3& J)
 {
   double s = 0;
-  for(const auto& row : J)
-    for(double a : row)
+  for (const auto& row : J)
+    for (double a : row)
       s += a * a;
   return std::sqrt(s);
 }
 
-double divergence(const Matrix3& J) { return J[0][0] + J[1][1] + J[2][2]; }
+double divergence(const Matrix3& J)
+{
+  return J[0][0] + J[1][1] + J[2][2];
+}
 
 Vector curl(const Matrix3& J)
 {
@@ -83,35 +92,40 @@ Vector curl(const Matrix3& J)
 
 // Pseudo-random points of the box [lo, hi]^3 accepted by `keep`; the fixed seed makes failures
 // reproducible.
-std::vector<Point> sample_points(std::size_t n, double lo, double hi,
-                                 const std::function<bool(const Point&)>& keep =
-                                     [](const Point&) { return true; },
-                                 unsigned seed = 20130227)
+std::vector<Point> sample_points(
+    std::size_t n, double lo, double hi,
+    const std::function<bool(const Point&)>& keep = [](const Point&) { return true; },
+    unsigned seed = 20130227)
 {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(lo, hi);
   std::vector<Point> points;
-  while(points.size() < n) {
+  while (points.size() < n) {
     const double x = u(rng), y = u(rng), z = u(rng);
     const Point p(x, y, z);
-    if(keep(p))
+    if (keep(p))
       points.push_back(p);
   }
   return points;
 }
 
-double rho(const Point& p) { return std::sqrt(p.x() * p.x() + p.y() * p.y()); }
-double radius(const Point& p) { return std::sqrt((p - CGAL::ORIGIN).squared_length()); }
+double rho(const Point& p)
+{
+  return std::sqrt(p.x() * p.x() + p.y() * p.y());
+}
+double radius(const Point& p)
+{
+  return std::sqrt((p - CGAL::ORIGIN).squared_length());
+}
 
 template <typename Field, typename Potential>
 void expect_gradient_of_potential(const Field& field, const Potential& potential,
                                   const std::vector<Point>& points)
 {
-  for(const Point& p : points) {
+  for (const Point& p : points) {
     const Vector v = velocity(field, p);
     const Vector g = fd_gradient(potential, p);
-    EXPECT_LE(norm(g - v), tol * (norm(v) + 1e-3)) << "at " << p << ": grad phi " << g
-                                                    << " vs v " << v;
+    EXPECT_LE(norm(g - v), tol * (norm(v) + 1e-3)) << "at " << p << ": grad phi " << g << " vs v " << v;
   }
 }
 
@@ -123,10 +137,10 @@ double max_first_integral_defect(const Field& field, const Integral& integral,
 {
   double worst = 0;
   std::size_t counted = 0;
-  for(const Point& p : points) {
+  for (const Point& p : points) {
     const Vector v = velocity(field, p);
     const Vector g = fd_gradient(integral, p);
-    if(norm(v) < 1e-6 || norm(g) < 1e-6)
+    if (norm(v) < 1e-6 || norm(g) < 1e-6)
       continue;
     ++counted;
     worst = std::max(worst, std::abs(g * v) / (norm(g) * norm(v)));
@@ -138,7 +152,7 @@ double max_first_integral_defect(const Field& field, const Integral& integral,
 template <typename Field>
 void expect_divergence_free(const Field& field, const std::vector<Point>& points)
 {
-  for(const Point& p : points) {
+  for (const Point& p : points) {
     const Matrix3 J = fd_jacobian(field, p);
     EXPECT_LE(std::abs(divergence(J)), tol * (frobenius_norm(J) + 1e-3)) << "at " << p;
   }
@@ -147,7 +161,7 @@ void expect_divergence_free(const Field& field, const std::vector<Point>& points
 template <typename Field>
 void expect_curl_free(const Field& field, const std::vector<Point>& points)
 {
-  for(const Point& p : points) {
+  for (const Point& p : points) {
     const Matrix3 J = fd_jacobian(field, p);
     EXPECT_LE(norm(curl(J)), tol * (frobenius_norm(J) + 1e-3)) << "at " << p;
   }
@@ -155,11 +169,10 @@ void expect_curl_free(const Field& field, const std::vector<Point>& points)
 
 // For an axisymmetric flow about z: u_rho = -(1/rho) dpsi/dz and u_z = (1/rho) dpsi/drho.
 template <typename Field, typename Stream_function>
-void expect_meridional_velocity_from_stokes_stream_function(const Field& field,
-                                                            const Stream_function& psi,
+void expect_meridional_velocity_from_stokes_stream_function(const Field& field, const Stream_function& psi,
                                                             const std::vector<Point>& points)
 {
-  for(const Point& p : points) {
+  for (const Point& p : points) {
     const double r = rho(p);
     const Vector e_rho(p.x() / r, p.y() / r, 0);
     const Vector v = velocity(field, p);
@@ -181,8 +194,7 @@ void expect_vectors_near(const Field& field, const Point& p, const Vector& expec
 // ---------------------------------------------------------------------------------------------
 
 template <typename Field>
-constexpr bool is_flow_field_3 =
-    std::is_copy_constructible_v<Field> &&
+constexpr bool is_flow_field_3 = std::is_copy_constructible_v<Field>&&
     std::is_same_v<std::invoke_result_t<const Field&, const Point&>, std::optional<Vector>>;
 
 static_assert(is_flow_field_3<FAS::Uniform_flow<K>>);
@@ -201,9 +213,10 @@ TEST(AnalyticFlowFields, UniformFlowIsConstantAndTheGradientOfItsPotential)
   const Vector u(1, -2, 0.5);
   const FAS::Uniform_flow<K> field(u);
   const std::vector<Point> points = sample_points(50, -5, 5);
-  for(const Point& p : points)
+  for (const Point& p : points)
     EXPECT_EQ(velocity(field, p), u);
-  expect_gradient_of_potential(field, [&](const Point& p) { return field.potential(p); }, points);
+  expect_gradient_of_potential(
+      field, [&](const Point& p) { return field.potential(p); }, points);
   EXPECT_EQ(FAS::Uniform_flow<K>().velocity(), Vector(1, 0, 0));
 }
 
@@ -215,7 +228,7 @@ TEST(AnalyticFlowFields, LinearFlowIsTheMatrixProduct)
   EXPECT_EQ(FAS::Linear_flow<K>(a).matrix(), field.matrix());
   EXPECT_FALSE(field.has_potential());
   EXPECT_EQ(field.divergence(), 16);
-  for(const Point& p : sample_points(20, -2, 2))
+  for (const Point& p : sample_points(20, -2, 2))
     EXPECT_NEAR(divergence(fd_jacobian(field, p)), 16, 1e-6);
 }
 
@@ -223,8 +236,8 @@ TEST(AnalyticFlowFields, SymmetricLinearFlowIsTheGradientOfItsPotential)
 {
   const FAS::Linear_flow<K> field(2, -1, 0.5, -1, 3, 0.25, 0.5, 0.25, -1);
   ASSERT_TRUE(field.has_potential());
-  expect_gradient_of_potential(field, [&](const Point& p) { return field.potential(p); },
-                               sample_points(50, -3, 3));
+  expect_gradient_of_potential(
+      field, [&](const Point& p) { return field.potential(p); }, sample_points(50, -3, 3));
 }
 
 TEST(AnalyticFlowFields, DefaultLinearFlowIsTheHarmonicSaddle)
@@ -235,11 +248,11 @@ TEST(AnalyticFlowFields, DefaultLinearFlowIsTheHarmonicSaddle)
   // Streamlines (x0 e^t, y0 e^t, z0 e^-2t) keep y/x and (x^2+y^2) z.
   const std::vector<Point> points =
       sample_points(100, -2, 2, [](const Point& p) { return std::abs(p.x()) > 0.1; });
-  EXPECT_LE(max_first_integral_defect(field, [](const Point& p) { return p.y() / p.x(); }, points),
+  EXPECT_LE(max_first_integral_defect(
+                field, [](const Point& p) { return p.y() / p.x(); }, points),
             tol);
   EXPECT_LE(max_first_integral_defect(
-                field, [](const Point& p) { return (p.x() * p.x() + p.y() * p.y()) * p.z(); },
-                points),
+                field, [](const Point& p) { return (p.x() * p.x() + p.y() * p.y()) * p.z(); }, points),
             tol);
   expect_divergence_free(field, points);
 }
@@ -259,19 +272,19 @@ TEST(AnalyticFlowFields, HelicalFlowFirstIntegrals)
   expect_divergence_free(field, points);
 
   // The exact flow map (rotation by t about z, rise c t) keeps both integrals.
-  for(const Point& p : sample_points(20, -3, 3)) {
-    for(double t : {0.3, 1.7, -4.0}) {
-      const Point q(std::cos(t) * p.x() - std::sin(t) * p.y(),
-                    std::sin(t) * p.x() + std::cos(t) * p.y(), p.z() + c * t);
+  for (const Point& p : sample_points(20, -3, 3)) {
+    for (double t : {0.3, 1.7, -4.0}) {
+      const Point q(std::cos(t) * p.x() - std::sin(t) * p.y(), std::sin(t) * p.x() + std::cos(t) * p.y(),
+                    p.z() + c * t);
       EXPECT_NEAR(field.first_integral_radius(q), field.first_integral_radius(p), 1e-12);
       EXPECT_NEAR(field.first_integral_helicoid(q), field.first_integral_helicoid(p), 1e-12);
     }
   }
   // The zero level set of the helicoid integral is the helicoid theta = z / c.
-  for(double z : {-2.0, 0.1, 1.5})
-    for(double s : {-1.0, 0.5, 2.0})
-      EXPECT_NEAR(field.first_integral_helicoid(Point(s * std::cos(z / c), s * std::sin(z / c), z)),
-                  0, 1e-14);
+  for (double z : {-2.0, 0.1, 1.5})
+    for (double s : {-1.0, 0.5, 2.0})
+      EXPECT_NEAR(field.first_integral_helicoid(Point(s * std::cos(z / c), s * std::sin(z / c), z)), 0,
+                  1e-14);
 }
 
 TEST(AnalyticFlowFields, ABCFlowAtHandComputedPoints)
@@ -279,11 +292,9 @@ TEST(AnalyticFlowFields, ABCFlowAtHandComputedPoints)
   const FAS::ABC_flow<K> field; // A = sqrt 3, B = sqrt 2, C = 1
   const double pi = CGAL_PI;
   // (pi/2, 0, 0): u = A sin 0 + C cos 0, v = B sin(pi/2) + A cos 0, w = C sin 0 + B cos(pi/2)
-  expect_vectors_near(field, Point(pi / 2, 0, 0), Vector(1, std::sqrt(2.) + std::sqrt(3.), 0),
-                      1e-15);
+  expect_vectors_near(field, Point(pi / 2, 0, 0), Vector(1, std::sqrt(2.) + std::sqrt(3.), 0), 1e-15);
   // (0, pi/2, pi/2): u = A, v = A cos(pi/2), w = C + B
-  expect_vectors_near(field, Point(0, pi / 2, pi / 2), Vector(std::sqrt(3.), 0, 1 + std::sqrt(2.)),
-                      1e-15);
+  expect_vectors_near(field, Point(0, pi / 2, pi / 2), Vector(std::sqrt(3.), 0, 1 + std::sqrt(2.)), 1e-15);
   const FAS::ABC_flow<K> other(2, 3, 5);
   // (1, 2, 3): (2 sin 3 + 5 cos 2, 3 sin 1 + 2 cos 3, 5 sin 2 + 3 cos 1)
   expect_vectors_near(other, Point(1, 2, 3),
@@ -293,7 +304,7 @@ TEST(AnalyticFlowFields, ABCFlowAtHandComputedPoints)
 TEST(AnalyticFlowFields, ABCFlowIsADivergenceFreeBeltramiField)
 {
   const FAS::ABC_flow<K> field(1.3, 0.7, 0.4);
-  for(const Point& p : sample_points(50, -4, 4)) {
+  for (const Point& p : sample_points(50, -4, 4)) {
     const Matrix3 J = fd_jacobian(field, p);
     const Vector v = velocity(field, p);
     EXPECT_LE(norm(curl(J) - v), tol * norm(v)) << "curl v = v fails at " << p;
@@ -305,18 +316,16 @@ TEST(AnalyticFlowFields, ABCFlowFirstIntegralWithoutC)
 {
   const FAS::ABC_flow<K> field(1.3, 0.7, 0);
   const std::vector<Point> points = sample_points(200, -4, 4);
-  EXPECT_LE(max_first_integral_defect(field, [&](const Point& p) { return field.first_integral(p); },
-                                      points),
+  EXPECT_LE(max_first_integral_defect(
+                field, [&](const Point& p) { return field.first_integral(p); }, points),
             tol);
   // The check bites: the integral with the other sign, or the same integral when C != 0, fails.
   EXPECT_GT(max_first_integral_defect(
-                field,
-                [](const Point& p) { return 1.3 * std::cos(p.z()) - 0.7 * std::sin(p.x()); }, points),
+                field, [](const Point& p) { return 1.3 * std::cos(p.z()) - 0.7 * std::sin(p.x()); }, points),
             0.1);
   const FAS::ABC_flow<K> with_c(1.3, 0.7, 0.5);
   EXPECT_GT(max_first_integral_defect(
-                with_c,
-                [](const Point& p) { return 1.3 * std::cos(p.z()) + 0.7 * std::sin(p.x()); }, points),
+                with_c, [](const Point& p) { return 1.3 * std::cos(p.z()) + 0.7 * std::sin(p.x()); }, points),
             0.1);
 }
 
@@ -331,7 +340,7 @@ TEST(AnalyticFlowFields, HillSphericalVortexClassicalValues)
   expect_vectors_near(field, Point(0, 0, a), Vector(0, 0, 0), 1e-15);
   expect_vectors_near(field, Point(0, 0, -a), Vector(0, 0, 0), 1e-15);
 
-  for(const Point& s : sample_points(50, -1, 1, [](const Point& p) { return radius(p) > 0.1; })) {
+  for (const Point& s : sample_points(50, -1, 1, [](const Point& p) { return radius(p) > 0.1; })) {
     const Vector n = (s - CGAL::ORIGIN) / radius(s);
     // No flow through the sphere, and psi and v continuous across it.
     const Point on = CGAL::ORIGIN + a * n;
@@ -349,14 +358,13 @@ TEST(AnalyticFlowFields, HillSphericalVortexStreamFunctionAndVorticity)
   const double a = 2, U = 0.5;
   const FAS::Hill_spherical_vortex<K> field(a, U);
   // Away from the axis (psi/rho) and from the sphere, where the second derivatives jump.
-  const std::vector<Point> points = sample_points(200, -4, 4, [&](const Point& p) {
-    return rho(p) > 0.05 && std::abs(radius(p) - a) > 1e-3;
-  });
+  const std::vector<Point> points = sample_points(
+      200, -4, 4, [&](const Point& p) { return rho(p) > 0.05 && std::abs(radius(p) - a) > 1e-3; });
   const auto psi = [&](const Point& p) { return field.stokes_stream_function(p); };
   EXPECT_LE(max_first_integral_defect(field, psi, points), tol);
   expect_meridional_velocity_from_stokes_stream_function(field, psi, points);
   expect_divergence_free(field, points);
-  for(const Point& p : points) {
+  for (const Point& p : points) {
     // Azimuthal vorticity 15 U rho / (2 a^2) inside, none outside.
     const Vector w = curl(fd_jacobian(field, p));
     const double expected = radius(p) < a ? 7.5 * U * rho(p) / (a * a) : 0.;
@@ -379,10 +387,11 @@ TEST(AnalyticFlowFields, PointSourceFlow)
 
   const std::vector<Point> points =
       sample_points(100, -2, 4, [&](const Point& p) { return CGAL::squared_distance(p, c) > 0.25; });
-  expect_gradient_of_potential(field, [&](const Point& p) { return field.potential(p); }, points);
+  expect_gradient_of_potential(
+      field, [&](const Point& p) { return field.potential(p); }, points);
   expect_divergence_free(field, points);
   expect_curl_free(field, points);
-  for(const Point& p : points) {
+  for (const Point& p : points) {
     const Vector d = p - c;
     const double r = norm(d);
     const Vector v = velocity(field, p);
@@ -402,7 +411,7 @@ TEST(AnalyticFlowFields, CylinderPotentialFlow)
   EXPECT_FALSE(field(Point(0.9 * R, 0.4, 7)).has_value());
   EXPECT_FALSE(field(Point(R * (1 - 1e-9), 0, -3)).has_value());
 
-  for(double t = 0; t < 2 * CGAL_PI; t += 0.1) {
+  for (double t = 0; t < 2 * CGAL_PI; t += 0.1) {
     const Point on(R * std::cos(t), R * std::sin(t), 10 * t - 5);
     EXPECT_NEAR(velocity(field, on) * Vector(std::cos(t), std::sin(t), 0), 0, 1e-14 * U);
     EXPECT_NEAR(field.stream_function(on), 0, 1e-14 * U * R);
@@ -417,11 +426,14 @@ TEST(AnalyticFlowFields, CylinderPotentialFlow)
 
   const std::vector<Point> points =
       sample_points(200, -5, 5, [&](const Point& p) { return rho(p) > R + 1e-3; });
-  expect_gradient_of_potential(field, [&](const Point& p) { return field.potential(p); }, points);
+  expect_gradient_of_potential(
+      field, [&](const Point& p) { return field.potential(p); }, points);
   const auto psi = [&](const Point& p) { return field.stream_function(p); };
   EXPECT_LE(max_first_integral_defect(field, psi, points), tol);
-  EXPECT_LE(max_first_integral_defect(field, [](const Point& p) { return p.z(); }, points), tol);
-  for(const Point& p : points) {
+  EXPECT_LE(max_first_integral_defect(
+                field, [](const Point& p) { return p.z(); }, points),
+            tol);
+  for (const Point& p : points) {
     // v_x = dpsi/dy, v_y = -dpsi/dx fixes the orientation of psi.
     const Vector g = fd_gradient(psi, p);
     expect_vectors_near(field, p, Vector(g.y(), -g.x(), 0), tol * (U + 1e-3));
@@ -438,7 +450,7 @@ TEST(AnalyticFlowFields, SpherePotentialFlow)
   EXPECT_FALSE(field(Point(0.3, -0.2, 0.5)).has_value());
   EXPECT_TRUE(field(Point(0, 0, R)).has_value());
 
-  for(const Point& s : sample_points(100, -1, 1, [](const Point& p) { return radius(p) > 0.1; })) {
+  for (const Point& s : sample_points(100, -1, 1, [](const Point& p) { return radius(p) > 0.1; })) {
     const Vector n = (s - CGAL::ORIGIN) / radius(s);
     const Point on = CGAL::ORIGIN + R * n;
     const Vector v = velocity(field, on);
@@ -452,10 +464,10 @@ TEST(AnalyticFlowFields, SpherePotentialFlow)
   expect_vectors_near(field, Point(R, 0, 0), Vector(0, 0, 1.5 * U), 1e-14);
   expect_vectors_near(field, Point(1e3, 2e3, -2e3), Vector(0, 0, U), 2 * U * std::pow(R / 3e3, 3));
 
-  const std::vector<Point> points = sample_points(200, -3, 3, [&](const Point& p) {
-    return radius(p) > R + 1e-3 && rho(p) > 0.05;
-  });
-  expect_gradient_of_potential(field, [&](const Point& p) { return field.potential(p); }, points);
+  const std::vector<Point> points =
+      sample_points(200, -3, 3, [&](const Point& p) { return radius(p) > R + 1e-3 && rho(p) > 0.05; });
+  expect_gradient_of_potential(
+      field, [&](const Point& p) { return field.potential(p); }, points);
   const auto psi = [&](const Point& p) { return field.stokes_stream_function(p); };
   EXPECT_LE(max_first_integral_defect(field, psi, points), tol);
   // Meridional half-planes: the azimuthal angle is a first integral.
@@ -478,11 +490,9 @@ TEST(AnalyticFlowFields, BurgersVortex)
   const double omega0 = gamma * alpha / (4 * CGAL_PI * nu);
   expect_vectors_near(field, Point(0, 1e-6, 0), Vector(-omega0 * 1e-6, -alpha * 1e-6, 0), 1e-16);
   // Far from the core: potential vortex Gamma / (2 pi rho) plus the radial inflow.
-  expect_vectors_near(field, Point(10, 0, 0), Vector(-alpha * 10, gamma / (2 * CGAL_PI * 10), 0),
-                      1e-14);
+  expect_vectors_near(field, Point(10, 0, 0), Vector(-alpha * 10, gamma / (2 * CGAL_PI * 10), 0), 1e-14);
 
-  const std::vector<Point> points =
-      sample_points(200, -2, 2, [](const Point& p) { return rho(p) > 0.05; });
+  const std::vector<Point> points = sample_points(200, -2, 2, [](const Point& p) { return rho(p) > 0.05; });
   const auto psi = [&](const Point& p) { return field.stokes_stream_function(p); };
   EXPECT_LE(max_first_integral_defect(field, psi, points), tol);
   expect_meridional_velocity_from_stokes_stream_function(field, psi, points);
@@ -491,7 +501,7 @@ TEST(AnalyticFlowFields, BurgersVortex)
   EXPECT_GT(max_first_integral_defect(
                 field, [](const Point& p) { return std::atan2(p.y(), p.x()); }, points),
             0.1);
-  for(const Point& p : sample_points(50, -2, 2)) {
+  for (const Point& p : sample_points(50, -2, 2)) {
     // Axial vorticity Gamma alpha / (2 pi nu) exp(-alpha rho^2 / (2 nu)), nothing else.
     const Vector w = curl(fd_jacobian(field, p));
     const double rho2 = p.x() * p.x() + p.y() * p.y();
@@ -505,14 +515,12 @@ TEST(AnalyticFlowFields, CrawfisTornadoAtHandComputedPoints)
   // Values computed separately from Crawfis's gen_tornado() loop body with x, y, z set directly.
   const FAS::Crawfis_tornado<K> at0;
   expect_vectors_near(at0, Point(0.3, 0.6, 0.5),
-                      Vector(0.11056931648993044, 0.14482954848594876, 0.00393509343971639),
-                      1e-14);
+                      Vector(0.11056931648993044, 0.14482954848594876, 0.00393509343971639), 1e-14);
   // Outside the band |r - d| <= r2, where the magnitude factor is 0.8 - |r - d|.
-  expect_vectors_near(at0, Point(0.05, 0.95, 0.2),
-                      Vector(-0.09344514466694691, -0.021181801245017527, 0), 1e-14);
-  expect_vectors_near(FAS::Crawfis_tornado<K>(10), Point(0.5, 0.5, 0),
-                      Vector(-0.18487121530371145, 0.06421726624562987, 0.018943799796265325),
+  expect_vectors_near(at0, Point(0.05, 0.95, 0.2), Vector(-0.09344514466694691, -0.021181801245017527, 0),
                       1e-14);
+  expect_vectors_near(FAS::Crawfis_tornado<K>(10), Point(0.5, 0.5, 0),
+                      Vector(-0.18487121530371145, 0.06421726624562987, 0.018943799796265325), 1e-14);
   expect_vectors_near(FAS::Crawfis_tornado<K>(37), Point(0.9, 0.1, 0.9),
                       Vector(-0.009837409684797106, -0.12081795396635184, 0), 1e-14);
 }
@@ -526,17 +534,16 @@ TEST(AnalyticFlowFields, CrawfisTornadoDomain)
   EXPECT_FALSE(field(Point(std::nan(""), 0.5, 0.5)).has_value());
   // Defined and finite on the whole closed cube, corners and faces included.
   const int n = 20;
-  for(int i = 0; i <= n; ++i)
-    for(int j = 0; j <= n; ++j)
-      for(int k = 0; k <= n; ++k) {
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k) {
         const Point p(double(i) / n, double(j) / n, double(k) / n);
         const Vector v = velocity(field, p);
-        ASSERT_TRUE(std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()))
-            << "at " << p;
+        ASSERT_TRUE(std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z())) << "at " << p;
         EXPECT_LT(norm(v), 10) << "at " << p;
       }
   // The horizontal part is a swirl about the funnel center plus 0.1 times the offset from it.
-  for(const Point& p : sample_points(100, 0, 1)) {
+  for (const Point& p : sample_points(100, 0, 1)) {
     const double z = p.z();
     const double xc = 0.5 + 0.1 * std::sin(0.04 * 3 + 10 * z);
     const double yc = 0.5 + 0.1 * std::cos(0.03 * 3 + 3 * z);

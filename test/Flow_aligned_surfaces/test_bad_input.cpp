@@ -36,7 +36,10 @@ using Deformation = FAS::Flow_aligned_deformation<Mesh, Field>;
 const double nan = std::numeric_limits<double>::quiet_NaN();
 const double inf = std::numeric_limits<double>::infinity();
 
-Field point_source() { return FAS::Point_source_flow<K>(Point(0, 0, 0), 1.0); }
+Field point_source()
+{
+  return FAS::Point_source_flow<K>(Point(0, 0, 0), 1.0);
+}
 
 Mesh planar_patch(const Point& center, const Vector& normal, double size, std::size_t faces)
 {
@@ -78,13 +81,11 @@ void expect_invalid_argument(const Call& call, std::initializer_list<std::string
   try {
     call();
     ADD_FAILURE() << "no exception thrown";
-  }
-  catch (const std::invalid_argument& e) {
+  } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
     for (const std::string& part : parts)
       EXPECT_NE(what.find(part), std::string::npos) << "message \"" << what << "\" lacks \"" << part << "\"";
-  }
-  catch (const std::exception& e) {
+  } catch (const std::exception& e) {
     ADD_FAILURE() << "expected std::invalid_argument, got another exception: " << e.what();
   }
 }
@@ -128,7 +129,8 @@ TEST(BadInput, QuadFace)
   const auto a = tm.add_vertex(Point(3, 0, 2)), b = tm.add_vertex(Point(4, 0, 2)),
              c = tm.add_vertex(Point(4, 1, 2)), d = tm.add_vertex(Point(3, 1, 2));
   ASSERT_NE(tm.add_face(a, b, c, d), Mesh::null_face());
-  expect_every_entry_point_rejects(tm, {"tm:", "face " + std::to_string(quad) + " has 4 vertices", "triangle"});
+  expect_every_entry_point_rejects(tm,
+                                   {"tm:", "face " + std::to_string(quad) + " has 4 vertices", "triangle"});
 }
 
 // Two triangles, the second one flat: its third vertex lies on the shared edge's line.
@@ -276,8 +278,8 @@ TEST(BadInput, BadParameterAmongGoodOnesIsFound)
 {
   // Chained onto CGAL's own parameters, and with other package parameters in range.
   expect_parameter_rejected(
-      FAS::parameters::max_rotation_angle(0.05, FAS::parameters::max_dihedral_angle(
-                                                    -0.5, CGAL::parameters::number_of_iterations(10))),
+      FAS::parameters::max_rotation_angle(
+          0.05, FAS::parameters::max_dihedral_angle(-0.5, CGAL::parameters::number_of_iterations(10))),
       "max_dihedral_angle");
 }
 
@@ -287,9 +289,11 @@ TEST(BadInput, BoundaryValuesOfTheParametersAreAccepted)
   Mesh tm = planar_patch(Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 100);
   const Field field = point_source();
   const auto np = FAS::parameters::max_rotation_angle(
-      CGAL_PI, FAS::parameters::max_dihedral_angle(
-                   CGAL_PI, FAS::parameters::convergence_angle(
-                                0.0, FAS::parameters::convergence_step(0.0, CGAL::parameters::number_of_iterations(3)))));
+      CGAL_PI,
+      FAS::parameters::max_dihedral_angle(
+          CGAL_PI,
+          FAS::parameters::convergence_angle(
+              0.0, FAS::parameters::convergence_step(0.0, CGAL::parameters::number_of_iterations(3)))));
   const FAS::Alignment_report report = FAS::align_to_flow(tm, field, FAS::Alignment::ORTHOGONAL, np);
   EXPECT_EQ(report.number_of_iterations, 3u);
   EXPECT_GT(report.normalized_flux, 0.9);

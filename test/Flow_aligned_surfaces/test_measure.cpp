@@ -26,8 +26,8 @@ TEST(Measure, FluxOfATiltedPlaneInAUniformFlowIsTheCosineOfTheTilt)
   for (double tilt : {0.0, 0.3, 1.0, CGAL_PI / 2, 2.5}) {
     for (double sign : {1.0, -1.0}) { // the measure does not depend on the orientation
       Mesh tm;
-      FAS::make_planar_patch(tm, Point(1, 2, 3), Vector(sign * std::sin(tilt), 0, sign * std::cos(tilt)), 1.0, 0.7,
-                             300);
+      FAS::make_planar_patch(tm, Point(1, 2, 3), Vector(sign * std::sin(tilt), 0, sign * std::cos(tilt)), 1.0,
+                             0.7, 300);
       EXPECT_NEAR(FAS::normalized_flux(tm, uniform), std::abs(std::cos(tilt)), 1e-12) << "tilt " << tilt;
       auto flux = tm.add_property_map<Mesh::Face_index, double>("f:flux", 0).first;
       FAS::compute_face_normalized_flux(tm, uniform, flux);
@@ -52,8 +52,8 @@ TEST(Measure, FluxIsAreaWeightedAndSkipsFacesWithoutASample)
   double orthogonal_area = 0, sampled_area = 0;
   for (auto f : tm.faces()) {
     const auto h = tm.halfedge(f);
-    const double cx = (tm.point(tm.source(h)).x() + tm.point(tm.target(h)).x() +
-                       tm.point(tm.target(tm.next(h))).x()) / 3;
+    const double cx =
+        (tm.point(tm.source(h)).x() + tm.point(tm.target(h)).x() + tm.point(tm.target(tm.next(h))).x()) / 3;
     const double area = CGAL::Polygon_mesh_processing::face_area(f, tm);
     if (cx < 0.25)
       sampled_area += area;

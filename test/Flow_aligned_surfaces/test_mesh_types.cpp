@@ -112,7 +112,8 @@ std::vector<std::array<double, 3>> positions(const Mesh& tm)
   return result;
 }
 
-double largest_distance(const std::vector<std::array<double, 3>>& a, const std::vector<std::array<double, 3>>& b)
+double largest_distance(const std::vector<std::array<double, 3>>& a,
+                        const std::vector<std::array<double, 3>>& b)
 {
   double largest = 0;
   for (std::size_t i = 0; i < a.size(); ++i)
@@ -130,9 +131,11 @@ struct Problem {
 };
 
 // Orthogonal in a point source: the patch becomes a piece of a sphere.
-const Problem orthogonal_problem{Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 1000, FAS::Alignment::ORTHOGONAL};
+const Problem orthogonal_problem{Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 1000,
+                                 FAS::Alignment::ORTHOGONAL};
 // Tangential in the helical flow: the patch becomes a piece of a cylinder around z.
-const Problem tangential_problem{Point(1.0, 0.2, 0.0), Vector(1.0, 0.3, 0.2), 0.8, 1000, FAS::Alignment::TANGENTIAL};
+const Problem tangential_problem{Point(1.0, 0.2, 0.0), Vector(1.0, 0.3, 0.2), 0.8, 1000,
+                                 FAS::Alignment::TANGENTIAL};
 
 struct Outcome {
   std::vector<std::array<double, 3>> initial, final;
@@ -170,7 +173,8 @@ void expect_meaningful_reference(const Problem& problem, const Outcome& referenc
   EXPECT_GT(largest_distance(reference.initial, reference.final), 1e-2 * problem.size);
 }
 
-void expect_same_outcome(const Problem& problem, const Outcome& reference, const Outcome& other, double tolerance)
+void expect_same_outcome(const Problem& problem, const Outcome& reference, const Outcome& other,
+                         double tolerance)
 {
   ASSERT_EQ(other.number_of_vertices, reference.number_of_vertices);
   ASSERT_EQ(other.number_of_faces, reference.number_of_faces);
@@ -185,7 +189,8 @@ void expect_same_outcome(const Problem& problem, const Outcome& reference, const
 }
 
 template <class Mesh>
-class MeshTypes : public ::testing::Test {};
+class MeshTypes : public ::testing::Test {
+};
 
 using Mesh_types = ::testing::Types<Polyhedron_with_ids, Polyhedron
 #ifdef FAS_HAVE_OPENMESH
@@ -222,7 +227,8 @@ TYPED_TEST(MeshTypes, InteractiveDeformationWithRigidMoveMatchesSurfaceMesh)
     FAS::make_planar_patch(tm, Point(0, 0.1, 1.5), Vector(0.2, -0.3, 1.0), 0.8, 0.8, 500,
                            CGAL::parameters::vertex_point_map(Mesh_access<Mesh>::vpm(tm)));
     FAS::Flow_aligned_deformation<Mesh, FAS::Point_source_flow<K>, Vpm> deformation(
-        tm, source, FAS::Alignment::ORTHOGONAL, CGAL::parameters::vertex_point_map(Mesh_access<Mesh>::vpm(tm)));
+        tm, source, FAS::Alignment::ORTHOGONAL,
+        CGAL::parameters::vertex_point_map(Mesh_access<Mesh>::vpm(tm)));
     deformation.step();
     deformation.rotate(Vector(1, 0, 0), 0.3);
     const FAS::Alignment_report report = deformation.run();
@@ -252,7 +258,8 @@ TEST(MeshTypesOpenMesh, DefaultFloatTriMeshAlignsThroughCGALsVertexPointMap)
   OpenMesh_float tm;
   FAS::make_planar_patch(tm, problem.center, problem.normal, problem.size, problem.size, problem.faces);
   Surface_mesh reference;
-  FAS::make_planar_patch(reference, problem.center, problem.normal, problem.size, problem.size, problem.faces);
+  FAS::make_planar_patch(reference, problem.center, problem.normal, problem.size, problem.size,
+                         problem.faces);
   const auto initial = positions(tm);
   ASSERT_EQ(initial.size(), num_vertices(reference));
   // The reference starts from the float-rounded points, read back from OpenMesh (a float cast

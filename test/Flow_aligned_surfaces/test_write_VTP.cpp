@@ -67,7 +67,8 @@ TEST(WriteVTP, MeshAndArraysReadBack)
                                  CGAL::parameters::default_values(), &error))
       << error;
   const std::string xml = read_file(path);
-  EXPECT_NE(xml.find("NumberOfPoints=\"" + std::to_string(tm.number_of_vertices()) + "\""), std::string::npos);
+  EXPECT_NE(xml.find("NumberOfPoints=\"" + std::to_string(tm.number_of_vertices()) + "\""),
+            std::string::npos);
   EXPECT_NE(xml.find("NumberOfPolys=\"" + std::to_string(tm.number_of_faces()) + "\""), std::string::npos);
 
   const auto points = data_array(xml, "<DataArray type=\"Float64\" NumberOfComponents=\"3\"");
@@ -97,7 +98,9 @@ TEST(WriteVTP, FailureLeavesExistingFileAndNamesTheProblem)
   Mesh tm;
   FAS::make_planar_patch(tm, K::Point_3(0, 0, 0), K::Vector_3(0, 0, 1), 1, 1, 20);
   const auto path = scratch("keep.vtp");
-  { std::ofstream(path) << "precious"; }
+  {
+    std::ofstream(path) << "precious";
+  }
   std::string error;
   EXPECT_FALSE(FAS::IO::write_VTP(path.string(), tm, {{"short", 1, {1.0, 2.0}}}, {},
                                   CGAL::parameters::default_values(), &error));
@@ -106,7 +109,8 @@ TEST(WriteVTP, FailureLeavesExistingFileAndNamesTheProblem)
   EXPECT_EQ(read_file(path), "precious");
 
   const auto unwritable = scratch("no_such_folder") / "x.vtp";
-  EXPECT_FALSE(FAS::IO::write_VTP(unwritable.string(), tm, {}, {}, CGAL::parameters::default_values(), &error));
+  EXPECT_FALSE(
+      FAS::IO::write_VTP(unwritable.string(), tm, {}, {}, CGAL::parameters::default_values(), &error));
   EXPECT_NE(error.find("cannot open"), std::string::npos) << error;
 }
 

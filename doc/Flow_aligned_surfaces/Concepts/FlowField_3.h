@@ -55,8 +55,7 @@ The analytic flows are declared in `<CGAL/Flow_aligned_surfaces/analytic_flow_fi
 
 \sa `UnsteadyFlowField_3`
 */
-class FlowField_3
-{
+class FlowField_3 {
 public:
   /// \name Creation
   /// @{

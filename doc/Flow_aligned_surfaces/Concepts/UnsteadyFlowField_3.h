@@ -19,8 +19,7 @@ unsteady flow.
 
 \sa `FlowField_3`
 */
-class UnsteadyFlowField_3
-{
+class UnsteadyFlowField_3 {
 public:
   /// \name Creation
   /// @{

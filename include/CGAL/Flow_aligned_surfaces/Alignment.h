@@ -23,17 +23,18 @@ enum class Alignment {
 /// What one iteration of `Flow_aligned_deformation` did.  The flux is that of the surface the
 /// iteration started from (it is measured from the samples the iteration takes anyway).
 struct Iteration_report {
-  std::size_t iteration = 0;           ///< 1 for the first iteration since construction
-  double normalized_flux = 0;          ///< f_n of the surface before the iteration (see `normalized_flux()`)
-  double max_rotation_angle = 0;       ///< the largest alignment rotation requested, before clamping to η (radians)
-  double max_vertex_step = 0;          ///< the largest vertex displacement, relative to the bounding-box diagonal
-  std::size_t number_of_folds = 0;     ///< interior edges whose dihedral angle exceeded θmax
+  std::size_t iteration = 0;     ///< 1 for the first iteration since construction
+  double normalized_flux = 0;    ///< f_n of the surface before the iteration (see `normalized_flux()`)
+  double max_rotation_angle = 0; ///< the largest alignment rotation requested, before clamping to η (radians)
+  double max_vertex_step = 0;    ///< the largest vertex displacement, relative to the bounding-box diagonal
+  std::size_t number_of_folds = 0;           ///< interior edges whose dihedral angle exceeded θmax
   std::size_t number_of_outside_samples = 0; ///< faces whose centroid is outside the domain (`T = I`)
-  std::size_t number_of_invalid_samples = 0; ///< faces where the field returned NaN or infinite values (treated as outside)
-  std::size_t number_of_zero_samples = 0;    ///< faces where the field vanishes (`T = I`)
-  double gradient_transformation_ms = 0;     ///< GTRANSF: sampling, local transformations and right-hand side
-  double solve_ms = 0;                       ///< SOLVE: the back-substitutions
-  bool converged = false;                    ///< whether this iteration met a stopping rule
+  std::size_t number_of_invalid_samples =
+      0; ///< faces where the field returned NaN or infinite values (treated as outside)
+  std::size_t number_of_zero_samples = 0; ///< faces where the field vanishes (`T = I`)
+  double gradient_transformation_ms = 0;  ///< GTRANSF: sampling, local transformations and right-hand side
+  double solve_ms = 0;                    ///< SOLVE: the back-substitutions
+  bool converged = false;                 ///< whether this iteration met a stopping rule
 };
 
 /// \ingroup PkgFlowAlignedSurfacesRef

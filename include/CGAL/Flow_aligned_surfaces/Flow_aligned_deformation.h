@@ -332,7 +332,8 @@ public:
     report.max_vertex_step = diagonal > 0 ? (next - x).rowwise().norm().maxCoeff() / diagonal : 0;
     internal::write_positions(next, m_vertices, m_vpm, m_gt);
 
-    report.gradient_transformation_ms = std::chrono::duration<double, std::milli>(transformed - start).count();
+    report.gradient_transformation_ms =
+        std::chrono::duration<double, std::milli>(transformed - start).count();
     report.solve_ms = std::chrono::duration<double, std::milli>(solved - transformed).count();
     // The paper's rule (every rotation below epsilon; a fold correction is a rotation too), or
     // the practical one: on curved targets the requested rotations stall at a floor of about
@@ -349,7 +350,10 @@ public:
   Iterates until an iteration converges or `number_of_iterations` (given at construction)
   iterations were made.  The report's flux is that of the final surface.
   */
-  Alignment_report run() { return run(m_max_iterations); }
+  Alignment_report run()
+  {
+    return run(m_max_iterations);
+  }
 
   /// Same as `run()` with at most `max_iterations` iterations.
   Alignment_report run(std::size_t max_iterations)
@@ -412,19 +416,40 @@ public:
   /// @{
 
   /// The surface.
-  const TriangleMesh& mesh() const { return m_tm; }
+  const TriangleMesh& mesh() const
+  {
+    return m_tm;
+  }
   /// The alignment target.
-  Alignment alignment() const { return m_alignment; }
+  Alignment alignment() const
+  {
+    return m_alignment;
+  }
   /// Changes the alignment target; the factorization is kept.
-  void set_alignment(Alignment alignment) { m_alignment = alignment; }
+  void set_alignment(Alignment alignment)
+  {
+    m_alignment = alignment;
+  }
   /// The flow field.
-  const FlowField& field() const { return m_field; }
+  const FlowField& field() const
+  {
+    return m_field;
+  }
   /// Iterations performed since construction.
-  std::size_t number_of_iterations() const { return m_number_of_iterations; }
+  std::size_t number_of_iterations() const
+  {
+    return m_number_of_iterations;
+  }
   /// Factorizations of \f$ L + W \f$ performed since construction (one, unless the connectivity changed).
-  std::size_t number_of_factorizations() const { return m_number_of_factorizations; }
+  std::size_t number_of_factorizations() const
+  {
+    return m_number_of_factorizations;
+  }
   /// The report of the last iteration.
-  const Iteration_report& last_report() const { return m_last_report; }
+  const Iteration_report& last_report() const
+  {
+    return m_last_report;
+  }
   /// The normalized flux of the current surface (one more sampling of the field).
   double current_normalized_flux() const
   {
@@ -437,8 +462,8 @@ private:
   static void check_parameter(const char* name, double value, bool valid)
   {
     if (!valid || !std::isfinite(value))
-      throw std::invalid_argument(std::string("Flow_aligned_deformation: parameter ") + name +
-                                  " = " + std::to_string(value) + " is out of range");
+      throw std::invalid_argument(std::string("Flow_aligned_deformation: parameter ") + name + " = " +
+                                  std::to_string(value) + " is out of range");
   }
 
   static Eigen::Vector3d to_eigen(const Vector_3& v)
@@ -484,7 +509,8 @@ private:
     auto construct_point = m_gt.construct_point_3_object();
     for (std::size_t j = begin; j < end; ++j) {
       const internal::Reference_face& face = m_ops.faces[j];
-      const Eigen::Vector3d a = x.row(face.vertices[0]), b = x.row(face.vertices[1]), c = x.row(face.vertices[2]);
+      const Eigen::Vector3d a = x.row(face.vertices[0]), b = x.row(face.vertices[1]),
+                            c = x.row(face.vertices[2]);
       const Eigen::Vector3d cross = (b - a).cross(c - a);
       const double twice_area = cross.norm();
       Eigen::Matrix3d& t = m_transforms[j];
@@ -500,9 +526,15 @@ private:
       const internal::Flow_sample sample =
           internal::sample_flow(m_field, construct_point(centroid.x(), centroid.y(), centroid.z()));
       switch (sample.kind) {
-      case internal::Sample_kind::OUTSIDE: ++pass.outside; break;
-      case internal::Sample_kind::INVALID: ++pass.invalid; break;
-      case internal::Sample_kind::ZERO: ++pass.zero; break;
+      case internal::Sample_kind::OUTSIDE:
+        ++pass.outside;
+        break;
+      case internal::Sample_kind::INVALID:
+        ++pass.invalid;
+        break;
+      case internal::Sample_kind::ZERO:
+        ++pass.zero;
+        break;
       case internal::Sample_kind::VALID: {
         const double area = 0.5 * twice_area;
         pass.flux += area * std::abs(normal.dot(sample.direction));
@@ -576,8 +608,10 @@ private:
     std::vector<Eigen::Vector3d> centroid(m_ops.faces.size());
     for (std::size_t j = 0; j < m_ops.faces.size(); ++j) {
       const auto& f = m_ops.faces[j];
-      centroid[j] = (reference.row(f.vertices[0]) + reference.row(f.vertices[1]) + reference.row(f.vertices[2]))
-                        .transpose() / 3;
+      centroid[j] =
+          (reference.row(f.vertices[0]) + reference.row(f.vertices[1]) + reference.row(f.vertices[2]))
+              .transpose() /
+          3;
       barycenter[m_arrays.face_component[j]] += f.area * centroid[j];
       component_area[m_arrays.face_component[j]] += f.area;
     }
@@ -586,7 +620,8 @@ private:
     // Symmetric patches have several faces at the same distance; a tolerance makes the choice
     // (the lowest index among them) independent of rounding, so equal inputs in other mesh
     // types or precisions anchor the same face.
-    const double tolerance = 1e-10 * (reference.colwise().maxCoeff() - reference.colwise().minCoeff()).squaredNorm();
+    const double tolerance =
+        1e-10 * (reference.colwise().maxCoeff() - reference.colwise().minCoeff()).squaredNorm();
     for (std::size_t j = 0; j < m_ops.faces.size(); ++j) {
       const std::size_t c = m_arrays.face_component[j];
       const double d = (centroid[j] - barycenter[c] / component_area[c]).squaredNorm();
@@ -609,7 +644,8 @@ private:
 
     const auto start = std::chrono::steady_clock::now();
     internal::factor_or_throw(m_solver, system, "L + W");
-    m_factor_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    m_factor_ms +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     ++m_number_of_factorizations;
   }
 

@@ -55,8 +55,7 @@ namespace Flow_aligned_surfaces {
 ///
 /// \sa `sample_on_grid()`
 template <typename GeomTraits>
-class Regular_grid_flow_field_3
-{
+class Regular_grid_flow_field_3 {
 public:
   /// \name Types
   /// @{
@@ -94,38 +93,38 @@ public:
   Regular_grid_flow_field_3(const Point_3& origin, const FT& hx, const FT& hy, const FT& hz,
                             const Dimensions& dimensions, std::vector<float> values,
                             std::vector<unsigned char> mask = std::vector<unsigned char>())
-    : Regular_grid_flow_field_3(origin, Vector_3(hx, hy, hz), dimensions, std::move(values),
-                                std::move(mask))
-  {}
+      : Regular_grid_flow_field_3(origin, Vector_3(hx, hy, hz), dimensions, std::move(values),
+                                  std::move(mask))
+  {
+  }
 
   /// creates the field from its node values, with the spacings `(hx, hy, hz)` given as the
   /// components of `spacing`; see the constructor above.
-  Regular_grid_flow_field_3(const Point_3& origin, const Vector_3& spacing,
-                            const Dimensions& dimensions, std::vector<float> values,
+  Regular_grid_flow_field_3(const Point_3& origin, const Vector_3& spacing, const Dimensions& dimensions,
+                            std::vector<float> values,
                             std::vector<unsigned char> mask = std::vector<unsigned char>())
-    : origin_(origin), spacing_(spacing), n_(dimensions)
+      : origin_(origin), spacing_(spacing), n_(dimensions)
   {
     const std::size_t nodes = checked_number_of_nodes(origin, spacing, dimensions);
     // Compared before anything is read or allocated: the sizes come from the caller.
-    if(values.size() / 3 != nodes || values.size() % 3 != 0) {
+    if (values.size() / 3 != nodes || values.size() % 3 != 0) {
       std::ostringstream msg;
-      msg << "Regular_grid_flow_field_3: values.size() is " << values.size()
-          << " but the dimensions " << dimensions_string(dimensions) << " need 3*nx*ny*nz = "
-          << 3 * nodes;
+      msg << "Regular_grid_flow_field_3: values.size() is " << values.size() << " but the dimensions "
+          << dimensions_string(dimensions) << " need 3*nx*ny*nz = " << 3 * nodes;
       throw std::invalid_argument(msg.str());
     }
-    if(!mask.empty() && mask.size() != nodes) {
+    if (!mask.empty() && mask.size() != nodes) {
       std::ostringstream msg;
-      msg << "Regular_grid_flow_field_3: mask.size() is " << mask.size()
-          << " but the dimensions " << dimensions_string(dimensions)
-          << " need nx*ny*nz = " << nodes << " (or an empty mask for no mask)";
+      msg << "Regular_grid_flow_field_3: mask.size() is " << mask.size() << " but the dimensions "
+          << dimensions_string(dimensions) << " need nx*ny*nz = " << nodes
+          << " (or an empty mask for no mask)";
       throw std::invalid_argument(msg.str());
     }
-    for(std::size_t v = 0; v < nodes; ++v) {
+    for (std::size_t v = 0; v < nodes; ++v) {
       float* c = values.data() + 3 * v;
-      if(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]))
+      if (std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]))
         continue;
-      if(!mask.empty() && mask[v] == 0) {
+      if (!mask.empty() && mask[v] == 0) {
         // A solid node can still get a zero weight in the interpolation (on the faces of fluid
         // cells), and 0 * NaN would poison the result.
         c[0] = c[1] = c[2] = 0.f;
@@ -134,14 +133,14 @@ public:
       const std::size_t i = v % n_[0], j = (v / n_[0]) % n_[1], k = v / (n_[0] * n_[1]);
       std::ostringstream msg;
       msg << "Regular_grid_flow_field_3: values of fluid node (" << i << ", " << j << ", " << k
-          << ") (values[" << 3 * v << ".." << 3 * v + 2 << "]) are (" << c[0] << ", " << c[1]
-          << ", " << c[2] << "); expected finite numbers";
+          << ") (values[" << 3 * v << ".." << 3 * v + 2 << "]) are (" << c[0] << ", " << c[1] << ", " << c[2]
+          << "); expected finite numbers";
       throw std::invalid_argument(msg.str());
     }
 
     values_ = std::make_shared<const std::vector<float>>(std::move(values));
     v_ = values_->data();
-    if(!mask.empty()) {
+    if (!mask.empty()) {
       mask_ = std::make_shared<const std::vector<unsigned char>>(std::move(mask));
       m_ = mask_->data();
     }
@@ -150,7 +149,7 @@ public:
                          CGAL::to_double(origin.z())};
     const double h[3] = {CGAL::to_double(spacing.x()), CGAL::to_double(spacing.y()),
                          CGAL::to_double(spacing.z())};
-    for(int a = 0; a < 3; ++a) {
+    for (int a = 0; a < 3; ++a) {
       lo_[a] = o[a];
       h_[a] = h[a];
       hi_[a] = node_coordinate(o[a], h[a], n_[a] - 1);
@@ -169,17 +168,16 @@ public:
   /// the closed box or its interpolation stencil touches a solid node with a nonzero weight.
   std::optional<Vector_3> operator()(const Point_3& p) const
   {
-    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                         CGAL::to_double(p.z())};
+    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     // Written so that NaN coordinates fail too.  The box test is done in world coordinates so
     // that it agrees exactly with `bbox()`.
-    if(!(x[0] >= lo_[0] && x[0] <= hi_[0] && x[1] >= lo_[1] && x[1] <= hi_[1] &&
-         x[2] >= lo_[2] && x[2] <= hi_[2]))
+    if (!(x[0] >= lo_[0] && x[0] <= hi_[0] && x[1] >= lo_[1] && x[1] <= hi_[1] && x[2] >= lo_[2] &&
+          x[2] <= hi_[2]))
       return std::nullopt;
 
     std::size_t c[3];
     double f[3], g[3];
-    for(int a = 0; a < 3; ++a) {
+    for (int a = 0; a < 3; ++a) {
       const double t = (x[a] - lo_[a]) * inv_h_[a]; // >= 0, so truncation is floor
       // The upper boundary belongs to the last cell; rounding in t can only overshoot by ulps,
       // which the clamp on f absorbs.
@@ -197,19 +195,19 @@ public:
                                    base + stride_z_ + stride_y_,
                                    base + stride_z_ + stride_y_ + 1};
 
-    if(m_ != nullptr) {
+    if (m_ != nullptr) {
       // Only corners with a nonzero weight count, so that closed fluid cells are inside even
       // where they touch solid cells.
-      for(int q = 0; q < 8; ++q) {
-        if(m_[corner[q]] == 0 && ((q & 1) ? f[0] : g[0]) != 0. &&
-           ((q & 2) ? f[1] : g[1]) != 0. && ((q & 4) ? f[2] : g[2]) != 0.)
+      for (int q = 0; q < 8; ++q) {
+        if (m_[corner[q]] == 0 && ((q & 1) ? f[0] : g[0]) != 0. && ((q & 2) ? f[1] : g[1]) != 0. &&
+            ((q & 4) ? f[2] : g[2]) != 0.)
           return std::nullopt;
       }
     }
 
     // The (1-f)·a + f·b form returns a node's value exactly when f is 0 or 1.
     double r[3];
-    for(int d = 0; d < 3; ++d) {
+    for (int d = 0; d < 3; ++d) {
       const double x00 = g[0] * v_[3 * corner[0] + d] + f[0] * v_[3 * corner[1] + d];
       const double x10 = g[0] * v_[3 * corner[2] + d] + f[0] * v_[3 * corner[3] + d];
       const double x01 = g[0] * v_[3 * corner[4] + d] + f[0] * v_[3 * corner[5] + d];
@@ -298,45 +296,40 @@ public:
     std::vector<unsigned char> mask(nodes, 1);
     bool all_fluid = true;
     std::size_t v = 0;
-    for(std::size_t k = 0; k < dimensions[2]; ++k)
-      for(std::size_t j = 0; j < dimensions[1]; ++j)
-        for(std::size_t i = 0; i < dimensions[0]; ++i, ++v) {
+    for (std::size_t k = 0; k < dimensions[2]; ++k)
+      for (std::size_t j = 0; j < dimensions[1]; ++j)
+        for (std::size_t i = 0; i < dimensions[0]; ++i, ++v) {
           // Same node positions as `node_point()`, so queries at nodes return these samples.
           const Point_3 p(FT(node_coordinate(o[0], h[0], i)), FT(node_coordinate(o[1], h[1], j)),
                           FT(node_coordinate(o[2], h[2], k)));
           const std::optional<Vector_3> s = field(p);
-          const double w[3] = {s ? CGAL::to_double(s->x()) : 0.,
-                               s ? CGAL::to_double(s->y()) : 0.,
+          const double w[3] = {s ? CGAL::to_double(s->x()) : 0., s ? CGAL::to_double(s->y()) : 0.,
                                s ? CGAL::to_double(s->z()) : 0.};
-          if(!s || !std::isfinite(w[0]) || !std::isfinite(w[1]) || !std::isfinite(w[2])) {
+          if (!s || !std::isfinite(w[0]) || !std::isfinite(w[1]) || !std::isfinite(w[2])) {
             mask[v] = 0;
             all_fluid = false;
             continue;
           }
-          for(int d = 0; d < 3; ++d) {
+          for (int d = 0; d < 3; ++d) {
             const float fv = static_cast<float>(w[d]);
-            if(!std::isfinite(fv)) {
+            if (!std::isfinite(fv)) {
               std::ostringstream msg;
-              msg << "sample_on_grid: the field value " << w[d] << " at node (" << i << ", " << j
-                  << ", " << k << ") does not fit in a 32-bit float";
+              msg << "sample_on_grid: the field value " << w[d] << " at node (" << i << ", " << j << ", " << k
+                  << ") does not fit in a 32-bit float";
               throw std::invalid_argument(msg.str());
             }
             values[3 * v + d] = fv;
           }
         }
-    if(all_fluid)
+    if (all_fluid)
       mask.clear();
-    return Regular_grid_flow_field_3(origin, spacing, dimensions, std::move(values),
-                                     std::move(mask));
+    return Regular_grid_flow_field_3(origin, spacing, dimensions, std::move(values), std::move(mask));
   }
 
 private:
   // The one formula for node positions, shared by the box, `node_point()` and `sample()` so
   // that they agree to the last bit.
-  static double node_coordinate(double o, double h, std::size_t i)
-  {
-    return o + static_cast<double>(i) * h;
-  }
+  static double node_coordinate(double o, double h, std::size_t i) { return o + static_cast<double>(i) * h; }
 
   std::size_t node_index(std::size_t i, std::size_t j, std::size_t k) const
   {
@@ -356,18 +349,18 @@ private:
                                              const Dimensions& dimensions)
   {
     static const char* const axis[3] = {"x", "y", "z"};
-    for(int a = 0; a < 3; ++a) {
-      if(dimensions[a] < 2) {
+    for (int a = 0; a < 3; ++a) {
+      if (dimensions[a] < 2) {
         std::ostringstream msg;
-        msg << "Regular_grid_flow_field_3: dimensions[" << a << "] (n" << axis[a] << ") is "
-            << dimensions[a] << "; expected at least 2 nodes along each axis";
+        msg << "Regular_grid_flow_field_3: dimensions[" << a << "] (n" << axis[a] << ") is " << dimensions[a]
+            << "; expected at least 2 nodes along each axis";
         throw std::invalid_argument(msg.str());
       }
     }
     const double h[3] = {CGAL::to_double(spacing.x()), CGAL::to_double(spacing.y()),
                          CGAL::to_double(spacing.z())};
-    for(int a = 0; a < 3; ++a) {
-      if(!(std::isfinite(h[a]) && h[a] > 0.)) {
+    for (int a = 0; a < 3; ++a) {
+      if (!(std::isfinite(h[a]) && h[a] > 0.)) {
         std::ostringstream msg;
         msg << "Regular_grid_flow_field_3: spacing h" << axis[a] << " is " << h[a]
             << "; expected a positive finite number";
@@ -376,20 +369,20 @@ private:
     }
     const double o[3] = {CGAL::to_double(origin.x()), CGAL::to_double(origin.y()),
                          CGAL::to_double(origin.z())};
-    for(int a = 0; a < 3; ++a) {
+    for (int a = 0; a < 3; ++a) {
       const double far_corner = node_coordinate(o[a], h[a], dimensions[a] - 1);
-      if(!std::isfinite(o[a]) || !std::isfinite(far_corner)) {
+      if (!std::isfinite(o[a]) || !std::isfinite(far_corner)) {
         std::ostringstream msg;
-        msg << "Regular_grid_flow_field_3: origin." << axis[a] << " is " << o[a]
-            << " and the far corner " << far_corner << "; expected finite coordinates";
+        msg << "Regular_grid_flow_field_3: origin." << axis[a] << " is " << o[a] << " and the far corner "
+            << far_corner << "; expected finite coordinates";
         throw std::invalid_argument(msg.str());
       }
     }
     const std::size_t max_nodes =
         (std::min)(std::vector<float>().max_size() / 3, std::vector<unsigned char>().max_size());
     std::size_t nodes = dimensions[0];
-    for(int a = 1; a < 3; ++a) {
-      if(nodes > max_nodes / dimensions[a]) {
+    for (int a = 1; a < 3; ++a) {
+      if (nodes > max_nodes / dimensions[a]) {
         std::ostringstream msg;
         msg << "Regular_grid_flow_field_3: dimensions " << dimensions_string(dimensions)
             << " have more nodes than a std::vector can hold (at most " << max_nodes << ")";
@@ -437,8 +430,8 @@ sample_on_grid(const FlowField& field, const Point_3& origin,
                const typename Kernel_traits<Point_3>::Kernel::Vector_3& spacing,
                const std::array<std::size_t, 3>& dimensions)
 {
-  return Regular_grid_flow_field_3<typename Kernel_traits<Point_3>::Kernel>::sample(
-      field, origin, spacing, dimensions);
+  return Regular_grid_flow_field_3<typename Kernel_traits<Point_3>::Kernel>::sample(field, origin, spacing,
+                                                                                    dimensions);
 }
 
 } // namespace Flow_aligned_surfaces

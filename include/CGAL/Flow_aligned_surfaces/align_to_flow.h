@@ -57,8 +57,9 @@ Alignment_report align_to_flow(TriangleMesh& tm, const FlowField& field, Alignme
 {
   using Vertex_point_map = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::type;
   using Geom_traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
-  using Solver_parameter = typename CGAL::internal_np::Lookup_named_param_def<
-      CGAL::internal_np::sparse_linear_solver_t, NamedParameters, CGAL::Default>::type;
+  using Solver_parameter =
+      typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::sparse_linear_solver_t,
+                                                         NamedParameters, CGAL::Default>::type;
   Flow_aligned_deformation<TriangleMesh, FlowField, Vertex_point_map, Geom_traits, Solver_parameter>
       deformation(tm, field, alignment, np);
   return deformation.run();

@@ -47,8 +47,7 @@ Vector_3 make_vector(double x, double y, double z)
 // Potential flow around a sphere of radius `R` centered at the origin with free stream `U` along
 // +z.  It is both `Sphere_potential_flow` and the exterior of `Hill_spherical_vortex`, so one
 // formula serves both.
-inline std::array<double, 3> sphere_potential_flow_velocity(double x, double y, double z,
-                                                            double R, double U)
+inline std::array<double, 3> sphere_potential_flow_velocity(double x, double y, double z, double R, double U)
 {
   const double r2 = x * x + y * y + z * z;
   const double r = std::sqrt(r2);
@@ -58,8 +57,7 @@ inline std::array<double, 3> sphere_potential_flow_velocity(double x, double y, 
   return {k * x, k * y, U * (1. - R3_over_r3) + 1.5 * U * R3_over_r5 * (x * x + y * y)};
 }
 
-inline double sphere_potential_flow_stokes_stream_function(double x, double y, double z, double R,
-                                                           double U)
+inline double sphere_potential_flow_stokes_stream_function(double x, double y, double z, double R, double U)
 {
   const double r = std::sqrt(x * x + y * y + z * z);
   const double R_over_r = R / r;
@@ -78,8 +76,7 @@ inline double sphere_potential_flow_stokes_stream_function(double x, double y, d
 /// \tparam GeomTraits a model of `Kernel`
 /// \cgalModels `FlowField_3`
 template <typename GeomTraits>
-class Uniform_flow
-{
+class Uniform_flow {
 public:
   /// The number type.
   using FT = typename GeomTraits::FT;
@@ -122,8 +119,7 @@ private:
 /// \tparam GeomTraits a model of `Kernel`
 /// \cgalModels `FlowField_3`
 template <typename GeomTraits>
-class Linear_flow
-{
+class Linear_flow {
 public:
   /// The number type.
   using FT = typename GeomTraits::FT;
@@ -141,8 +137,8 @@ public:
   explicit Linear_flow(const Matrix& a) : m_a(a) {}
 
   /// builds \f$ A \f$ from its nine entries, row by row.
-  Linear_flow(const FT& a00, const FT& a01, const FT& a02, const FT& a10, const FT& a11,
-              const FT& a12, const FT& a20, const FT& a21, const FT& a22)
+  Linear_flow(const FT& a00, const FT& a01, const FT& a02, const FT& a10, const FT& a11, const FT& a12,
+              const FT& a20, const FT& a21, const FT& a22)
       : m_a{{{a00, a01, a02}, {a10, a11, a12}, {a20, a21, a22}}}
   {
   }
@@ -152,7 +148,7 @@ public:
   {
     const FT x[3] = {p.x(), p.y(), p.z()};
     FT v[3];
-    for(int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i)
       v[i] = m_a[i][0] * x[0] + m_a[i][1] * x[1] + m_a[i][2] * x[2];
     return Vector_3(v[0], v[1], v[2]);
   }
@@ -173,8 +169,8 @@ public:
     CGAL_precondition(has_potential());
     const FT x[3] = {p.x(), p.y(), p.z()};
     FT s(0);
-    for(int i = 0; i < 3; ++i)
-      for(int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
         s += x[i] * m_a[i][j] * x[j];
     return s / FT(2);
   }
@@ -209,8 +205,7 @@ private:
 /// \tparam GeomTraits a model of `Kernel`
 /// \cgalModels `FlowField_3`
 template <typename GeomTraits>
-class Helical_flow
-{
+class Helical_flow {
 public:
   /// The number type.
   using FT = typename GeomTraits::FT;
@@ -262,8 +257,7 @@ private:
 /// \tparam GeomTraits a model of `Kernel`
 /// \cgalModels `FlowField_3`
 template <typename GeomTraits>
-class ABC_flow
-{
+class ABC_flow {
 public:
   /// The number type.
   using FT = typename GeomTraits::FT;
@@ -275,8 +269,7 @@ public:
   /// \param a the coefficient \f$ A \f$
   /// \param b the coefficient \f$ B \f$
   /// \param c the coefficient \f$ C \f$
-  explicit ABC_flow(const FT& a = FT(std::sqrt(3.)), const FT& b = FT(std::sqrt(2.)),
-                    const FT& c = FT(1))
+  explicit ABC_flow(const FT& a = FT(std::sqrt(3.)), const FT& b = FT(std::sqrt(2.)), const FT& c = FT(1))
       : m_a(a), m_b(b), m_c(c)
   {
   }
@@ -335,8 +328,7 @@ private:
 /// \tparam GeomTraits a model of `Kernel`
 /// \cgalModels `FlowField_3`
 template <typename GeomTraits>
-class Hill_spherical_vortex
-{
+class Hill_spherical_vortex {
 public:
   /// The number type.
   using FT = typename GeomTraits::FT;
@@ -348,8 +340,7 @@ public:
   /// \param radius the radius \f$ a \f$ of the vortex
   /// \param speed the speed \f$ U \f$ of the stream at infinity
   /// \pre `radius > 0`
-  explicit Hill_spherical_vortex(const FT& radius = FT(1), const FT& speed = FT(1))
-      : m_a(radius), m_u(speed)
+  explicit Hill_spherical_vortex(const FT& radius = FT(1), const FT& speed = FT(1)) : m_a(radius), m_u(speed)
   {
     CGAL_precondition(radius > FT(0));
   }
@@ -360,7 +351,7 @@ public:
     const std::array<double, 3> x = internal::to_double_coordinates(p);
     const double a = CGAL::to_double(m_a), U = CGAL::to_double(m_u);
     const double rho2 = x[0] * x[0] + x[1] * x[1];
-    if(rho2 + x[2] * x[2] < a * a) {
+    if (rho2 + x[2] * x[2] < a * a) {
       const double k = 1.5 * U / (a * a);
       return internal::make_vector<Vector_3>(-k * x[0] * x[2], -k * x[1] * x[2],
                                              k * (2. * rho2 + x[2] * x[2] - a * a));
@@ -376,7 +367,7 @@ public:
     const double a = CGAL::to_double(m_a), U = CGAL::to_double(m_u);
     const double rho2 = x[0] * x[0] + x[1] * x[1];
     const double r2 = rho2 + x[2] * x[2];
-    if(r2 < a * a)
+    if (r2 < a * a)
       return FT(-0.75 * U * rho2 * (1. - r2 / (a * a)));
     return FT(internal::sphere_potential_flow_stokes_stream_function(x[0], x[1], x[2], a, U));
   }
@@ -401,8 +392,7 @@ private:
 /// \tparam GeomTraits a model of `Kernel`
 /// \cgalModels `FlowField_3`
 template <typename GeomTraits>
-class Point_source_flow
-{
+class Point_source_flow {
 public:
   /// The number type.
   using FT = typename GeomTraits::FT;
@@ -414,8 +404,7 @@ public:
   /// \param center the source \f$ c \f$
   /// \param strength the volume flux \f$ q \f$ through any sphere around \f$ c \f$; negative for a
   /// sink
-  explicit Point_source_flow(const Point_3& center = Point_3(CGAL::ORIGIN),
-                             const FT& strength = FT(1))
+  explicit Point_source_flow(const Point_3& center = Point_3(CGAL::ORIGIN), const FT& strength = FT(1))
       : m_c(center), m_q(strength)
   {
   }
@@ -425,12 +414,12 @@ public:
   {
     const std::array<double, 3> d = offset(p);
     const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    if(!(r2 > 0.))
+    if (!(r2 > 0.))
       return std::nullopt;
     const double k = CGAL::to_double(m_q) / (4. * CGAL_PI * r2 * std::sqrt(r2));
     const double v[3] = {k * d[0], k * d[1], k * d[2]};
     // Near the center r^3 underflows before r^2 does.
-    if(!(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])))
+    if (!(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])))
       return std::nullopt;
     return internal::make_vector<Vector_3>(v[0], v[1], v[2]);
   }
@@ -483,8 +472,7 @@ private:
 /// \tparam GeomTraits a model of `Kernel`
 /// \cgalModels `FlowField_3`
 template <typename GeomTraits>
-class Cylinder_potential_flow
-{
+class Cylinder_potential_flow {
 public:
   /// The number type.
   using FT = typename GeomTraits::FT;
@@ -508,11 +496,10 @@ public:
     const std::array<double, 3> x = internal::to_double_coordinates(p);
     const double R = CGAL::to_double(m_r), U = CGAL::to_double(m_u);
     const double rho2 = x[0] * x[0] + x[1] * x[1];
-    if(rho2 < R * R * (1. - internal::relative_wall_tolerance))
+    if (rho2 < R * R * (1. - internal::relative_wall_tolerance))
       return std::nullopt;
     const double k = U * (R * R / rho2) / rho2;
-    return internal::make_vector<Vector_3>(U - k * (x[0] * x[0] - x[1] * x[1]),
-                                           -2. * k * x[0] * x[1], 0.);
+    return internal::make_vector<Vector_3>(U - k * (x[0] * x[0] - x[1] * x[1]), -2. * k * x[0] * x[1], 0.);
   }
 
   /// returns \f$ \varphi(p) = U x (1 + R^2 / \rho^2) \f$.
@@ -569,8 +556,7 @@ private:
 /// \tparam GeomTraits a model of `Kernel`
 /// \cgalModels `FlowField_3`
 template <typename GeomTraits>
-class Sphere_potential_flow
-{
+class Sphere_potential_flow {
 public:
   /// The number type.
   using FT = typename GeomTraits::FT;
@@ -582,8 +568,7 @@ public:
   /// \param radius the radius \f$ R \f$ of the sphere
   /// \param speed the free-stream speed \f$ U \f$
   /// \pre `radius > 0`
-  explicit Sphere_potential_flow(const FT& radius = FT(1), const FT& speed = FT(1))
-      : m_r(radius), m_u(speed)
+  explicit Sphere_potential_flow(const FT& radius = FT(1), const FT& speed = FT(1)) : m_r(radius), m_u(speed)
   {
     CGAL_precondition(radius > FT(0));
   }
@@ -593,7 +578,7 @@ public:
   {
     const std::array<double, 3> x = internal::to_double_coordinates(p);
     const double R = CGAL::to_double(m_r);
-    if(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] < R * R * (1. - internal::relative_wall_tolerance))
+    if (x[0] * x[0] + x[1] * x[1] + x[2] * x[2] < R * R * (1. - internal::relative_wall_tolerance))
       return std::nullopt;
     const std::array<double, 3> v =
         internal::sphere_potential_flow_velocity(x[0], x[1], x[2], R, CGAL::to_double(m_u));
@@ -619,8 +604,8 @@ public:
   {
     const std::array<double, 3> x = internal::to_double_coordinates(p);
     CGAL_precondition(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] > 0.);
-    return FT(internal::sphere_potential_flow_stokes_stream_function(
-        x[0], x[1], x[2], CGAL::to_double(m_r), CGAL::to_double(m_u)));
+    return FT(internal::sphere_potential_flow_stokes_stream_function(x[0], x[1], x[2], CGAL::to_double(m_r),
+                                                                     CGAL::to_double(m_u)));
   }
 
   const FT& radius() const { return m_r; } ///< returns \f$ R \f$
@@ -651,8 +636,7 @@ private:
 /// \tparam GeomTraits a model of `Kernel`
 /// \cgalModels `FlowField_3`
 template <typename GeomTraits>
-class Burgers_vortex
-{
+class Burgers_vortex {
 public:
   /// The number type.
   using FT = typename GeomTraits::FT;
@@ -684,10 +668,10 @@ public:
     // Angular speed u_theta / rho; expm1 keeps it accurate near the axis, where
     // 1 - exp(-s) would cancel.
     const double s = alpha * rho2 / (2. * nu);
-    const double omega = (s > 0.) ? -std::expm1(-s) * gamma / (2. * CGAL_PI * rho2)
-                                  : gamma * alpha / (4. * CGAL_PI * nu);
-    return internal::make_vector<Vector_3>(-alpha * x[0] - omega * x[1],
-                                           -alpha * x[1] + omega * x[0], 2. * alpha * x[2]);
+    const double omega =
+        (s > 0.) ? -std::expm1(-s) * gamma / (2. * CGAL_PI * rho2) : gamma * alpha / (4. * CGAL_PI * nu);
+    return internal::make_vector<Vector_3>(-alpha * x[0] - omega * x[1], -alpha * x[1] + omega * x[0],
+                                           2. * alpha * x[2]);
   }
 
   /// returns \f$ \psi(p) = \alpha \rho^2 z \f$.
@@ -733,8 +717,7 @@ private:
 /// \tparam GeomTraits a model of `Kernel`
 /// \cgalModels `FlowField_3`
 template <typename GeomTraits>
-class Crawfis_tornado
-{
+class Crawfis_tornado {
 public:
   /// The number type.
   using FT = typename GeomTraits::FT;
@@ -751,7 +734,7 @@ public:
   {
     const std::array<double, 3> q = internal::to_double_coordinates(p);
     const double x = q[0], y = q[1], z = q[2];
-    if(!(x >= 0. && x <= 1. && y >= 0. && y <= 1. && z >= 0. && z <= 1.))
+    if (!(x >= 0. && x <= 1. && y >= 0. && y <= 1. && z >= 0. && z <= 1.))
       return std::nullopt;
     const double t = CGAL::to_double(m_time);
     const double xc = 0.5 + 0.1 * std::sin(0.04 * t + 10. * z);

@@ -69,7 +69,7 @@ inline bool patch_is_finite(const Patch_vec3& a)
 
 inline void check_patch_size(const char* function, const char* name, double value)
 {
-  if(!(value > 0) || !std::isfinite(value)) {
+  if (!(value > 0) || !std::isfinite(value)) {
     std::ostringstream os;
     os << "`" << name << "` must be positive and finite (got " << value << ")";
     throw_patch_error(function, os.str());
@@ -78,7 +78,7 @@ inline void check_patch_size(const char* function, const char* name, double valu
 
 inline void check_patch_target(const char* function, std::size_t target, std::size_t minimum)
 {
-  if(target < minimum) {
+  if (target < minimum) {
     std::ostringstream os;
     os << "`target_number_of_faces` must be at least " << minimum << " (got " << target << ")";
     throw_patch_error(function, os.str());
@@ -92,8 +92,8 @@ struct Patch_frame {
 
   Patch_vec3 point(double x, double y) const
   {
-    return {{origin[0] + x * u[0] + y * v[0], origin[1] + x * u[1] + y * v[1],
-             origin[2] + x * u[2] + y * v[2]}};
+    return {
+        {origin[0] + x * u[0] + y * v[0], origin[1] + x * u[1] + y * v[1], origin[2] + x * u[2] + y * v[2]}};
   }
 };
 
@@ -106,13 +106,13 @@ Patch_frame make_patch_frame(const char* function, const Point_3& center, const 
 
   Patch_frame f;
   f.origin = {{CGAL::to_double(center.x()), CGAL::to_double(center.y()), CGAL::to_double(center.z())}};
-  if(!patch_is_finite(f.origin))
+  if (!patch_is_finite(f.origin))
     throw_patch_error(function, "`center` has a coordinate that is not finite");
 
   const Patch_vec3 n = {
       {CGAL::to_double(normal.x()), CGAL::to_double(normal.y()), CGAL::to_double(normal.z())}};
   const double n_length = std::sqrt(patch_dot(n, n));
-  if(!patch_is_finite(n) || !(n_length > 0) || !std::isfinite(n_length))
+  if (!patch_is_finite(n) || !(n_length > 0) || !std::isfinite(n_length))
     throw_patch_error(function, "`normal` must be a non-zero vector with finite coordinates");
   f.n = {{n[0] / n_length, n[1] / n_length, n[2] / n_length}};
 
@@ -120,13 +120,13 @@ Patch_frame make_patch_frame(const char* function, const Point_3& center, const 
   // on ties), so that a normal along z gives a patch spanned by x (width) and y (height).
   Patch_vec3 a = {{0, 0, 0}};
   std::size_t least = 0;
-  for(std::size_t i = 1; i < 3; ++i)
-    if(std::abs(f.n[i]) < std::abs(f.n[least]))
+  for (std::size_t i = 1; i < 3; ++i)
+    if (std::abs(f.n[i]) < std::abs(f.n[least]))
       least = i;
   a[least] = 1;
 
   const bool has_axis = !parameters::is_default_parameter<NamedParameters, internal_np::patch_axis_t>::value;
-  if(has_axis) {
+  if (has_axis) {
     const Vector_3 axis =
         choose_parameter(get_parameter(np, internal_np::patch_axis_t()), Vector_3(CGAL::NULL_VECTOR));
     a = {{CGAL::to_double(axis.x()), CGAL::to_double(axis.y()), CGAL::to_double(axis.z())}};
@@ -136,10 +136,9 @@ Patch_frame make_patch_frame(const char* function, const Point_3& center, const 
   Patch_vec3 p = {{a[0] - a_n * f.n[0], a[1] - a_n * f.n[1], a[2] - a_n * f.n[2]}};
   const double p_length = std::sqrt(patch_dot(p, p));
   // An axis within ~1e-6 radians of the normal has no meaningful projection into the plane.
-  if(!patch_is_finite(a) || !(p_length > 1e-6 * a_length) || !std::isfinite(p_length))
-    throw_patch_error(function,
-                      "`patch_axis` must be a non-zero vector with finite coordinates that is not "
-                      "parallel to `normal`");
+  if (!patch_is_finite(a) || !(p_length > 1e-6 * a_length) || !std::isfinite(p_length))
+    throw_patch_error(function, "`patch_axis` must be a non-zero vector with finite coordinates that is not "
+                                "parallel to `normal`");
   f.u = {{p[0] / p_length, p[1] / p_length, p[2] / p_length}};
   f.v = patch_cross(f.n, f.u);
   return f;
@@ -157,25 +156,25 @@ struct Patch_soup {
 // units (exact integers here, so that ties are decided the same way on every platform).
 // The shorter diagonal wins (the usual rule for strips; it keeps the triangles fat).
 inline void triangulate_row_strip(const std::vector<std::size_t>& bottom,
-                                  const std::vector<long long>& bottom_x,
-                                  const std::vector<std::size_t>& top,
+                                  const std::vector<long long>& bottom_x, const std::vector<std::size_t>& top,
                                   const std::vector<long long>& top_x,
                                   std::vector<std::array<std::size_t, 3>>& triangles)
 {
   std::size_t i = 0, j = 0;
   const std::size_t ie = bottom.size() - 1, je = top.size() - 1;
-  while(i < ie || j < je) {
+  while (i < ie || j < je) {
     bool advance_bottom;
-    if(i == ie)
+    if (i == ie)
       advance_bottom = false;
-    else if(j == je)
+    else if (j == je)
       advance_bottom = true;
     else
       advance_bottom = std::abs(bottom_x[i + 1] - top_x[j]) <= std::abs(top_x[j + 1] - bottom_x[i]);
-    if(advance_bottom) {
+    if (advance_bottom) {
       triangles.push_back({{bottom[i], bottom[i + 1], top[j]}});
       ++i;
-    } else {
+    }
+    else {
       triangles.push_back({{bottom[i], top[j + 1], top[j]}});
       ++j;
     }
@@ -201,18 +200,18 @@ inline std::array<std::size_t, 2> choose_planar_lattice(double width, double hei
   std::array<std::size_t, 2> best = {{1, 1}};
   int best_class = 3;
   double best_cost = std::numeric_limits<double>::infinity();
-  for(std::size_t m = 1; 2 * m <= target + target / 5 + 2; ++m) {
+  for (std::size_t m = 1; 2 * m <= target + target / 5 + 2; ++m) {
     const double half = (T / static_cast<double>(m) + 1) / 2;
     const std::size_t n_lo = half < 2 ? std::size_t(2) : static_cast<std::size_t>(std::floor(half));
     const std::size_t candidates[3] = {1, n_lo, n_lo + 1};
-    for(std::size_t n : candidates) {
+    for (std::size_t n : candidates) {
       const double F = static_cast<double>(planar_lattice_faces(m, n));
       const double count_error = std::abs(F - T) / T;
       const double ratio = 2 * (height / static_cast<double>(m)) / (width / static_cast<double>(n));
       const double shape_error = std::abs(std::log(ratio / sqrt3));
       const int c = count_error > 0.1 ? 2 : (ratio < 1.16 || ratio > 3.4 ? 1 : 0);
       const double cost = c == 2 ? count_error : count_error + 0.25 * shape_error;
-      if(c < best_class || (c == best_class && cost < best_cost)) {
+      if (c < best_class || (c == best_class && cost < best_cost)) {
         best_class = c;
         best_cost = cost;
         best = {{m, n}};
@@ -229,10 +228,10 @@ inline Patch_soup make_planar_patch_soup(double width, double height, std::size_
 
   // Abscissas in units of s/2: even rows 0, 2, ..., 2n; odd rows 0, 3, 5, ..., 2n-3, 2n.
   std::vector<long long> even_x, odd_x;
-  for(std::size_t k = 0; k <= n; ++k)
+  for (std::size_t k = 0; k <= n; ++k)
     even_x.push_back(static_cast<long long>(2 * k));
   odd_x.push_back(0);
-  for(std::size_t k = 1; k + 1 < n; ++k)
+  for (std::size_t k = 1; k + 1 < n; ++k)
     odd_x.push_back(static_cast<long long>(2 * k + 1));
   odd_x.push_back(static_cast<long long>(2 * n));
 
@@ -242,23 +241,23 @@ inline Patch_soup make_planar_patch_soup(double width, double height, std::size_
 
   // Ends are set explicitly so that the sides of the rectangle are exact.
   auto coordinate = [](long long i, long long end, double length) {
-    if(i == 0)
+    if (i == 0)
       return -length / 2;
-    if(i == end)
+    if (i == end)
       return length / 2;
     return -length / 2 + length * (static_cast<double>(i) / static_cast<double>(end));
   };
 
   std::vector<std::size_t> previous, current;
-  for(std::size_t r = 0; r <= m; ++r) {
+  for (std::size_t r = 0; r <= m; ++r) {
     const std::vector<long long>& xs = (r % 2 == 0) ? even_x : odd_x;
     const double y = coordinate(static_cast<long long>(r), static_cast<long long>(m), height);
     current.clear();
-    for(long long x : xs) {
+    for (long long x : xs) {
       current.push_back(soup.points.size());
       soup.points.push_back({{coordinate(x, static_cast<long long>(2 * n), width), y}});
     }
-    if(r > 0)
+    if (r > 0)
       triangulate_row_strip(previous, (r % 2 == 1) ? even_x : odd_x, current, xs, soup.triangles);
     previous.swap(current);
   }
@@ -273,35 +272,35 @@ inline std::vector<std::size_t> choose_disk_rings(std::size_t target)
   const double c_ideal = 6;
   const double T = static_cast<double>(target);
   std::size_t K = static_cast<std::size_t>(std::floor(std::sqrt(T / c_ideal)));
-  if(K < 1)
+  if (K < 1)
     K = 1;
   // Between K and K + 1 rings, keep the one whose ring density c = T / K² is closer to 6.
   auto deviation = [&](std::size_t k) {
     return std::abs(std::log(T / (static_cast<double>(k) * static_cast<double>(k)) / c_ideal));
   };
-  if(deviation(K + 1) < deviation(K))
+  if (deviation(K + 1) < deviation(K))
     ++K;
   // Ring k holds round(c k(k+1)/2) - round(c (k-1)k/2) vertices: rounding the partial sums
   // keeps every ring within one vertex of c k, so the outer ring, which closes the count
   // exactly, is within one vertex of c K as well.
   std::vector<std::size_t> rings;
-  for(; K >= 1; --K) {
+  for (; K >= 1; --K) {
     const double c = T / (static_cast<double>(K) * static_cast<double>(K));
     rings.assign(K, 0);
     std::size_t previous_sum = 0;
-    for(std::size_t k = 1; k < K; ++k) {
+    for (std::size_t k = 1; k < K; ++k) {
       const double kk = static_cast<double>(k);
       const std::size_t sum = static_cast<std::size_t>(std::llround(c * kk * (kk + 1) / 2));
       rings[k - 1] = sum - previous_sum;
       previous_sum = sum;
     }
-    if(2 * previous_sum >= target)
+    if (2 * previous_sum >= target)
       continue;
     rings[K - 1] = target - 2 * previous_sum;
     bool increasing = rings[0] >= 3;
-    for(std::size_t k = 1; k < K; ++k)
+    for (std::size_t k = 1; k < K; ++k)
       increasing = increasing && rings[k] > rings[k - 1];
-    if(increasing)
+    if (increasing)
       break;
   }
   return rings;
@@ -312,7 +311,7 @@ inline Patch_soup make_disk_patch_soup(double radius, std::size_t target)
   const double two_pi = 2 * std::acos(-1.0);
   Patch_soup soup;
 
-  if(target == 2) { // the inscribed square split by a diagonal; too small for a center vertex
+  if (target == 2) { // the inscribed square split by a diagonal; too small for a center vertex
     soup.points = {{{radius, 0}}, {{0, radius}}, {{-radius, 0}}, {{0, -radius}}};
     soup.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
     soup.anchor = 0;
@@ -322,25 +321,25 @@ inline Patch_soup make_disk_patch_soup(double radius, std::size_t target)
   const std::vector<std::size_t> rings = choose_disk_rings(target);
   const std::size_t K = rings.size();
   std::size_t number_of_points = 1;
-  for(std::size_t N : rings)
+  for (std::size_t N : rings)
     number_of_points += N;
   soup.points.reserve(number_of_points);
   soup.triangles.reserve(target);
 
   soup.points.push_back({{0, 0}});
   std::vector<std::size_t> ring_start(K);
-  for(std::size_t k = 0; k < K; ++k) {
+  for (std::size_t k = 0; k < K; ++k) {
     ring_start[k] = soup.points.size();
     const double r = (k + 1 == K) ? radius : radius * (static_cast<double>(k + 1) / static_cast<double>(K));
     const std::size_t N = rings[k];
-    for(std::size_t i = 0; i < N; ++i) {
+    for (std::size_t i = 0; i < N; ++i) {
       const double t = two_pi * (static_cast<double>(i) / static_cast<double>(N));
       soup.points.push_back({{i == 0 ? r : r * std::cos(t), i == 0 ? 0. : r * std::sin(t)}});
     }
   }
 
   // The fan around the center.
-  for(std::size_t i = 0; i < rings[0]; ++i)
+  for (std::size_t i = 0; i < rings[0]; ++i)
     soup.triangles.push_back({{0, ring_start[0] + i, ring_start[0] + (i + 1) % rings[0]}});
 
   // Strips between consecutive rings; both rings have a vertex at angle 0, and the walk
@@ -350,23 +349,24 @@ inline Patch_soup make_disk_patch_soup(double radius, std::size_t target)
     const double dy = soup.points[a][1] - soup.points[b][1];
     return dx * dx + dy * dy;
   };
-  for(std::size_t k = 1; k < K; ++k) {
+  for (std::size_t k = 1; k < K; ++k) {
     const std::size_t Na = rings[k - 1], Nb = rings[k];
     auto a = [&](std::size_t i) { return ring_start[k - 1] + i % Na; };
     auto b = [&](std::size_t j) { return ring_start[k] + j % Nb; };
     std::size_t i = 0, j = 0;
-    while(i < Na || j < Nb) {
+    while (i < Na || j < Nb) {
       bool advance_outer;
-      if(i == Na)
+      if (i == Na)
         advance_outer = true;
-      else if(j == Nb)
+      else if (j == Nb)
         advance_outer = false;
       else
         advance_outer = squared_distance(a(i), b(j + 1)) <= squared_distance(b(j), a(i + 1));
-      if(advance_outer) {
+      if (advance_outer) {
         soup.triangles.push_back({{a(i), b(j), b(j + 1)}});
         ++j;
-      } else {
+      }
+      else {
         soup.triangles.push_back({{a(i), b(j), a(i + 1)}});
         ++i;
       }
@@ -394,28 +394,27 @@ add_patch_soup(TriangleMesh& tm, VertexPointMap vpm, const GeomTraits& gt, const
   // A disk-like patch has V - E + F = 1.
   const std::size_t nv = soup.points.size(), nf = soup.triangles.size(), ne = nv + nf - 1;
   reserve(tm, static_cast<vertices_size_type>(num_vertices(tm) + nv),
-          static_cast<edges_size_type>(num_edges(tm) + ne),
-          static_cast<faces_size_type>(num_faces(tm) + nf));
+          static_cast<edges_size_type>(num_edges(tm) + ne), static_cast<faces_size_type>(num_faces(tm) + nf));
 
   const auto construct_point = gt.construct_point_3_object();
   std::vector<vertex_descriptor> vds(nv);
-  for(std::size_t i = 0; i < nv; ++i) {
+  for (std::size_t i = 0; i < nv; ++i) {
     vds[i] = add_vertex(tm);
     const Patch_vec3 p = frame.point(soup.points[i][0], soup.points[i][1]);
     put(vpm, vds[i], construct_point(FT(p[0]), FT(p[1]), FT(p[2])));
   }
   std::array<vertex_descriptor, 3> face_vertices;
-  for(const std::array<std::size_t, 3>& t : soup.triangles) {
-    for(std::size_t i = 0; i < 3; ++i)
+  for (const std::array<std::size_t, 3>& t : soup.triangles) {
+    for (std::size_t i = 0; i < 3; ++i)
       face_vertices[i] = vds[t[i]];
     // Cannot fail on a fresh component built from a valid disk-like soup.
     const face_descriptor f = CGAL::Euler::add_face(face_vertices, tm);
-    if(f == boost::graph_traits<TriangleMesh>::null_face())
+    if (f == boost::graph_traits<TriangleMesh>::null_face())
       throw std::logic_error("CGAL::Flow_aligned_surfaces: adding a patch face failed");
   }
 
-  for(halfedge_descriptor h : halfedges_around_target(vds[soup.anchor], tm))
-    if(is_border(h, tm))
+  for (halfedge_descriptor h : halfedges_around_target(vds[soup.anchor], tm))
+    if (is_border(h, tm))
       return h;
   CGAL_assertion(false);
   return boost::graph_traits<TriangleMesh>::null_halfedge();
@@ -500,14 +499,14 @@ add_patch_soup(TriangleMesh& tm, VertexPointMap vpm, const GeomTraits& gt, const
 /// \sa `make_disk_patch()`
 /// \sa `Flow_aligned_deformation`
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
-typename boost::graph_traits<TriangleMesh>::halfedge_descriptor make_planar_patch(
-    TriangleMesh& tm,
-    const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::Point_3& center,
-    const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::Vector_3& normal,
-    const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::FT& width,
-    const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::FT& height,
-    std::size_t target_number_of_faces,
-    const NamedParameters& np = CGAL::parameters::default_values())
+typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
+make_planar_patch(TriangleMesh& tm,
+                  const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::Point_3& center,
+                  const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::Vector_3& normal,
+                  const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::FT& width,
+                  const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::FT& height,
+                  std::size_t target_number_of_faces,
+                  const NamedParameters& np = CGAL::parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -596,13 +595,13 @@ typename boost::graph_traits<TriangleMesh>::halfedge_descriptor make_planar_patc
 /// \sa `make_planar_patch()`
 /// \sa `Flow_aligned_deformation`
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
-typename boost::graph_traits<TriangleMesh>::halfedge_descriptor make_disk_patch(
-    TriangleMesh& tm,
-    const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::Point_3& center,
-    const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::Vector_3& normal,
-    const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::FT& radius,
-    std::size_t target_number_of_faces,
-    const NamedParameters& np = CGAL::parameters::default_values())
+typename boost::graph_traits<TriangleMesh>::halfedge_descriptor
+make_disk_patch(TriangleMesh& tm,
+                const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::Point_3& center,
+                const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::Vector_3& normal,
+                const typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type::FT& radius,
+                std::size_t target_number_of_faces,
+                const NamedParameters& np = CGAL::parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;

@@ -33,8 +33,9 @@ namespace internal {
 /// Calls `visit(j, area, flux)` for every non-degenerate face j of `positions`, with
 /// flux = |n_j . v_j| / |v_j| when the centroid sample is usable and -1 otherwise.
 template <class FlowField, class GeomTraits, class Visit>
-void visit_face_fluxes(const Positions& positions, const std::vector<std::array<Eigen::Index, 3>>& face_vertices,
-                       const FlowField& field, const GeomTraits& gt, const Visit& visit)
+void visit_face_fluxes(const Positions& positions,
+                       const std::vector<std::array<Eigen::Index, 3>>& face_vertices, const FlowField& field,
+                       const GeomTraits& gt, const Visit& visit)
 {
   auto construct_point = gt.construct_point_3_object();
   for (std::size_t j = 0; j < face_vertices.size(); ++j) {
@@ -46,22 +47,25 @@ void visit_face_fluxes(const Positions& positions, const std::vector<std::array<
       continue;
     const Eigen::Vector3d centroid = (a + b + c) / 3;
     const Flow_sample s = sample_flow(field, construct_point(centroid.x(), centroid.y(), centroid.z()));
-    visit(j, 0.5 * twice_area, s.kind == Sample_kind::VALID ? std::abs(cross.dot(s.direction)) / twice_area : -1.0);
+    visit(j, 0.5 * twice_area,
+          s.kind == Sample_kind::VALID ? std::abs(cross.dot(s.direction)) / twice_area : -1.0);
   }
 }
 
 /// The normalized flux of the faces `face_vertices` over `positions`.
 template <class FlowField, class GeomTraits>
-double normalized_flux(const Positions& positions, const std::vector<std::array<Eigen::Index, 3>>& face_vertices,
-                       const FlowField& field, const GeomTraits& gt)
+double normalized_flux(const Positions& positions,
+                       const std::vector<std::array<Eigen::Index, 3>>& face_vertices, const FlowField& field,
+                       const GeomTraits& gt)
 {
   double flux = 0, area = 0;
-  visit_face_fluxes(positions, face_vertices, field, gt, [&](std::size_t, double face_area, double face_flux) {
-    if (face_flux < 0)
-      return;
-    flux += face_area * face_flux;
-    area += face_area;
-  });
+  visit_face_fluxes(positions, face_vertices, field, gt,
+                    [&](std::size_t, double face_area, double face_flux) {
+                      if (face_flux < 0)
+                        return;
+                      flux += face_area * face_flux;
+                      area += face_area;
+                    });
   return area > 0 ? flux / area : 0;
 }
 
@@ -131,12 +135,13 @@ double normalized_flux(const TriangleMesh& tm, const FlowField& field,
                        const NamedParameters& np = CGAL::parameters::default_values())
 {
   double flux = 0, area = 0;
-  internal::visit_mesh_face_fluxes(tm, field, np, "normalized_flux", [&](auto, double face_area, double face_flux) {
-    if (face_flux < 0)
-      return;
-    flux += face_area * face_flux;
-    area += face_area;
-  });
+  internal::visit_mesh_face_fluxes(tm, field, np, "normalized_flux",
+                                   [&](auto, double face_area, double face_flux) {
+                                     if (face_flux < 0)
+                                       return;
+                                     flux += face_area * face_flux;
+                                     area += face_area;
+                                   });
   return area > 0 ? flux / area : 0;
 }
 

@@ -21,7 +21,8 @@ namespace Flow_aligned_surfaces {
 
 /// \cond SKIP_IN_MANUAL
 namespace internal_np {
-#define CGAL_FAS_DECLARE_TAG(name) struct name##_t {};
+#define CGAL_FAS_DECLARE_TAG(name)                                                                           \
+  struct name##_t {};
 CGAL_FAS_DECLARE_TAG(max_rotation_angle)
 CGAL_FAS_DECLARE_TAG(convergence_angle)
 CGAL_FAS_DECLARE_TAG(convergence_step)
@@ -43,13 +44,12 @@ using CGAL::parameters::is_default_parameter;
 using Default_named_parameters = CGAL::parameters::Default_named_parameters;
 
 // Defines one package parameter: a free function returning a pack that chains onto `np`.
-#define CGAL_FAS_NAMED_PARAMETER(name, type)                                                  \
-  template <typename NamedParameters = Default_named_parameters>                                \
-  CGAL::Named_function_parameters<type, internal_np::name##_t, NamedParameters> name(          \
-      const type& value, const NamedParameters& np = NamedParameters())                       \
-  {                                                                                             \
-    return CGAL::Named_function_parameters<type, internal_np::name##_t, NamedParameters>(value, \
-                                                                                          np);  \
+#define CGAL_FAS_NAMED_PARAMETER(name, type)                                                                 \
+  template <typename NamedParameters = Default_named_parameters>                                             \
+  CGAL::Named_function_parameters<type, internal_np::name##_t, NamedParameters> name(                        \
+      const type& value, const NamedParameters& np = NamedParameters())                                      \
+  {                                                                                                          \
+    return CGAL::Named_function_parameters<type, internal_np::name##_t, NamedParameters>(value, np);         \
   }
 
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
@@ -85,11 +85,10 @@ CGAL_FAS_NAMED_PARAMETER(use_parallelism, bool)
 /// The in-plane direction of a patch's first side (its `width`), projected into the patch's
 /// plane.  Type: the kernel's `Vector_3`.  Default: a unit vector orthogonal to the normal.
 template <typename Vector_3, typename NamedParameters = Default_named_parameters>
-CGAL::Named_function_parameters<Vector_3, internal_np::patch_axis_t, NamedParameters> patch_axis(
-    const Vector_3& axis, const NamedParameters& np = NamedParameters())
+CGAL::Named_function_parameters<Vector_3, internal_np::patch_axis_t, NamedParameters>
+patch_axis(const Vector_3& axis, const NamedParameters& np = NamedParameters())
 {
-  return CGAL::Named_function_parameters<Vector_3, internal_np::patch_axis_t, NamedParameters>(axis,
-                                                                                               np);
+  return CGAL::Named_function_parameters<Vector_3, internal_np::patch_axis_t, NamedParameters>(axis, np);
 }
 
 } // namespace parameters

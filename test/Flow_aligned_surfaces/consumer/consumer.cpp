@@ -39,8 +39,7 @@ int main()
       return 1;
     }
     return 0;
-  }
-  catch (const std::exception& e) {
+  } catch (const std::exception& e) {
     std::cerr << "consumer: " << e.what() << "\n";
     return 2;
   }

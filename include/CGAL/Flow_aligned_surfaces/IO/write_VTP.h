@@ -30,9 +30,9 @@ namespace IO {
 /// A named data array attached to the vertices or faces of a mesh: `values` holds
 /// `number_of_components` values per vertex (or face), in the order of the vertex (face) index map.
 struct Data_array {
-  std::string name;                  ///< the array's name, as ParaView shows it
-  int number_of_components = 1;      ///< 1 for scalars, 3 for vectors
-  std::vector<double> values;        ///< `number_of_components` values per element
+  std::string name;             ///< the array's name, as ParaView shows it
+  int number_of_components = 1; ///< 1 for scalars, 3 for vectors
+  std::vector<double> values;   ///< `number_of_components` values per element
 };
 
 /*!
@@ -60,8 +60,8 @@ VTK reads as such.
 written, with the reason in `error` when it is not null.
 */
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
-bool write_VTP(const std::string& filename, const TriangleMesh& tm, const std::vector<Data_array>& point_data = {},
-               const std::vector<Data_array>& cell_data = {},
+bool write_VTP(const std::string& filename, const TriangleMesh& tm,
+               const std::vector<Data_array>& point_data = {}, const std::vector<Data_array>& cell_data = {},
                const NamedParameters& np = CGAL::parameters::default_values(), std::string* error = nullptr)
 {
   using parameters::choose_parameter;
@@ -117,7 +117,8 @@ bool write_VTP(const std::string& filename, const TriangleMesh& tm, const std::v
     os << "<?xml version=\"1.0\"?>\n"
        << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
        << "  <PolyData>\n"
-       << "    <Piece NumberOfPoints=\"" << nv << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\""
+       << "    <Piece NumberOfPoints=\"" << nv
+       << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\""
        << " NumberOfPolys=\"" << nf << "\">\n"
        << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
     for (auto v : ordered_vertices) {

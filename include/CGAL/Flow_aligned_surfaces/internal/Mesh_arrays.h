@@ -31,11 +31,11 @@ using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3>;
 struct Mesh_arrays {
   std::vector<std::array<Eigen::Index, 3>> face_vertices;
   struct Interior_edge {
-    std::size_t faces[2];    // p, q
+    std::size_t faces[2];     // p, q
     Eigen::Index vertices[2]; // the shared edge
   };
   std::vector<Interior_edge> interior_edges;
-  std::vector<std::size_t> face_component;                    // connected component of each face
+  std::vector<std::size_t> face_component; // connected component of each face
   std::size_t number_of_components = 0;
 };
 
@@ -69,7 +69,8 @@ inline void check_finite_positions(const Positions& x, const std::string& name)
 {
   for (Eigen::Index i = 0; i < x.rows(); ++i)
     if (!x.row(i).allFinite())
-      throw std::invalid_argument(name + ": vertex " + std::to_string(i) + " has a coordinate that is not finite");
+      throw std::invalid_argument(name + ": vertex " + std::to_string(i) +
+                                  " has a coordinate that is not finite");
 }
 
 template <class VertexDescriptor, class VertexPointMap, class GeomTraits>
@@ -111,9 +112,9 @@ Mesh_arrays make_mesh_arrays(const TriangleMesh& tm, VertexIndexMap vim, FaceInd
     if (is_border_edge(h, tm))
       continue;
     const std::size_t p = get(fim, face(h, tm)), q = get(fim, face(opposite(h, tm), tm));
-    arrays.interior_edges.push_back(
-        {{p, q},
-         {static_cast<Eigen::Index>(get(vim, source(h, tm))), static_cast<Eigen::Index>(get(vim, target(h, tm)))}});
+    arrays.interior_edges.push_back({{p, q},
+                                     {static_cast<Eigen::Index>(get(vim, source(h, tm))),
+                                      static_cast<Eigen::Index>(get(vim, target(h, tm)))}});
     parent[root(p)] = root(q);
   }
   arrays.face_component.resize(parent.size());

@@ -40,9 +40,8 @@ struct Triangle_gradients {
 
 /// grad(phi_a) = n x (x_c - x_b) / (2A), and cyclically: the solution of the paper's 3x3 system.
 /// Returns nothing for a degenerate triangle (zero area), whose gradients do not exist.
-inline std::optional<Triangle_gradients> triangle_gradients(const Eigen::Vector3d& a,
-                                                            const Eigen::Vector3d& b,
-                                                            const Eigen::Vector3d& c)
+inline std::optional<Triangle_gradients>
+triangle_gradients(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
 {
   const Eigen::Vector3d cross = (b - a).cross(c - a);
   const double twice_area = cross.norm();

@@ -35,8 +35,8 @@ Flow_sample sample_flow(const FlowField& field, const Point_3& p)
   const auto value = field(p);
   if (!value)
     return sample;
-  sample.velocity = Eigen::Vector3d(CGAL::to_double(value->x()), CGAL::to_double(value->y()),
-                                    CGAL::to_double(value->z()));
+  sample.velocity =
+      Eigen::Vector3d(CGAL::to_double(value->x()), CGAL::to_double(value->y()), CGAL::to_double(value->z()));
   if (!sample.velocity.allFinite()) {
     sample.kind = Sample_kind::INVALID;
     return sample;
@@ -58,7 +58,6 @@ Flow_sample sample_flow(const FlowField& field, const Point_3& p)
   }
   return sample;
 }
-
 
 } // namespace internal
 } // namespace Flow_aligned_surfaces
