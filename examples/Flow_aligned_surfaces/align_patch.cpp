@@ -3,15 +3,21 @@
 // what a user opens afterwards: the initial and aligned surfaces as PLY and VTP
 // (ParaView), the normalized flux of every iteration as CSV, and a JSON summary.
 //
-// Usage: align_patch [--flow NAME] [--alignment tangential|orthogonal|both]
-//                    [--faces N] [--output DIR]
+// Usage: align_patch [--flow NAME | --field FILE.vtk [--array NAME]]
+//                    [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]
+//                    [--center X,Y,Z] [--normal X,Y,Z] [--size S]
 // Flows: cylinder (default), point-source, sphere, helical, hill, burgers, abc, tornado.
+// A data file is a legacy VTK STRUCTURED_POINTS file with a velocity array (and an optional
+// mask array "inside"); without --center the patch is placed at the middle of the grid, and
+// without --normal it faces the flow there (orthogonal) or contains it (tangential).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
+#include <CGAL/Flow_aligned_surfaces/IO/read_flow_field.h>
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
+#include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
@@ -19,6 +25,8 @@
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -90,6 +98,59 @@ std::optional<Scene> make_scene(const std::string& name)
     return Scene{FAS::Crawfis_tornado<Kernel>(), Point(0.5, 0.3, 0.5),  Point(0.5, 0.5, 0.3),
                  Vector(0.1, 1.0, 0.1),          Vector(0.1, 0.1, 1.0), 0.3};
   return std::nullopt;
+}
+
+// "x,y,z" -> three numbers.
+std::optional<std::array<double, 3>> parse_triple(const std::string& text)
+{
+  std::array<double, 3> v;
+  char comma1 = 0, comma2 = 0;
+  std::istringstream is(text);
+  if (!(is >> v[0] >> comma1 >> v[1] >> comma2 >> v[2]) || comma1 != ',' || comma2 != ',' || !is.eof())
+    return std::nullopt;
+  return v;
+}
+
+struct Placement {
+  std::optional<std::array<double, 3>> center, normal;
+  std::optional<double> size;
+};
+
+// A scene in a flow read from a file: the patch at the given place or in the middle of the grid.
+std::optional<Scene> make_data_scene(const std::string& file, const std::string& array,
+                                     const Placement& placement)
+{
+  std::optional<FAS::Regular_grid_flow_field_3<Kernel>> grid;
+  std::string error;
+  const bool read =
+      array.empty() ? FAS::IO::read_VTK_flow_field(file, grid, CGAL::parameters::default_values(), &error)
+                    : FAS::IO::read_VTK_flow_field(file, grid, FAS::parameters::array_name(array), &error);
+  if (!read) {
+    std::cerr << "error: --field: " << error << "\n";
+    return std::nullopt;
+  }
+  const CGAL::Bbox_3 box = grid->bbox();
+  const Point center = placement.center
+                           ? Point((*placement.center)[0], (*placement.center)[1], (*placement.center)[2])
+                           : Point((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
+                                   (box.zmin() + box.zmax()) / 2);
+  const auto v = (*grid)(center);
+  if (!v || v->squared_length() == 0) {
+    std::cerr << "error: --center: the flow of " << file << " is not defined (or zero) at " << center
+              << "; place the patch in the fluid with --center X,Y,Z\n";
+    return std::nullopt;
+  }
+  const double size =
+      placement.size
+          ? *placement.size
+          : 0.25 * (std::min)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  Vector orthogonal_normal = *v, tangential_normal = CGAL::cross_product(*v, Vector(0, 0, 1));
+  if (tangential_normal.squared_length() < 1e-12 * v->squared_length())
+    tangential_normal = CGAL::cross_product(*v, Vector(1, 0, 0));
+  if (placement.normal)
+    orthogonal_normal = tangential_normal =
+        Vector((*placement.normal)[0], (*placement.normal)[1], (*placement.normal)[2]);
+  return Scene{Flow(*grid), center, center, tangential_normal, orthogonal_normal, size};
 }
 
 std::vector<double> face_fluxes(const Mesh& tm, const Flow& flow)
@@ -202,6 +263,8 @@ int main(int argc, char** argv)
   std::string flow_name = "cylinder", alignment = "both";
   std::size_t faces = 5000;
   std::filesystem::path out = "flow_aligned_surfaces_output";
+  std::string field_file, array;
+  Placement placement;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool has_value = i + 1 < argc;
@@ -213,18 +276,55 @@ int main(int argc, char** argv)
       faces = std::strtoul(argv[++i], nullptr, 10);
     else if (arg == "--output" && has_value)
       out = argv[++i];
+    else if (arg == "--field" && has_value)
+      field_file = argv[++i];
+    else if (arg == "--array" && has_value)
+      array = argv[++i];
+    else if ((arg == "--center" || arg == "--normal") && has_value) {
+      const auto triple = parse_triple(argv[++i]);
+      if (!triple) {
+        std::cerr << "error: " << arg << ": expected X,Y,Z, got '" << argv[i] << "'\n";
+        return 2;
+      }
+      (arg == "--center" ? placement.center : placement.normal) = triple;
+    }
+    else if (arg == "--size" && has_value) {
+      placement.size = std::strtod(argv[++i], nullptr);
+      if (!(*placement.size > 0) || !std::isfinite(*placement.size)) {
+        std::cerr << "error: --size: expected a positive number, got '" << argv[i] << "'\n";
+        return 2;
+      }
+    }
     else {
       std::cerr << "usage: " << argv[0]
-                << " [--flow cylinder|point-source|sphere|helical|hill|burgers|abc|tornado]"
-                   " [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]\n"
+                << " [--flow cylinder|point-source|sphere|helical|hill|burgers|abc|tornado | --field FILE.vtk"
+                   " [--array NAME]] [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]"
+                   " [--center X,Y,Z] [--normal X,Y,Z] [--size S]\n"
                 << "error: unknown or incomplete argument '" << arg << "'\n";
       return 2;
     }
   }
-  const std::optional<Scene> scene = make_scene(flow_name);
-  if (!scene) {
-    std::cerr << "error: --flow: unknown flow '" << flow_name << "'\n";
-    return 2;
+  std::optional<Scene> scene;
+  if (!field_file.empty()) {
+    scene = make_data_scene(field_file, array, placement);
+    if (!scene)
+      return 1;
+    flow_name = std::filesystem::path(field_file).filename().string();
+  }
+  else {
+    scene = make_scene(flow_name);
+    if (!scene) {
+      std::cerr << "error: --flow: unknown flow '" << flow_name << "'\n";
+      return 2;
+    }
+    if (placement.center)
+      scene->tangential_center = scene->orthogonal_center =
+          Point((*placement.center)[0], (*placement.center)[1], (*placement.center)[2]);
+    if (placement.normal)
+      scene->tangential_normal = scene->orthogonal_normal =
+          Vector((*placement.normal)[0], (*placement.normal)[1], (*placement.normal)[2]);
+    if (placement.size)
+      scene->size = *placement.size;
   }
   if (alignment != "tangential" && alignment != "orthogonal" && alignment != "both") {
     std::cerr << "error: --alignment: expected tangential, orthogonal or both, got '" << alignment << "'\n";

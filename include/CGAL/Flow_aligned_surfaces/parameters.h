@@ -31,6 +31,8 @@ CGAL_FAS_DECLARE_TAG(area_correction)
 CGAL_FAS_DECLARE_TAG(constraint_weight)
 CGAL_FAS_DECLARE_TAG(use_parallelism)
 CGAL_FAS_DECLARE_TAG(patch_axis)
+CGAL_FAS_DECLARE_TAG(array_name)
+CGAL_FAS_DECLARE_TAG(mask_array_name)
 #undef CGAL_FAS_DECLARE_TAG
 } // namespace internal_np
 /// \endcond
@@ -78,6 +80,14 @@ CGAL_FAS_NAMED_PARAMETER(constraint_weight, double)
 /// Whether the per-face work of an iteration (field samples, local transformations) runs in
 /// parallel with TBB; the field must then be safe to call concurrently.  Default: `false`.
 CGAL_FAS_NAMED_PARAMETER(use_parallelism, bool)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The name of the velocity array that a flow field reader reads, or that a writer writes.
+/// Default (reading): the first vector array of the file's point data; (writing): `"velocity"`.
+CGAL_FAS_NAMED_PARAMETER(array_name, std::string)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The name of the node mask array (nonzero = fluid) that a flow field reader reads, or that a
+/// writer writes.  Default: `"inside"` (read only if present); the empty string reads no mask.
+CGAL_FAS_NAMED_PARAMETER(mask_array_name, std::string)
 
 #undef CGAL_FAS_NAMED_PARAMETER
 

@@ -112,42 +112,46 @@ bool write_VTP(const std::string& filename, const TriangleMesh& tm,
   };
 
   std::string reason;
-  const bool written = internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
-    os.precision(precision);
-    os << "<?xml version=\"1.0\"?>\n"
-       << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-       << "  <PolyData>\n"
-       << "    <Piece NumberOfPoints=\"" << nv
-       << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\""
-       << " NumberOfPolys=\"" << nf << "\">\n"
-       << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (auto v : ordered_vertices) {
-      const auto& p = get(vpm, v);
-      os << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z()) << '\n';
-    }
-    os << "        </DataArray>\n      </Points>\n      <Polys>\n"
-       << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    std::vector<std::size_t> offsets;
-    offsets.reserve(nf);
-    std::size_t offset = 0;
-    for (auto f : ordered_faces) {
-      for (auto v : vertices_around_face(halfedge(f, tm), tm)) {
-        os << get(vim, v) << ' ';
-        ++offset;
-      }
-      os << '\n';
-      offsets.push_back(offset);
-    }
-    os << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    for (std::size_t o : offsets)
-      os << o << '\n';
-    os << "        </DataArray>\n      </Polys>\n";
-    os << "      <PointData>\n";
-    write_arrays(os, point_data);
-    os << "      </PointData>\n      <CellData>\n";
-    write_arrays(os, cell_data);
-    os << "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  });
+  const bool written =
+      Flow_aligned_surfaces::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+        os.precision(precision);
+        os << "<?xml version=\"1.0\"?>\n"
+           << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+              "header_type=\"UInt64\">\n"
+           << "  <PolyData>\n"
+           << "    <Piece NumberOfPoints=\"" << nv
+           << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\""
+           << " NumberOfPolys=\"" << nf << "\">\n"
+           << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+              "format=\"ascii\">\n";
+        for (auto v : ordered_vertices) {
+          const auto& p = get(vpm, v);
+          os << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z())
+             << '\n';
+        }
+        os << "        </DataArray>\n      </Points>\n      <Polys>\n"
+           << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+        std::vector<std::size_t> offsets;
+        offsets.reserve(nf);
+        std::size_t offset = 0;
+        for (auto f : ordered_faces) {
+          for (auto v : vertices_around_face(halfedge(f, tm), tm)) {
+            os << get(vim, v) << ' ';
+            ++offset;
+          }
+          os << '\n';
+          offsets.push_back(offset);
+        }
+        os << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+        for (std::size_t o : offsets)
+          os << o << '\n';
+        os << "        </DataArray>\n      </Polys>\n";
+        os << "      <PointData>\n";
+        write_arrays(os, point_data);
+        os << "      </PointData>\n      <CellData>\n";
+        write_arrays(os, cell_data);
+        os << "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+      });
   return written ? true : fail(reason);
 }
 

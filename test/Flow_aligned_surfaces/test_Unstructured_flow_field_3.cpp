@@ -1,0 +1,605 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Unstructured_flow_field_3: linear fields reproduced on tetrahedra, wedges and pyramids,
+// trilinear(-in-parameter) fields on distorted hexahedra, agreement with
+// Regular_grid_flow_field_3 on the same grid, holes and the outside, shared faces, threads,
+// shared storage and the messages for bad input.
+
+#include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace FAS = CGAL::Flow_aligned_surfaces;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point_3;
+typedef K::Vector_3 Vector_3;
+typedef FAS::Unstructured_flow_field_3<K> Field;
+typedef Field::Index Index;
+
+// The hexahedron corners in VTK order as offsets (di, dj, dk) from the cell's first node.
+const int hex_corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                              {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+
+// A structured block of n[0] x n[1] x n[2] cells whose nodes sit at `position(i, j, k)`,
+// written as an unstructured mesh of cells of one kind.
+struct Block {
+  std::array<int, 3> n;
+  std::vector<double> points;
+  std::vector<Index> connectivity, offsets{0};
+  std::vector<unsigned char> types;
+
+  Block(std::array<int, 3> cells, const std::function<std::array<double, 3>(int, int, int)>& position)
+      : n(cells)
+  {
+    for (int k = 0; k <= n[2]; ++k)
+      for (int j = 0; j <= n[1]; ++j)
+        for (int i = 0; i <= n[0]; ++i) {
+          const std::array<double, 3> x = position(i, j, k);
+          points.insert(points.end(), x.begin(), x.end());
+        }
+  }
+
+  Index node(int i, int j, int k) const { return i + (n[0] + 1) * (j + (n[1] + 1) * k); }
+
+  std::array<Index, 8> hex(int i, int j, int k) const
+  {
+    std::array<Index, 8> h;
+    for (int q = 0; q < 8; ++q)
+      h[q] = node(i + hex_corner[q][0], j + hex_corner[q][1], k + hex_corner[q][2]);
+    return h;
+  }
+
+  void add(unsigned char type, std::initializer_list<Index> ids)
+  {
+    connectivity.insert(connectivity.end(), ids.begin(), ids.end());
+    offsets.push_back(static_cast<Index>(connectivity.size()));
+    types.push_back(type);
+  }
+
+  Index add_point(const std::array<double, 3>& x)
+  {
+    points.insert(points.end(), x.begin(), x.end());
+    return static_cast<Index>(points.size() / 3 - 1);
+  }
+
+  // kind: 12 hexahedra, 10 six tetrahedra per cell (Kuhn split along 0-6, conforming),
+  // 13 two wedges per cell (split along 0-2 / 4-6), 14 six pyramids per cell around an extra
+  // centre point.  `skip` removes cells.
+  void fill(int kind, const std::function<bool(int, int, int)>& skip = nullptr)
+  {
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i) {
+          if (skip && skip(i, j, k))
+            continue;
+          const std::array<Index, 8> h = hex(i, j, k);
+          if (kind == 12) {
+            add(12, {h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7]});
+          }
+          else if (kind == 10) {
+            const int path[6][2] = {{1, 2}, {3, 2}, {1, 5}, {4, 5}, {3, 7}, {4, 7}};
+            for (const auto& p : path)
+              add(10, {h[0], h[p[0]], h[p[1]], h[6]});
+          }
+          else if (kind == 13) {
+            add(13, {h[0], h[1], h[2], h[4], h[5], h[6]});
+            add(13, {h[0], h[2], h[3], h[4], h[6], h[7]});
+          }
+          else {
+            std::array<double, 3> c = {0., 0., 0.};
+            for (int q = 0; q < 8; ++q)
+              for (int a = 0; a < 3; ++a)
+                c[a] += points[3 * h[q] + a] / 8.;
+            const Index apex = add_point(c);
+            const int faces[6][4] = {{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4},
+                                     {3, 7, 6, 2}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+            for (const auto& f : faces)
+              add(14, {h[f[0]], h[f[1]], h[f[2]], h[f[3]], apex});
+          }
+        }
+  }
+
+  std::vector<float> values(const std::function<std::array<double, 3>(const double*)>& f) const
+  {
+    std::vector<float> v;
+    for (std::size_t p = 0; p < points.size(); p += 3) {
+      const std::array<double, 3> w = f(&points[p]);
+      for (double c : w)
+        v.push_back(static_cast<float>(c));
+    }
+    return v;
+  }
+
+  Field field(std::vector<float> v) const
+  {
+    return Field(points, connectivity, offsets, types, std::move(v));
+  }
+};
+
+// Random dyadic numbers (multiples of 1/8 in [-2, 2]): nodal values of the test fields are then
+// exact in float, so the fields are reproduced to rounding.
+double dyadic(std::mt19937& rng)
+{
+  return std::uniform_int_distribution<int>(-16, 16)(rng) / 8.;
+}
+
+struct Linear_field {
+  double a[3], B[3][3];
+  explicit Linear_field(std::mt19937& rng)
+  {
+    for (int d = 0; d < 3; ++d) {
+      a[d] = dyadic(rng);
+      for (int e = 0; e < 3; ++e)
+        B[d][e] = dyadic(rng);
+    }
+  }
+  std::array<double, 3> operator()(const double* x) const
+  {
+    std::array<double, 3> r;
+    for (int d = 0; d < 3; ++d)
+      r[d] = a[d] + B[d][0] * x[0] + B[d][1] * x[1] + B[d][2] * x[2];
+    return r;
+  }
+};
+
+// A general trilinear map: 8 coefficients of 1, x, y, z, xy, yz, xz, xyz per component.
+struct Trilinear_field {
+  std::array<std::array<double, 8>, 3> c;
+  explicit Trilinear_field(std::mt19937& rng)
+  {
+    for (auto& comp : c)
+      for (double& a : comp)
+        a = dyadic(rng);
+  }
+  std::array<double, 3> operator()(const double* x) const
+  {
+    std::array<double, 3> r;
+    for (int d = 0; d < 3; ++d) {
+      const auto& a = c[d];
+      r[d] = a[0] + a[1] * x[0] + a[2] * x[1] + a[3] * x[2] + a[4] * x[0] * x[1] + a[5] * x[1] * x[2] +
+             a[6] * x[0] * x[2] + a[7] * x[0] * x[1] * x[2];
+    }
+    return r;
+  }
+};
+
+// Nodes of a grid with spacing 1/2 moved by random multiples of 1/64 (at most 1/8, a quarter of
+// the spacing, so every cell stays valid and non-degenerate) : non-parallelepiped cells with
+// exactly representable coordinates.
+// With flat_i >= 0, the nodes i = flat_i keep their x, so the faces between the cells i =
+// flat_i - 1 and flat_i are planar.
+std::function<std::array<double, 3>(int, int, int)> distorted_grid(unsigned seed, int flat_i = -1)
+{
+  return [seed, flat_i](int i, int j, int k) {
+    std::mt19937 rng(seed + 7919u * unsigned(i) + 104729u * unsigned(j) + 1299709u * unsigned(k));
+    std::uniform_int_distribution<int> u(-8, 8);
+    const double dx = u(rng) / 64.;
+    return std::array<double, 3>{1. + 0.5 * i + (i == flat_i ? 0. : dx), -2. + 0.5 * j + u(rng) / 64.,
+                                 0.5 * k + u(rng) / 64.};
+  };
+}
+
+// The position of parameters (r, s, t) in hexahedron `h` of `b`: the VTK trilinear map,
+// written independently of the header.
+std::array<double, 3> hex_map(const Block& b, const std::array<Index, 8>& h, const double* rst)
+{
+  std::array<double, 3> x = {0., 0., 0.};
+  for (int q = 0; q < 8; ++q) {
+    double w = 1.;
+    for (int a = 0; a < 3; ++a)
+      w *= hex_corner[q][a] ? rst[a] : 1. - rst[a];
+    for (int a = 0; a < 3; ++a)
+      x[a] += w * b.points[3 * h[q] + a];
+  }
+  return x;
+}
+
+Point_3 to_point(const std::array<double, 3>& x)
+{
+  return Point_3(x[0], x[1], x[2]);
+}
+
+void expect_near(const Vector_3& v, const std::array<double, 3>& e, double tol, const Point_3& p)
+{
+  EXPECT_NEAR(v.x(), e[0], tol) << "at " << p;
+  EXPECT_NEAR(v.y(), e[1], tol) << "at " << p;
+  EXPECT_NEAR(v.z(), e[2], tol) << "at " << p;
+}
+
+// Checks that a linear field is reproduced on a distorted block of 3 x 4 x 2 cells of one kind
+// (hexahedra, or hexahedra split into tetrahedra, wedges or pyramids, whose boundary faces are
+// flat where the hexahedra's are bilinear): every point farther than the largest node move
+// from the undistorted block's boundary is inside, and every value returned, there or
+// anywhere in a box around the block, is exact.
+void check_linear_field_is_reproduced(int kind)
+{
+  std::mt19937 rng{static_cast<unsigned>(kind)};
+  Block b({3, 4, 2}, distorted_grid(unsigned(kind)));
+  b.fill(kind);
+  const Linear_field f(rng);
+  const Field field = b.field(b.values(f));
+  const double lo[3] = {1., -2., 0.}, hi[3] = {2.5, 0., 1.};
+  const double margin = 0.15; // > the largest node move, 1/8
+  int found = 0;
+  for (int q = 0; q < 2000; ++q) {
+    const bool interior = q % 2 == 0;
+    std::array<double, 3> x;
+    for (int a = 0; a < 3; ++a) {
+      const double m = interior ? margin : -0.3;
+      x[a] = std::uniform_real_distribution<double>(lo[a] + m, hi[a] - m)(rng);
+    }
+    const Point_3 p = to_point(x);
+    const std::optional<Vector_3> v = field(p);
+    if (interior) {
+      ASSERT_TRUE(v) << "cell type " << kind << ": no cell contains " << p;
+    }
+    if (!v)
+      continue;
+    ++found;
+    expect_near(*v, f(x.data()), 1e-12, p);
+  }
+  EXPECT_GT(found, 1200);
+}
+
+TEST(UnstructuredFlowField3, LinearFieldIsReproducedOnTetrahedra)
+{
+  check_linear_field_is_reproduced(10);
+}
+TEST(UnstructuredFlowField3, LinearFieldIsReproducedOnHexahedra)
+{
+  check_linear_field_is_reproduced(12);
+}
+TEST(UnstructuredFlowField3, LinearFieldIsReproducedOnWedges)
+{
+  check_linear_field_is_reproduced(13);
+}
+TEST(UnstructuredFlowField3, LinearFieldIsReproducedOnPyramids)
+{
+  check_linear_field_is_reproduced(14);
+}
+
+TEST(UnstructuredFlowField3, TrilinearFieldInTheParametersIsReproducedOnDistortedHexahedra)
+{
+  // Node (i, j, k) carries g(i, j, k) with g trilinear, so the isoparametric interpolation at
+  // the point of parameters (r, s, t) in cell (i, j, k) is g(i + r, j + s, k + t).
+  std::mt19937 rng(3);
+  Block b({3, 3, 3}, distorted_grid(11));
+  b.fill(12);
+  const Trilinear_field g(rng);
+  std::vector<float> values;
+  for (int k = 0; k <= 3; ++k)
+    for (int j = 0; j <= 3; ++j)
+      for (int i = 0; i <= 3; ++i) {
+        const double ijk[3] = {double(i), double(j), double(k)};
+        for (double c : g(ijk))
+          values.push_back(float(c));
+      }
+  const Field field = b.field(values);
+  std::uniform_real_distribution<double> u(0., 1.);
+  for (int q = 0; q < 1000; ++q) {
+    const int c[3] = {int(rng() % 3), int(rng() % 3), int(rng() % 3)};
+    const double rst[3] = {u(rng), u(rng), u(rng)};
+    const Point_3 p = to_point(hex_map(b, b.hex(c[0], c[1], c[2]), rst));
+    const double global[3] = {c[0] + rst[0], c[1] + rst[1], c[2] + rst[2]};
+    const std::optional<Vector_3> v = field(p);
+    ASSERT_TRUE(v) << "no cell contains " << p;
+    expect_near(*v, g(global), 1e-9, p);
+  }
+}
+
+TEST(UnstructuredFlowField3, TrilinearFieldIsReproducedOnAParallelepipedGrid)
+{
+  std::mt19937 rng(5);
+  Block b({4, 3, 2}, [](int i, int j, int k) {
+    return std::array<double, 3>{-1. + 0.25 * i, 0.5 * j, 2. + 0.125 * k};
+  });
+  b.fill(12);
+  const Trilinear_field f(rng);
+  const Field field = b.field(b.values(f));
+  std::uniform_real_distribution<double> u(0., 1.);
+  for (int q = 0; q < 1000; ++q) {
+    const std::array<double, 3> x = {-1. + u(rng), 1.5 * u(rng), 2. + 0.25 * u(rng)};
+    const Point_3 p = to_point(x);
+    const std::optional<Vector_3> v = field(p);
+    ASSERT_TRUE(v) << "no cell contains " << p;
+    expect_near(*v, f(x.data()), 1e-9, p);
+  }
+}
+
+TEST(UnstructuredFlowField3, AgreesWithRegularGridFlowField3OnTheSameGrid)
+{
+  std::mt19937 rng(17);
+  const Point_3 origin(0.5, -1., 2.);
+  const Vector_3 h(0.3, 0.7, 0.45);
+  const FAS::Regular_grid_flow_field_3<K>::Dimensions dims = {6, 5, 7};
+  std::uniform_real_distribution<float> uf(-3.f, 3.f);
+  std::vector<float> values(3 * dims[0] * dims[1] * dims[2]);
+  for (float& v : values)
+    v = uf(rng);
+  const FAS::Regular_grid_flow_field_3<K> grid(origin, h, dims, values);
+  // Same node numbering (i fastest), same node positions.
+  Block b({int(dims[0]) - 1, int(dims[1]) - 1, int(dims[2]) - 1}, [&](int i, int j, int k) {
+    const Point_3 p = grid.node_point(std::size_t(i), std::size_t(j), std::size_t(k));
+    return std::array<double, 3>{p.x(), p.y(), p.z()};
+  });
+  b.fill(12);
+  const Field field = b.field(values);
+
+  const CGAL::Bbox_3 box = grid.bbox();
+  std::uniform_real_distribution<double> u(-0.1, 1.1);
+  int inside = 0;
+  for (int q = 0; q < 3000; ++q) {
+    const Point_3 p(box.xmin() + u(rng) * (box.xmax() - box.xmin()),
+                    box.ymin() + u(rng) * (box.ymax() - box.ymin()),
+                    box.zmin() + u(rng) * (box.zmax() - box.zmin()));
+    const std::optional<Vector_3> a = grid(p), c = field(p);
+    ASSERT_EQ(bool(a), bool(c)) << "at " << p;
+    if (!a)
+      continue;
+    ++inside;
+    EXPECT_NEAR(a->x(), c->x(), 1e-6) << "at " << p;
+    EXPECT_NEAR(a->y(), c->y(), 1e-6) << "at " << p;
+    EXPECT_NEAR(a->z(), c->z(), 1e-6) << "at " << p;
+  }
+  EXPECT_GT(inside, 1000);
+}
+
+TEST(UnstructuredFlowField3, PointsOfTheMeshGetTheirOwnValues)
+{
+  // Vertices are where most cells meet and where the pyramids' map is singular (the apex).
+  for (int kind : {10, 12, 13, 14}) {
+    SCOPED_TRACE(kind);
+    std::mt19937 rng{static_cast<unsigned>(kind + 60)};
+    Block b({2, 3, 2}, distorted_grid(61));
+    b.fill(kind);
+    std::uniform_real_distribution<float> u(-3.f, 3.f);
+    std::vector<float> values(b.points.size());
+    for (float& v : values)
+      v = u(rng);
+    const Field field = b.field(values);
+    for (std::size_t i = 0; i < b.points.size() / 3; ++i) {
+      const Point_3 p(b.points[3 * i], b.points[3 * i + 1], b.points[3 * i + 2]);
+      const std::optional<Vector_3> v = field(p);
+      ASSERT_TRUE(v) << "point " << i << " " << p;
+      expect_near(*v, {values[3 * i], values[3 * i + 1], values[3 * i + 2]}, 1e-9, p);
+    }
+  }
+}
+
+TEST(UnstructuredFlowField3, OutsideAndInAHoleIsNullopt)
+{
+  for (int kind : {10, 12, 13, 14}) {
+    // Unit cells on [0, 4]^3 without the 8 cells of [1, 3]^3.
+    Block b({4, 4, 4}, [](int i, int j, int k) {
+      return std::array<double, 3>{double(i), double(j), double(k)};
+    });
+    b.fill(kind,
+           [](int i, int j, int k) { return i >= 1 && i <= 2 && j >= 1 && j <= 2 && k >= 1 && k <= 2; });
+    const Field field = b.field(b.values([](const double* x) {
+      return std::array<double, 3>{x[0], x[1], x[2]};
+    }));
+    SCOPED_TRACE(kind);
+    EXPECT_FALSE(field(Point_3(2., 2., 2.)));
+    EXPECT_FALSE(field(Point_3(1.5, 2.7, 1.1)));
+    EXPECT_FALSE(field(Point_3(2.999, 1.001, 2.5)));
+    EXPECT_FALSE(field(Point_3(-0.001, 2., 2.)));
+    EXPECT_FALSE(field(Point_3(2., 4.001, 2.)));
+    EXPECT_FALSE(field(Point_3(100., 100., 100.)));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_FALSE(field(Point_3(nan, 2., 2.)));
+    // Just beside the hole, on its wall, and on the outer boundary: inside.
+    EXPECT_TRUE(field(Point_3(0.999, 2., 2.)));
+    EXPECT_TRUE(field(Point_3(1., 2., 2.)));
+    EXPECT_TRUE(field(Point_3(3., 1.5, 2.5)));
+    EXPECT_TRUE(field(Point_3(0., 2.5, 2.5)));
+    EXPECT_TRUE(field(Point_3(4., 4., 4.)));
+    const std::optional<Vector_3> v = field(Point_3(3.25, 0.5, 3.75));
+    ASSERT_TRUE(v);
+    EXPECT_NEAR(v->x(), 3.25, 1e-12);
+    EXPECT_NEAR(v->y(), 0.5, 1e-12);
+    EXPECT_NEAR(v->z(), 3.75, 1e-12);
+  }
+}
+
+TEST(UnstructuredFlowField3, SharedFacesGiveTheSameValueFromEitherCell)
+{
+  // Two columns of cells meeting at the face i = 1 of a distorted 2 x 1 x 1 block, for each
+  // conforming pair of cell kinds, with a trilinear (not linear) field: values on the shared
+  // face still agree because each face is interpolated from its own points only.  The shared
+  // face is kept planar so that its two triangles (tetrahedra) and its bilinear patch
+  // (hexahedra, wedges, pyramids) are the same set.
+  const int pairs[7][2] = {{12, 12}, {12, 14}, {14, 12}, {12, 13}, {13, 13}, {10, 10}, {14, 14}};
+  for (const auto& pair : pairs) {
+    SCOPED_TRACE(std::to_string(pair[0]) + " | " + std::to_string(pair[1]));
+    std::mt19937 rng(unsigned(23 + pair[0] * 100 + pair[1]));
+    Block b({2, 1, 1}, distorted_grid(29, 1));
+    b.fill(pair[0], [](int i, int, int) { return i != 0; });
+    const std::size_t left_cells = b.types.size();
+    b.fill(pair[1], [](int i, int, int) { return i != 1; });
+    const Trilinear_field f(rng);
+    const Field field = b.field(b.values(f));
+    std::uniform_real_distribution<double> u(0., 1.);
+    for (int q = 0; q < 200; ++q) {
+      const double rst[3] = {1., u(rng), u(rng)};
+      const Point_3 p = to_point(hex_map(b, b.hex(0, 0, 0), rst));
+      const std::optional<Vector_3> located = field(p);
+      ASSERT_TRUE(located) << "no cell contains " << p;
+      bool left = false, right = false;
+      for (std::size_t c = 0; c < field.number_of_cells(); ++c) {
+        const std::optional<Vector_3> v = field.evaluate_in_cell(c, p);
+        if (!v)
+          continue;
+        (c < left_cells ? left : right) = true;
+        EXPECT_NEAR(v->x(), located->x(), 1e-12) << "cell " << c << " at " << p;
+        EXPECT_NEAR(v->y(), located->y(), 1e-12) << "cell " << c << " at " << p;
+        EXPECT_NEAR(v->z(), located->z(), 1e-12) << "cell " << c << " at " << p;
+      }
+      EXPECT_TRUE(left && right) << "the face point " << p << " is not in a cell on each side";
+    }
+  }
+}
+
+// Runs `make` and checks that it throws std::invalid_argument whose message contains every
+// word of `words` (the argument's name, the index and the values).
+template <typename Make>
+void expect_invalid_argument(const Make& make, const std::vector<std::string>& words)
+{
+  try {
+    make();
+    ADD_FAILURE() << "no exception; expected one mentioning " << words.front();
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    for (const std::string& w : words)
+      EXPECT_NE(what.find(w), std::string::npos) << "'" << w << "' missing from: " << what;
+  }
+}
+
+TEST(UnstructuredFlowField3, BadInputThrowsWithTheArgumentsName)
+{
+  // Two tetrahedra sharing a face.
+  const std::vector<double> pts = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+  const std::vector<Index> conn = {0, 1, 2, 3, 1, 2, 3, 4};
+  const std::vector<Index> offs = {0, 4, 8};
+  const std::vector<unsigned char> types = {10, 10};
+  const std::vector<float> vec(15, 1.f);
+  EXPECT_NO_THROW(Field(pts, conn, offs, types, vec));
+  EXPECT_NO_THROW(Field(std::vector<float>(pts.begin(), pts.end()), conn, {4, 8}, types, vec));
+
+  std::vector<double> p7(pts.begin(), pts.begin() + 7);
+  expect_invalid_argument([&] { Field(p7, conn, offs, types, vec); }, {"points.size()", "7"});
+  expect_invalid_argument([&] { Field(pts, conn, offs, types, std::vector<float>(12)); },
+                          {"vectors.size()", "12", "15"});
+  expect_invalid_argument([&] { Field(pts, conn, offs, {}, vec); }, {"cell_types", "empty"});
+  expect_invalid_argument([&] { Field(pts, conn, {0, 4, 8, 8}, types, vec); }, {"offsets.size()", "4"});
+  expect_invalid_argument([&] { Field(pts, conn, {1, 4, 8}, types, vec); }, {"offsets[0]", "1"});
+  expect_invalid_argument([&] { Field(pts, conn, {0, 4, 7}, types, vec); }, {"offset", "7", "8"});
+  expect_invalid_argument([&] { Field(pts, conn, offs, {10, 11}, vec); }, {"cell_types[1]", "11"});
+  expect_invalid_argument([&] { Field(pts, conn, offs, {10, 12}, vec); }, {"cell 1", "hexahedron", "8"});
+  std::vector<Index> bad = conn;
+  bad[6] = 5;
+  expect_invalid_argument([&] { Field(pts, bad, offs, types, vec); }, {"connectivity[6]", "5"});
+  bad[6] = -1;
+  expect_invalid_argument([&] { Field(pts, bad, offs, types, vec); }, {"connectivity[6]", "-1"});
+  std::vector<double> nan_pts = pts;
+  nan_pts[3 * 2 + 1] = std::numeric_limits<double>::quiet_NaN();
+  expect_invalid_argument([&] { Field(nan_pts, conn, offs, types, vec); }, {"points[7]", "point 2", "nan"});
+  std::vector<float> inf_vec = vec;
+  inf_vec[3 * 4 + 2] = std::numeric_limits<float>::infinity();
+  expect_invalid_argument([&] { Field(pts, conn, offs, types, inf_vec); }, {"vectors[14]", "point 4", "inf"});
+}
+
+TEST(UnstructuredFlowField3, CopiesShareStorage)
+{
+  Block b({2, 2, 2}, [](int i, int j, int k) {
+    return std::array<double, 3>{double(i), double(j), double(k)};
+  });
+  b.fill(10);
+  std::vector<float> v = b.values([](const double*) { return std::array<double, 3>{1., 2., 3.}; });
+  const float* data = v.data();
+  const Field field(b.points, b.connectivity, b.offsets, b.types, std::move(v));
+  // The moved-in vectors are kept, not copied.
+  EXPECT_EQ(field.vectors().data(), data);
+  const Field copy = field;
+  EXPECT_EQ(copy.vectors().data(), data);
+  EXPECT_EQ(copy.points().data(), field.points().data());
+  EXPECT_EQ(copy.connectivity().data(), field.connectivity().data());
+  EXPECT_EQ(copy.number_of_cells(), 48u);
+  EXPECT_EQ(*copy(Point_3(0.5, 1.5, 0.25)), Vector_3(1, 2, 3));
+}
+
+TEST(UnstructuredFlowField3, ConcurrentQueriesFromSeveralThreads)
+{
+  // Each thread walks its own coherent path through the same field (and so keeps its own
+  // hint); every answer must be the exact one.
+  Block b({6, 6, 6}, distorted_grid(41));
+  b.fill(10);
+  std::mt19937 rng(43);
+  const Linear_field f(rng);
+  const Field field = b.field(b.values(f));
+  std::vector<int> failures(4, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      const Field local = field; // a copy shares the storage and the hint key
+      for (int q = 0; q < 5000; ++q) {
+        const double s = q / 5000.;
+        const double rst[3] = {0.5, 0.5, 0.5};
+        // Centres of the inner 4 x 4 x 4 cells, moved by at most 0.2 < 0.5 - 1/8: inside.
+        const std::array<Index, 8> h =
+            b.hex(1 + int(s * 4) % 4, 1 + (t + int(s * 12)) % 4, 1 + (2 * t + q / 1000) % 4);
+        std::array<double, 3> x = hex_map(b, h, rst);
+        x[0] += 0.2 * std::sin(40. * s + t);
+        x[1] += 0.2 * std::cos(30. * s);
+        const std::optional<Vector_3> v = (t % 2 ? local : field)(to_point(x));
+        const std::array<double, 3> e = f(x.data());
+        if (!v || std::abs(v->x() - e[0]) > 1e-12 || std::abs(v->y() - e[1]) > 1e-12 ||
+            std::abs(v->z() - e[2]) > 1e-12)
+          ++failures[t];
+      }
+    });
+  for (std::thread& th : threads)
+    th.join();
+  for (int t = 0; t < 4; ++t)
+    EXPECT_EQ(failures[t], 0) << "thread " << t;
+}
+
+TEST(UnstructuredFlowField3, AlternatingBetweenFieldsOnOneThreadIsCorrect)
+{
+  // Two fields share the thread's hint cache; each query must ignore the other's hint, even
+  // where the other field's hint cell index exists in it.
+  std::mt19937 rng(47);
+  Block b1({3, 3, 3}, distorted_grid(51));
+  b1.fill(10);
+  Block b2({3, 3, 3}, distorted_grid(53));
+  b2.fill(12);
+  const Linear_field f1(rng), f2(rng);
+  const Field field1 = b1.field(b1.values(f1)), field2 = b2.field(b2.values(f2));
+  std::uniform_real_distribution<double> u(1.2, 2.3);
+  for (int q = 0; q < 500; ++q) {
+    const std::array<double, 3> x = {u(rng), u(rng) - 3., u(rng) - 1.};
+    const Point_3 p = to_point(x);
+    const std::optional<Vector_3> v1 = field1(p), v2 = field2(p);
+    ASSERT_TRUE(v1 && v2) << "at " << p;
+    expect_near(*v1, f1(x.data()), 1e-12, p);
+    expect_near(*v2, f2(x.data()), 1e-12, p);
+  }
+}
+
+TEST(UnstructuredFlowField3, FaceNeighboursAreFound)
+{
+  Block b({2, 1, 1}, [](int i, int j, int k) {
+    return std::array<double, 3>{double(i), double(j), double(k)};
+  });
+  b.fill(12);
+  const Field field = b.field(std::vector<float>(3 * b.points.size() / 3, 0.f));
+  EXPECT_EQ(field.face_neighbours(0), std::vector<std::size_t>{1});
+  EXPECT_EQ(field.face_neighbours(1), std::vector<std::size_t>{0});
+  Block t({1, 1, 1}, [](int i, int j, int k) {
+    return std::array<double, 3>{double(i), double(j), double(k)};
+  });
+  t.fill(14);
+  const Field pyramids = t.field(std::vector<float>(t.points.size(), 0.f));
+  // Each pyramid touches the four pyramids around its base through its triangles.
+  for (std::size_t c = 0; c < 6; ++c)
+    EXPECT_EQ(pyramids.face_neighbours(c).size(), 4u) << c;
+}
+
+} // namespace
