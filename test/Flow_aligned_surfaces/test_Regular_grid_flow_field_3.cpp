@@ -8,6 +8,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include "expect_invalid_argument.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -355,21 +357,6 @@ TEST(RegularGridFlowField3, CopiesShareStorage)
   assigned = g;
   EXPECT_EQ(assigned.values().data(), data);
   EXPECT_EQ(*copy(Point_3(0.5, 0.5, 0.5)), Vector_3(1, 1, 1));
-}
-
-// Runs `make` and checks that it throws std::invalid_argument whose message contains every
-// word of `words` (the argument's name and the expected and actual values).
-template <typename Make>
-void expect_invalid_argument(const Make& make, const std::vector<std::string>& words)
-{
-  try {
-    make();
-    ADD_FAILURE() << "no exception; expected one mentioning " << words.front();
-  } catch (const std::invalid_argument& e) {
-    const std::string what = e.what();
-    for (const std::string& w : words)
-      EXPECT_NE(what.find(w), std::string::npos) << "'" << w << "' missing from: " << what;
-  }
 }
 
 TEST(RegularGridFlowField3, BadInputThrowsWithTheArgumentsName)

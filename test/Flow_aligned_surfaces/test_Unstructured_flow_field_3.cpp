@@ -11,6 +11,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include "expect_invalid_argument.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -454,21 +456,6 @@ TEST(UnstructuredFlowField3, SharedFacesGiveTheSameValueFromEitherCell)
       }
       EXPECT_TRUE(left && right) << "the face point " << p << " is not in a cell on each side";
     }
-  }
-}
-
-// Runs `make` and checks that it throws std::invalid_argument whose message contains every
-// word of `words` (the argument's name, the index and the values).
-template <typename Make>
-void expect_invalid_argument(const Make& make, const std::vector<std::string>& words)
-{
-  try {
-    make();
-    ADD_FAILURE() << "no exception; expected one mentioning " << words.front();
-  } catch (const std::invalid_argument& e) {
-    const std::string what = e.what();
-    for (const std::string& w : words)
-      EXPECT_NE(what.find(w), std::string::npos) << "'" << w << "' missing from: " << what;
   }
 }
 

@@ -11,6 +11,8 @@
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "expect_invalid_argument.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,22 +73,6 @@ void expect_unchanged(const Snapshot& before, const Mesh& tm)
       const double b = before.points[i][d], a = after.points[i][d];
       EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << "vertex " << i << " coordinate " << d;
     }
-  }
-}
-
-// Runs `call`, expects a std::invalid_argument whose message contains every one of `parts`.
-template <class Call>
-void expect_invalid_argument(const Call& call, std::initializer_list<std::string> parts)
-{
-  try {
-    call();
-    ADD_FAILURE() << "no exception thrown";
-  } catch (const std::invalid_argument& e) {
-    const std::string what = e.what();
-    for (const std::string& part : parts)
-      EXPECT_NE(what.find(part), std::string::npos) << "message \"" << what << "\" lacks \"" << part << "\"";
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "expected std::invalid_argument, got another exception: " << e.what();
   }
 }
 

@@ -14,6 +14,8 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "expect_invalid_argument.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -483,16 +485,9 @@ TEST(MakeSurfacePatch, LargePatches)
 // --- bad input ------------------------------------------------------------------------------
 
 template <class F>
-void expect_invalid_argument_naming(F&& f, const std::string& name)
+void expect_invalid_argument_naming(const F& f, const std::string& name)
 {
-  try {
-    f();
-    ADD_FAILURE() << "no exception; expected one naming `" << name << "`";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("`" + name + "`"), std::string::npos) << e.what();
-  } catch (...) {
-    ADD_FAILURE() << "wrong exception type; expected std::invalid_argument naming `" << name << "`";
-  }
+  expect_invalid_argument(f, {"`" + name + "`"});
 }
 
 TEST(MakeSurfacePatch, BadInputThrowsNamingTheParameter)
