@@ -227,8 +227,9 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   Run_summary summary;
   summary.alignment = name;
   summary.faces = tm.number_of_faces();
-  summary.initial_flux = FAS::normalized_flux(tm, scene.flow);
   summary.report = deformation.run();
+  // The first iteration reports the flux of the surface it started from: the initial patch.
+  summary.initial_flux = iterations.front().normalized_flux;
   for (const auto& r : iterations) {
     summary.mean_gtransf_ms += r.gradient_transformation_ms / iterations.size();
     summary.mean_solve_ms += r.solve_ms / iterations.size();
