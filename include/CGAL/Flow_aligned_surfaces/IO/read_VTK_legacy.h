@@ -15,6 +15,8 @@
 #include <string>
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <array>
@@ -51,9 +53,8 @@ struct VTK_legacy_array {
 };
 
 // Thrown inside the reader only; read_VTK_flow_field() turns it into `false` + message.
-struct VTK_legacy_error : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+typedef Flow_aligned_surfaces::internal::Read_error VTK_legacy_error;
+using Flow_aligned_surfaces::internal::printable;
 
 class VTK_legacy_parser {
 public:
@@ -287,25 +288,6 @@ private:
   static bool is_space(char c)
   {
     return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
-  }
-
-  // A token shown in a message: at most 40 characters, non-printable bytes escaped.
-  static std::string printable(std::string_view s)
-  {
-    std::string r;
-    for (std::size_t i = 0; i < s.size() && i < 40; ++i) {
-      const unsigned char c = static_cast<unsigned char>(s[i]);
-      if (std::isprint(c))
-        r += static_cast<char>(c);
-      else {
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "\\x%02x", c);
-        r += hex;
-      }
-    }
-    if (s.size() > 40)
-      r += "...";
-    return r;
   }
 
   std::string_view read_line()
@@ -547,71 +529,36 @@ private:
   }
 
   // The binary decodings, chosen once per array rather than once per value.
-  enum Binary_type { FLOAT32, FLOAT64, UINT8, INT8, UINT16, INT16, UINT32, INT32, UINT64, INT64 };
+  typedef Flow_aligned_surfaces::internal::Binary_type Binary_type;
 
   static Binary_type binary_type(const std::string& type)
   {
     if (type == "float")
-      return FLOAT32;
+      return Binary_type::FLOAT32;
     if (type == "double")
-      return FLOAT64;
+      return Binary_type::FLOAT64;
     if (type == "unsigned_char")
-      return UINT8;
+      return Binary_type::UINT8;
     if (type == "char")
-      return INT8;
+      return Binary_type::INT8;
     if (type == "unsigned_short")
-      return UINT16;
+      return Binary_type::UINT16;
     if (type == "short")
-      return INT16;
+      return Binary_type::INT16;
     if (type == "unsigned_int")
-      return UINT32;
+      return Binary_type::UINT32;
     if (type == "int" || type == "vtkidtype")
-      return INT32;
+      return Binary_type::INT32;
     if (type == "unsigned_long" || type == "vtktypeuint64")
-      return UINT64;
-    return INT64;
+      return Binary_type::UINT64;
+    return Binary_type::INT64;
   }
 
+  // Big-endian, as VTK's legacy writer writes, whatever the host.
   static double binary_value(Binary_type type, const unsigned char* p)
   {
-    // Big-endian, whatever the host: assemble the bytes most significant first.
-    auto be = [p](int n) {
-      std::uint64_t u = 0;
-      for (int i = 0; i < n; ++i)
-        u = (u << 8) | p[i];
-      return u;
-    };
-    switch (type) {
-    case FLOAT32: {
-      const std::uint32_t u = static_cast<std::uint32_t>(be(4));
-      float f;
-      std::memcpy(&f, &u, 4);
-      return f;
-    }
-    case FLOAT64: {
-      const std::uint64_t u = be(8);
-      double d;
-      std::memcpy(&d, &u, 8);
-      return d;
-    }
-    case UINT8:
-      return p[0];
-    case INT8:
-      return static_cast<signed char>(p[0]);
-    case UINT16:
-      return static_cast<double>(be(2));
-    case INT16:
-      return static_cast<std::int16_t>(be(2));
-    case UINT32:
-      return static_cast<double>(be(4));
-    case INT32:
-      return static_cast<std::int32_t>(be(4));
-    case UINT64:
-      return static_cast<double>(be(8));
-    case INT64:
-      break;
-    }
-    return static_cast<double>(static_cast<std::int64_t>(be(8)));
+    return Flow_aligned_surfaces::internal::decode_binary_number(
+        type, Flow_aligned_surfaces::internal::Byte_order::BIG_ENDIAN_ORDER, p);
   }
 
   std::string file_;
@@ -640,20 +587,7 @@ template <class K>
 Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, const std::string* array_name,
                                                   const std::string* mask_name)
 {
-  std::ifstream is(filename, std::ios::binary);
-  if (!is)
-    throw VTK_legacy_error("read_VTK_flow_field: " + filename + ": cannot open the file for reading");
-  std::string contents;
-  is.seekg(0, std::ios::end);
-  const std::streamoff size = is.tellg();
-  if (size < 0)
-    throw VTK_legacy_error("read_VTK_flow_field: " + filename + ": cannot determine the size of the file");
-  contents.resize(static_cast<std::size_t>(size));
-  is.seekg(0, std::ios::beg);
-  is.read(&contents[0], size);
-  if (!is)
-    throw VTK_legacy_error("read_VTK_flow_field: " + filename + ": reading the file failed");
-
+  std::string contents = Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field");
   VTK_legacy_parser parser(filename, std::move(contents));
   parser.parse();
 
