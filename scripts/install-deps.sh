@@ -13,6 +13,7 @@ packages=(
   libsuitesparse-dev                    # CHOLMOD sparse Cholesky
   libopenblas-dev                       # an optimized BLAS for CHOLMOD (Debian defaults to the reference one)
   libtbb-dev                            # parallel loops
+  libvtk9-dev                           # VTK XML readers (.vti, .vtu, .vts, .pvd), optional
   libgtest-dev libgmock-dev libbenchmark-dev
   doxygen graphviz                      # documentation, built in the tests
 )

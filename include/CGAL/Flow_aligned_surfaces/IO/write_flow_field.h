@@ -3,7 +3,9 @@
 //
 // Writes a `Regular_grid_flow_field_3` as a legacy VTK file (`DATASET STRUCTURED_POINTS`,
 // `VECTORS velocity float`, and the node mask as `SCALARS inside unsigned_char`), BINARY
-// (big-endian) or ASCII, which ParaView, VisIt and `read_VTK_flow_field()` open.
+// (big-endian) or ASCII, or as a VTK XML ImageData file (`.vti`: the same arrays as Float32 and
+// UInt8, raw little-endian binary in an appended block), which ParaView, VisIt,
+// `read_VTK_flow_field()` and `read_VTK_XML_flow_field()` open.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_FLOW_FIELD_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_FLOW_FIELD_H
@@ -25,6 +27,39 @@
 namespace CGAL {
 namespace Flow_aligned_surfaces {
 namespace IO {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Writes 32-bit floats in the given byte order whatever the host's, in blocks to keep the
+// number of stream calls small.
+inline void write_float32s(std::ostream& os, const std::vector<float>& values, bool big_endian)
+{
+  std::vector<unsigned char> block;
+  block.reserve(4 * 4096);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    std::uint32_t u;
+    std::memcpy(&u, &values[i], 4);
+    for (int b = 0; b < 4; ++b)
+      block.push_back(static_cast<unsigned char>(u >> (8 * (big_endian ? 3 - b : b))));
+    if (block.size() == block.capacity() || i + 1 == values.size()) {
+      os.write(reinterpret_cast<const char*>(block.data()), static_cast<std::streamsize>(block.size()));
+      block.clear();
+    }
+  }
+}
+
+// The mask as bytes 1 (fluid) and 0 (solid).
+inline std::vector<unsigned char> mask_flags(const std::vector<unsigned char>& mask)
+{
+  std::vector<unsigned char> flags(mask.size());
+  for (std::size_t v = 0; v < mask.size(); ++v)
+    flags[v] = mask[v] != 0 ? 1 : 0;
+  return flags;
+}
+
+} // namespace internal
+/// \endcond
 
 /*!
 \ingroup PkgFlowAlignedSurfacesIO
@@ -73,7 +108,7 @@ complete, so an existing file is never left half-written.
 \returns `true` on success; `false` if an array name is empty or holds white space or the file
 could not be written, with the reason in `error` when it is not null.
 
-\sa `read_VTK_flow_field()`
+\sa `read_VTK_flow_field()`, `write_VTI_flow_field()`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_field_3<K>& field,
@@ -118,20 +153,7 @@ bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_f
            << "POINT_DATA " << field.number_of_nodes() << '\n'
            << "VECTORS " << velocity_name << " float\n";
         if (binary) {
-          // Big-endian whatever the host, in blocks to keep the number of stream calls small.
-          std::vector<unsigned char> block;
-          block.reserve(4 * 4096);
-          for (std::size_t i = 0; i < values.size(); ++i) {
-            std::uint32_t u;
-            std::memcpy(&u, &values[i], 4);
-            for (int b = 3; b >= 0; --b)
-              block.push_back(static_cast<unsigned char>(u >> (8 * b)));
-            if (block.size() == block.capacity() || i + 1 == values.size()) {
-              os.write(reinterpret_cast<const char*>(block.data()),
-                       static_cast<std::streamsize>(block.size()));
-              block.clear();
-            }
-          }
+          internal::write_float32s(os, values, true);
           os << '\n';
         }
         else {
@@ -142,9 +164,7 @@ bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_f
         if (!mask.empty()) {
           os << "SCALARS " << mask_name << " unsigned_char 1\nLOOKUP_TABLE default\n";
           if (binary) {
-            std::vector<unsigned char> flags(mask.size());
-            for (std::size_t v = 0; v < mask.size(); ++v)
-              flags[v] = mask[v] != 0 ? 1 : 0;
+            const std::vector<unsigned char> flags = internal::mask_flags(mask);
             os.write(reinterpret_cast<const char*>(flags.data()), static_cast<std::streamsize>(flags.size()));
             os << '\n';
           }
@@ -153,6 +173,147 @@ bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_f
               os << (mask[v] != 0 ? '1' : '0') << ((v + 1) % n[0] == 0 ? '\n' : ' ');
           }
         }
+      });
+  return written ? true : fail(reason);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Writes a grid flow field to `filename` as a VTK XML ImageData file (`.vti`).
+
+The file holds an `ImageData` with `WholeExtent` `0 nx-1 0 ny-1 0 nz-1` and the field's
+`Origin` and `Spacing` (17 significant digits, so they read back exactly), one `Piece` whose
+point data holds the velocity as a 3-component `Float32` array (the active vectors) and, if
+the field has a mask, the mask as a `UInt8` array (1 = fluid, 0 = solid).  The arrays are
+stored raw, little-endian, in the file's `AppendedData` block (`encoding="raw"`,
+`header_type="UInt64"`: each array is preceded by its size in bytes), the most compact form
+VTK reads; no compression.  The file is first written beside `filename` and renamed over it
+only when complete, so an existing file is never left half-written.  VTK is not needed.
+
+\tparam K a model of `Kernel`
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the output file
+\param field the field to write
+\param np an optional sequence of named parameters among the ones listed below
+\param error if not null, receives the reason of a failure
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{array_name}
+    \cgalParamDescription{the name of the velocity array (`FAS::parameters::array_name()`)}
+    \cgalParamType{`std::string`, not empty}
+    \cgalParamDefault{`"velocity"`}
+  \cgalParamNEnd
+  \cgalParamNBegin{mask_array_name}
+    \cgalParamDescription{the name of the mask array (`FAS::parameters::mask_array_name()`)}
+    \cgalParamType{`std::string`, not empty}
+    \cgalParamDefault{`"inside"`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns `true` on success; `false` if an array name is empty or the two names are equal, or the
+file could not be written, with the reason in `error` when it is not null.
+
+\sa `read_VTK_XML_flow_field()`, `write_VTK_flow_field()`
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_field_3<K>& field,
+                          const NamedParameters& np = CGAL::parameters::default_values(),
+                          std::string* error = nullptr)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const std::string velocity_name = choose_parameter(
+      get_parameter(np, Flow_aligned_surfaces::internal_np::array_name_t()), std::string("velocity"));
+  const std::string mask_name = choose_parameter(
+      get_parameter(np, Flow_aligned_surfaces::internal_np::mask_array_name_t()), std::string("inside"));
+
+  auto fail = [&](const std::string& reason) {
+    if (error)
+      *error = "write_VTI_flow_field: " + filename + ": " + reason;
+    return false;
+  };
+  const std::vector<unsigned char>& mask = field.mask();
+  if (velocity_name.empty() || mask_name.empty())
+    return fail("an array name is empty; VTK selects arrays by name");
+  if (!mask.empty() && velocity_name == mask_name)
+    return fail("the velocity and the mask arrays are both named '" + velocity_name + "'");
+
+  // Names are free text in XML attributes: escape the five special characters.
+  auto escaped = [](const std::string& s) {
+    std::string r;
+    for (char c : s) {
+      switch (c) {
+      case '&':
+        r += "&amp;";
+        break;
+      case '<':
+        r += "&lt;";
+        break;
+      case '>':
+        r += "&gt;";
+        break;
+      case '"':
+        r += "&quot;";
+        break;
+      case '\'':
+        r += "&apos;";
+        break;
+      default:
+        r += c;
+      }
+    }
+    return r;
+  };
+  const auto& n = field.dimensions();
+  const std::vector<float>& values = field.values();
+  const std::uint64_t velocity_bytes = 4 * static_cast<std::uint64_t>(values.size());
+  const std::uint64_t mask_offset = 8 + velocity_bytes;
+
+  std::string reason;
+  const bool written =
+      Flow_aligned_surfaces::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+        os.precision(17);
+        const std::string extent = "0 " + std::to_string(n[0] - 1) + " 0 " + std::to_string(n[1] - 1) +
+                                   " 0 " + std::to_string(n[2] - 1);
+        os << "<?xml version=\"1.0\"?>\n"
+           << "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+              "header_type=\"UInt64\">\n"
+           << "  <ImageData WholeExtent=\"" << extent << "\" Origin=\"" << CGAL::to_double(field.origin().x())
+           << ' ' << CGAL::to_double(field.origin().y()) << ' ' << CGAL::to_double(field.origin().z())
+           << "\" Spacing=\"" << CGAL::to_double(field.spacing().x()) << ' '
+           << CGAL::to_double(field.spacing().y()) << ' ' << CGAL::to_double(field.spacing().z()) << "\">\n"
+           << "    <Piece Extent=\"" << extent << "\">\n"
+           << "      <PointData Vectors=\"" << escaped(velocity_name) << '"';
+        if (!mask.empty())
+          os << " Scalars=\"" << escaped(mask_name) << '"';
+        os << ">\n"
+           << "        <DataArray type=\"Float32\" Name=\"" << escaped(velocity_name)
+           << "\" NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/>\n";
+        if (!mask.empty())
+          os << "        <DataArray type=\"UInt8\" Name=\"" << escaped(mask_name)
+             << "\" NumberOfComponents=\"1\" format=\"appended\" offset=\"" << mask_offset << "\"/>\n";
+        os << "      </PointData>\n"
+           << "      <CellData>\n      </CellData>\n"
+           << "    </Piece>\n"
+           << "  </ImageData>\n"
+           << "  <AppendedData encoding=\"raw\">\n   _";
+        // Each block: its size in bytes (UInt64, little-endian), then the values.
+        auto write_size = [&os](std::uint64_t size) {
+          unsigned char b[8];
+          for (int i = 0; i < 8; ++i)
+            b[i] = static_cast<unsigned char>(size >> (8 * i));
+          os.write(reinterpret_cast<const char*>(b), 8);
+        };
+        write_size(velocity_bytes);
+        internal::write_float32s(os, values, false);
+        if (!mask.empty()) {
+          const std::vector<unsigned char> flags = internal::mask_flags(mask);
+          write_size(flags.size());
+          os.write(reinterpret_cast<const char*>(flags.data()), static_cast<std::streamsize>(flags.size()));
+        }
+        os << "\n  </AppendedData>\n</VTKFile>\n";
       });
   return written ? true : fail(reason);
 }

@@ -1,0 +1,831 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reads velocity fields from VTK XML files through the VTK library (9.x): an ImageData file
+// (.vti, a uniform grid of nx × ny × nz points) into a `Regular_grid_flow_field_3`, and an
+// UnstructuredGrid (.vtu), StructuredGrid (.vts) or ImageData file into an
+// `Unstructured_flow_field_3` (a curvilinear or uniform grid as its (nx-1)(ny-1)(nz-1)
+// hexahedra); and a ParaView data collection (.pvd: steps t_0 ... t_n, one file each) into an
+// `Unsteady_flow_field_3`.  The velocity is a 3-component point array, the optional mask a
+// 1-component point array (nonzero = fluid).  VTK's own error messages are captured by
+// observers on the reader, its XML parser and its pipeline, never printed, and returned in the
+// error message.
+//
+// Needs VTK: link the target CGAL::Flow_aligned_surfaces_VTK.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_READ_VTK_XML_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_READ_VTK_XML_H
+
+#include <string>
+
+#include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
+#include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#include <vtkCellTypes.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
+#include <vtkCommand.h>
+#include <vtkExecutive.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStructuredGrid.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+#include <vtkXMLImageDataReader.h>
+#include <vtkXMLStructuredGridReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace IO {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+typedef Flow_aligned_surfaces::internal::Read_error VTK_XML_error;
+
+// Collects the errors that VTK objects report, which VTK would otherwise print (to its log and
+// output window): every object it watches reports to it instead, warnings are dropped.
+class VTK_error_observer : public vtkCommand {
+public:
+  static VTK_error_observer* New() { return new VTK_error_observer; }
+
+  void watch(vtkObject* object)
+  {
+    if (object == nullptr)
+      return;
+    object->AddObserver(vtkCommand::ErrorEvent, this);
+    object->AddObserver(vtkCommand::WarningEvent, this);
+  }
+
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    if (event == vtkCommand::ErrorEvent)
+      errors_.push_back(cleaned(static_cast<const char*>(data)));
+  }
+
+  bool has_errors() const { return !errors_.empty(); }
+
+  // VTK's errors, without the pipeline's restatement of them ("Algorithm ... returned failure
+  // for request: <a dump of the request>") unless it is all there is.
+  std::string errors() const
+  {
+    std::string r;
+    for (const std::string& e : errors_) {
+      if (e.find("returned failure for request") != std::string::npos && errors_.size() > 1)
+        continue;
+      if (r.find(e) != std::string::npos)
+        continue;
+      r += (r.empty() ? "" : "; ") + e;
+      if (r.size() > 1000) {
+        r += "; ...";
+        break;
+      }
+    }
+    return r;
+  }
+
+private:
+  // "ERROR: In /path/vtkXMLReader.cxx, line 521\nvtkXMLImageDataReader (0x55d0): words\n\n"
+  // becomes "vtkXMLImageDataReader: words".
+  static std::string cleaned(const char* text)
+  {
+    std::string s = text ? text : "";
+    if (s.rfind("ERROR: In ", 0) == 0) {
+      const std::size_t eol = s.find('\n');
+      s = eol == std::string::npos ? std::string() : s.substr(eol + 1);
+    }
+    const std::size_t open = s.find(" (0x");
+    const std::size_t close = s.find("): ");
+    if (open != std::string::npos && close != std::string::npos && open < close &&
+        s.find_first_of(" \n") == open)
+      s = s.substr(0, open) + ": " + s.substr(close + 3);
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ' || s.back() == '\r'))
+      s.pop_back();
+    for (char& c : s)
+      if (c == '\n')
+        c = ' ';
+    return s;
+  }
+
+  std::vector<std::string> errors_;
+};
+
+// An observer watching a VTK XML reader, its XML parser and its pipeline.
+template <class Reader>
+vtkSmartPointer<VTK_error_observer> watch_VTK_reader(Reader* reader)
+{
+  vtkSmartPointer<VTK_error_observer> observer = vtkSmartPointer<VTK_error_observer>::New();
+  observer->watch(reader);
+  observer->watch(reader->GetExecutive());
+  reader->SetReaderErrorObserver(observer);
+  reader->SetParserErrorObserver(observer);
+  return observer;
+}
+
+// The reader's name and the file, at the head of every message.
+struct VTK_XML_context {
+  std::string reader, file;
+  [[noreturn]] void fail(const std::string& what) const
+  {
+    throw VTK_XML_error(reader + ": " + file + ": " + what);
+  }
+};
+
+// Opening the file ourselves first gives a plain message for a missing or unreadable file
+// rather than VTK's.
+inline void check_readable(const VTK_XML_context& c)
+{
+  std::error_code ec;
+  if (std::filesystem::is_directory(c.file, ec))
+    c.fail("is a directory, not a file");
+  std::ifstream is(c.file, std::ios::binary);
+  if (!is)
+    c.fail(std::filesystem::exists(c.file, ec) ? "cannot open the file for reading (permissions?)"
+                                               : "no such file");
+}
+
+template <class Reader>
+bool VTK_can_read(const std::string& filename)
+{
+  vtkSmartPointer<Reader> reader = vtkSmartPointer<Reader>::New();
+  const vtkSmartPointer<VTK_error_observer> observer = watch_VTK_reader(reader.Get());
+  return reader->CanReadFile(filename.c_str()) != 0;
+}
+
+// What the file is, for the message when it is not what the caller wants.
+inline std::string VTK_XML_kind(const std::string& filename)
+{
+  if (VTK_can_read<vtkXMLImageDataReader>(filename))
+    return "a VTK XML ImageData file (.vti)";
+  if (VTK_can_read<vtkXMLUnstructuredGridReader>(filename))
+    return "a VTK XML UnstructuredGrid file (.vtu)";
+  if (VTK_can_read<vtkXMLStructuredGridReader>(filename))
+    return "a VTK XML StructuredGrid file (.vts)";
+  return "not a VTK XML ImageData, UnstructuredGrid or StructuredGrid file";
+}
+
+// Runs a VTK reader on the file; its errors become ours.
+template <class Reader>
+vtkSmartPointer<vtkDataSet> run_VTK_reader(const VTK_XML_context& c)
+{
+  vtkSmartPointer<Reader> reader = vtkSmartPointer<Reader>::New();
+  const vtkSmartPointer<VTK_error_observer> messages = watch_VTK_reader(reader.Get());
+  reader->SetFileName(c.file.c_str());
+  reader->Update();
+  vtkSmartPointer<vtkDataSet> output = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (messages->has_errors())
+    c.fail("VTK cannot read it: " + messages->errors());
+  if (output == nullptr || output->GetNumberOfPoints() == 0)
+    c.fail("VTK read no points from it (an empty data set or an empty piece)");
+  return output;
+}
+
+inline std::string describe_VTK_arrays(vtkPointData* pd)
+{
+  std::string r;
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i) {
+    vtkAbstractArray* a = pd->GetAbstractArray(i);
+    if (a == nullptr)
+      continue;
+    const int n = a->GetNumberOfComponents();
+    r += (r.empty() ? "'" : ", '") + std::string(a->GetName() ? a->GetName() : "") + "' (" +
+         a->GetDataTypeAsString() + ", " + std::to_string(n) + " component" + (n == 1 ? "" : "s") + ")";
+  }
+  return r.empty() ? std::string("none") : r;
+}
+
+// The velocity and mask of the point data, chosen as documented, as floats and fluid flags.
+// `where(i)` names point i in messages.
+template <class Where>
+void read_VTK_point_arrays(const VTK_XML_context& c, vtkDataSet* ds, const std::string* array_name,
+                           const std::string* mask_name, const Where& where, std::vector<float>& values,
+                           std::vector<unsigned char>& flags)
+{
+  vtkPointData* pd = ds->GetPointData();
+  const std::size_t n = static_cast<std::size_t>(ds->GetNumberOfPoints());
+  const std::string present = " (the point data arrays are: " + describe_VTK_arrays(pd) + ")";
+  vtkDataArray* velocity = nullptr;
+  if (array_name != nullptr) {
+    vtkAbstractArray* a = pd->GetAbstractArray(array_name->c_str());
+    if (a == nullptr)
+      c.fail("there is no point data array named '" + *array_name + "'" + present);
+    velocity = vtkDataArray::SafeDownCast(a);
+    if (velocity == nullptr)
+      c.fail("the point data array '" + *array_name + "' holds " + a->GetDataTypeAsString() +
+             ", not numbers; a velocity needs 3 numbers per point");
+  }
+  else {
+    velocity = pd->GetVectors();
+    for (int i = 0;
+         i < pd->GetNumberOfArrays() && (velocity == nullptr || velocity->GetNumberOfComponents() != 3); ++i)
+      velocity = pd->GetArray(i);
+    if (velocity == nullptr || velocity->GetNumberOfComponents() != 3)
+      c.fail("there is no 3-component point data array to read as the velocity" + present);
+  }
+  const std::string velocity_name = velocity->GetName() ? velocity->GetName() : "";
+  if (velocity->GetNumberOfComponents() != 3)
+    c.fail("the point data array '" + velocity_name + "' has " +
+           std::to_string(velocity->GetNumberOfComponents()) +
+           " components; a velocity needs 3 numbers per point");
+
+  vtkDataArray* mask = nullptr;
+  const std::string mask_array = mask_name ? *mask_name : std::string("inside");
+  if (!mask_array.empty()) {
+    vtkAbstractArray* a = pd->GetAbstractArray(mask_array.c_str());
+    if (a == nullptr && mask_name != nullptr)
+      c.fail("there is no point data array named '" + mask_array + "' for the mask" + present);
+    if (a != nullptr) {
+      mask = vtkDataArray::SafeDownCast(a);
+      if (mask == nullptr || mask->GetNumberOfComponents() != 1)
+        c.fail("the mask array '" + mask_array + "' has " + std::to_string(a->GetNumberOfComponents()) +
+               " components of type " + a->GetDataTypeAsString() + "; a mask needs 1 number per point");
+    }
+  }
+  for (vtkDataArray* a : {velocity, mask})
+    if (a != nullptr && static_cast<std::size_t>(a->GetNumberOfTuples()) != n)
+      c.fail(std::string(a == mask ? "the mask array '" : "the velocity array '") +
+             (a->GetName() ? a->GetName() : "") + "' has " + std::to_string(a->GetNumberOfTuples()) +
+             " tuples but the data set has " + std::to_string(n) + " points");
+
+  std::vector<unsigned char> f;
+  if (mask != nullptr) {
+    f.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double m = mask->GetComponent(static_cast<vtkIdType>(i), 0);
+      if (std::isnan(m))
+        c.fail("the mask '" + mask_array + "' is NaN at point " + where(i));
+      f[i] = m != 0. ? 1 : 0;
+    }
+  }
+  std::vector<float> v(3 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    double x[3];
+    velocity->GetTuple(static_cast<vtkIdType>(i), x);
+    for (int d = 0; d < 3; ++d) {
+      const bool representable =
+          std::isfinite(x[d]) && std::fabs(x[d]) <= static_cast<double>((std::numeric_limits<float>::max)());
+      if (!representable && (f.empty() || f[i] != 0)) {
+        std::ostringstream msg;
+        msg << "the velocity '" << velocity_name << "' at point " << where(i) << ", component " << d
+            << ", is " << x[d]
+            << (std::isfinite(x[d]) ? ", which does not fit in a 32-bit float" : "; expected a finite number")
+            << (f.empty() ? "" : " at a fluid point");
+        c.fail(msg.str());
+      }
+      // Solid points' values are never interpolated; the fields' constructors want them finite.
+      v[3 * i + d] = representable ? static_cast<float>(x[d]) : 0.f;
+    }
+  }
+  values = std::move(v);
+  flags = std::move(f);
+}
+
+inline std::string describe_image_point(const std::array<std::size_t, 3>& n, std::size_t i)
+{
+  return std::to_string(i) + " = (" + std::to_string(i % n[0]) + ", " + std::to_string((i / n[0]) % n[1]) +
+         ", " + std::to_string(i / (n[0] * n[1])) + ")";
+}
+
+// The image's dimensions, checked to be a 3D grid without rotation.
+inline std::array<std::size_t, 3> checked_image_dimensions(const VTK_XML_context& c, vtkImageData* image)
+{
+  int d[3];
+  image->GetDimensions(d);
+  std::array<std::size_t, 3> n;
+  for (int a = 0; a < 3; ++a) {
+    if (d[a] < 2)
+      c.fail("the image has " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
+             std::to_string(d[2]) +
+             " points; a grid needs at least 2 points along each axis (2D and 1D images are not supported)");
+    n[a] = static_cast<std::size_t>(d[a]);
+  }
+  if (vtkMatrix3x3* m = image->GetDirectionMatrix()) {
+    for (int r = 0; r < 3; ++r)
+      for (int col = 0; col < 3; ++col)
+        if (m->GetElement(r, col) != (r == col ? 1. : 0.)) {
+          std::ostringstream msg;
+          msg << "the image has the Direction matrix (";
+          for (int k = 0; k < 9; ++k)
+            msg << (k ? " " : "") << m->GetElement(k / 3, k % 3);
+          msg << "), which is not the identity: rotated images are not supported";
+          c.fail(msg.str());
+        }
+  }
+  return n;
+}
+
+template <class K>
+Regular_grid_flow_field_3<K> read_VTK_XML_grid(const VTK_XML_context& c, const std::string* array_name,
+                                               const std::string* mask_name)
+{
+  check_readable(c);
+  if (!VTK_can_read<vtkXMLImageDataReader>(c.file))
+    c.fail("this is " + VTK_XML_kind(c.file) +
+           "; a Regular_grid_flow_field_3 is read from a VTK XML ImageData file (.vti)");
+  vtkSmartPointer<vtkDataSet> ds = run_VTK_reader<vtkXMLImageDataReader>(c);
+  vtkImageData* image = vtkImageData::SafeDownCast(ds);
+  const std::array<std::size_t, 3> n = checked_image_dimensions(c, image);
+  std::vector<float> values;
+  std::vector<unsigned char> flags;
+  read_VTK_point_arrays(
+      c, ds, array_name, mask_name, [&n](std::size_t i) { return describe_image_point(n, i); }, values,
+      flags);
+  // The grid's origin is the image's first point, which the extent may move off VTK's origin.
+  double first[3], spacing[3];
+  image->GetPoint(0, first);
+  image->GetSpacing(spacing);
+  typedef typename K::Point_3 Point_3;
+  typedef typename K::Vector_3 Vector_3;
+  try {
+    return Regular_grid_flow_field_3<K>(Point_3(first[0], first[1], first[2]),
+                                        Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values),
+                                        std::move(flags));
+  } catch (const std::invalid_argument& e) {
+    c.fail(e.what());
+  }
+}
+
+// The cells of the data set as VTK arrays, with the velocity and the mask; cells touching a
+// solid point are dropped.
+template <class K>
+Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const std::string* array_name,
+                                                const std::string* mask_name)
+{
+  typedef typename Unstructured_flow_field_3<K>::Index Index;
+  check_readable(c);
+  vtkSmartPointer<vtkDataSet> ds;
+  std::optional<std::array<std::size_t, 3>> structured;
+  if (VTK_can_read<vtkXMLUnstructuredGridReader>(c.file)) {
+    ds = run_VTK_reader<vtkXMLUnstructuredGridReader>(c);
+  }
+  else if (VTK_can_read<vtkXMLStructuredGridReader>(c.file)) {
+    ds = run_VTK_reader<vtkXMLStructuredGridReader>(c);
+    int d[3];
+    vtkStructuredGrid::SafeDownCast(ds)->GetDimensions(d);
+    for (int a = 0; a < 3; ++a)
+      if (d[a] < 2)
+        c.fail("the structured grid has " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " +
+               std::to_string(d[2]) + " points; it needs at least 2 points along each axis");
+    structured = {{std::size_t(d[0]), std::size_t(d[1]), std::size_t(d[2])}};
+  }
+  else if (VTK_can_read<vtkXMLImageDataReader>(c.file)) {
+    ds = run_VTK_reader<vtkXMLImageDataReader>(c);
+    structured = checked_image_dimensions(c, vtkImageData::SafeDownCast(ds));
+  }
+  else {
+    c.fail("this is " + VTK_XML_kind(c.file) +
+           "; an Unstructured_flow_field_3 is read from a VTK XML UnstructuredGrid (.vtu), StructuredGrid "
+           "(.vts) or ImageData (.vti) file");
+  }
+
+  const std::size_t np = static_cast<std::size_t>(ds->GetNumberOfPoints());
+  std::vector<float> values;
+  std::vector<unsigned char> flags;
+  if (structured)
+    read_VTK_point_arrays(
+        c, ds, array_name, mask_name, [&](std::size_t i) { return describe_image_point(*structured, i); },
+        values, flags);
+  else
+    read_VTK_point_arrays(
+        c, ds, array_name, mask_name, [](std::size_t i) { return std::to_string(i); }, values, flags);
+
+  std::vector<double> points(3 * np);
+  for (std::size_t i = 0; i < np; ++i)
+    ds->GetPoint(static_cast<vtkIdType>(i), points.data() + 3 * i);
+
+  std::vector<Index> connectivity, offsets;
+  std::vector<unsigned char> types;
+  if (structured) {
+    Flow_aligned_surfaces::internal::Structured_grid_cells cells =
+        Flow_aligned_surfaces::internal::structured_grid_cells(*structured);
+    connectivity = std::move(cells.connectivity);
+    offsets = std::move(cells.offsets);
+    types = std::move(cells.cell_types);
+  }
+  else {
+    vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(ds);
+    const vtkIdType nc = grid->GetNumberOfCells();
+    if (nc == 0)
+      c.fail("the unstructured grid has no cells");
+    offsets.reserve(static_cast<std::size_t>(nc) + 1);
+    types.reserve(static_cast<std::size_t>(nc));
+    offsets.push_back(0);
+    for (vtkIdType cell = 0; cell < nc; ++cell) {
+      const int type = grid->GetCellType(cell);
+      if (type != VTK_TETRA && type != VTK_HEXAHEDRON && type != VTK_WEDGE && type != VTK_PYRAMID) {
+        const char* name = vtkCellTypes::GetClassNameFromTypeId(type);
+        c.fail("cell " + std::to_string(cell) + " has the VTK cell type " + std::to_string(type) + " (" +
+               (name ? name : "unknown") +
+               "); supported are 10 (tetrahedron), 12 (hexahedron), 13 (wedge) and 14 (pyramid)");
+      }
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      grid->GetCellPoints(cell, n, ids);
+      connectivity.insert(connectivity.end(), ids, ids + n);
+      offsets.push_back(static_cast<Index>(connectivity.size()));
+      types.push_back(static_cast<unsigned char>(type));
+    }
+  }
+
+  if (!flags.empty()) {
+    std::vector<Index> kept_connectivity, kept_offsets(1, 0);
+    std::vector<unsigned char> kept_types;
+    for (std::size_t cell = 0; cell < types.size(); ++cell) {
+      const Index* b = connectivity.data() + offsets[cell];
+      const Index* e = connectivity.data() + offsets[cell + 1];
+      // Indices out of range are left for the field's constructor to report.
+      if (std::any_of(b, e,
+                      [&](Index p) { return p >= 0 && std::size_t(p) < np && flags[std::size_t(p)] == 0; }))
+        continue;
+      kept_connectivity.insert(kept_connectivity.end(), b, e);
+      kept_offsets.push_back(static_cast<Index>(kept_connectivity.size()));
+      kept_types.push_back(types[cell]);
+    }
+    if (kept_types.empty())
+      c.fail("every one of the " + std::to_string(types.size()) +
+             " cells touches a solid point of the mask (no fluid cell is left)");
+    connectivity = std::move(kept_connectivity);
+    offsets = std::move(kept_offsets);
+    types = std::move(kept_types);
+  }
+  try {
+    return Unstructured_flow_field_3<K>(points, std::move(connectivity), std::move(offsets), std::move(types),
+                                        std::move(values));
+  } catch (const std::invalid_argument& e) {
+    c.fail(e.what());
+  }
+}
+
+template <class Field>
+struct VTK_XML_field_reader;
+
+template <class K>
+struct VTK_XML_field_reader<Regular_grid_flow_field_3<K>> {
+  static Regular_grid_flow_field_3<K> read(const VTK_XML_context& c, const std::string* a,
+                                           const std::string* m)
+  {
+    return read_VTK_XML_grid<K>(c, a, m);
+  }
+};
+
+template <class K>
+struct VTK_XML_field_reader<Unstructured_flow_field_3<K>> {
+  static Unstructured_flow_field_3<K> read(const VTK_XML_context& c, const std::string* a,
+                                           const std::string* m)
+  {
+    return read_VTK_XML_cells<K>(c, a, m);
+  }
+};
+
+// The array names of the named parameters; null where not given.
+struct VTK_XML_array_names {
+  std::string array, mask;
+  bool has_array = false, has_mask = false;
+  const std::string* array_name() const { return has_array ? &array : nullptr; }
+  const std::string* mask_name() const { return has_mask ? &mask : nullptr; }
+};
+
+template <class NamedParameters>
+VTK_XML_array_names VTK_XML_names(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  VTK_XML_array_names r;
+  r.array =
+      choose_parameter(get_parameter(np, Flow_aligned_surfaces::internal_np::array_name_t()), std::string());
+  r.mask = choose_parameter(get_parameter(np, Flow_aligned_surfaces::internal_np::mask_array_name_t()),
+                            std::string());
+  r.has_array = !parameters::is_default_parameter<NamedParameters,
+                                                  Flow_aligned_surfaces::internal_np::array_name_t>::value;
+  r.has_mask =
+      !parameters::is_default_parameter<NamedParameters,
+                                        Flow_aligned_surfaces::internal_np::mask_array_name_t>::value;
+  return r;
+}
+
+// Calls `read()`, which returns the field or throws VTK_XML_error; `false` + message otherwise.
+template <class Field, class Read>
+bool read_or_report(const std::string& reader, const std::string& filename, std::optional<Field>& field,
+                    std::string* error, const Read& read)
+{
+  try {
+    Field result = read();
+    field.emplace(std::move(result));
+    return true;
+  } catch (const VTK_XML_error& e) {
+    if (error)
+      *error = e.what();
+  } catch (const std::bad_alloc&) {
+    if (error)
+      *error = reader + ": " + filename + ": not enough memory for the field";
+  }
+  return false;
+}
+
+// The steps of a .pvd file: (time, file, byte offset of the DataSet element), in file order.
+struct PVD_step {
+  double time;
+  std::string file;
+  long long byte;
+};
+
+inline std::vector<PVD_step> read_PVD_steps(const VTK_XML_context& c)
+{
+  check_readable(c);
+  vtkSmartPointer<vtkXMLDataParser> parser = vtkSmartPointer<vtkXMLDataParser>::New();
+  const vtkSmartPointer<VTK_error_observer> messages = vtkSmartPointer<VTK_error_observer>::New();
+  messages->watch(parser);
+  parser->SetFileName(c.file.c_str());
+  const int parsed = parser->Parse();
+  if (!parsed || messages->has_errors() || parser->GetRootElement() == nullptr)
+    c.fail("VTK cannot parse it as XML: " +
+           (messages->has_errors() ? messages->errors() : std::string("no root element")));
+  vtkXMLDataElement* root = parser->GetRootElement();
+  const char* type = root->GetAttribute("type");
+  if (std::string(root->GetName() ? root->GetName() : "") != "VTKFile" || type == nullptr ||
+      std::string(type) != "Collection")
+    c.fail(std::string("the root element is <") + (root->GetName() ? root->GetName() : "") + " type=\"" +
+           (type ? type : "") + "\">; a ParaView data collection has <VTKFile type=\"Collection\">");
+  vtkXMLDataElement* collection = root->FindNestedElementWithName("Collection");
+  if (collection == nullptr)
+    c.fail("the VTKFile element has no <Collection> element");
+  const std::filesystem::path folder = std::filesystem::path(c.file).parent_path();
+  std::vector<PVD_step> steps;
+  for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
+    vtkXMLDataElement* e = collection->GetNestedElement(i);
+    if (std::string(e->GetName() ? e->GetName() : "") != "DataSet")
+      continue;
+    const std::string where = "byte " + std::to_string(e->GetXMLByteIndex()) + ": DataSet element " +
+                              std::to_string(steps.size()) + ": ";
+    const char* timestep = e->GetAttribute("timestep");
+    const char* file = e->GetAttribute("file");
+    if (timestep == nullptr)
+      c.fail(where + "no timestep attribute");
+    if (file == nullptr || *file == '\0')
+      c.fail(where + "no file attribute");
+    char* end = nullptr;
+    const double t = std::strtod(timestep, &end);
+    if (end == timestep || *end != '\0' || !std::isfinite(t))
+      c.fail(where + "the timestep '" + Flow_aligned_surfaces::internal::printable(timestep) +
+             "' is not a finite number");
+    std::filesystem::path path(file);
+    if (path.is_relative())
+      path = folder / path;
+    steps.push_back(PVD_step{t, path.string(), static_cast<long long>(e->GetXMLByteIndex())});
+  }
+  if (steps.empty())
+    c.fail("the Collection holds no DataSet element");
+  return steps;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field on a uniform grid from a VTK XML ImageData file (`.vti`) into an
+optional, for callers that have no field yet; same as the overload below otherwise.
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_VTK_XML_flow_field(const std::string& filename, std::optional<Regular_grid_flow_field_3<K>>& field,
+                             const NamedParameters& np = CGAL::parameters::default_values(),
+                             std::string* error = nullptr)
+{
+  const internal::VTK_XML_array_names names = internal::VTK_XML_names(np);
+  const internal::VTK_XML_context c{"read_VTK_XML_flow_field", filename};
+  return internal::read_or_report(c.reader, filename, field, error, [&] {
+    return internal::read_VTK_XML_grid<K>(c, names.array_name(), names.mask_name());
+  });
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field on a uniform grid from a VTK XML ImageData file (`.vti`) with
+VTK's `vtkXMLImageDataReader`.
+
+The image must have at least 2 points along each axis and no rotation (a `Direction` matrix
+other than the identity is refused); its first point is the grid's origin, whatever the
+extent.  The velocity is a 3-component point data array of any numeric type (stored as 32-bit
+floats), the node mask a 1-component point data array, nonzero = fluid.  Any encoding VTK
+reads is accepted (ASCII, base64, raw appended, compressed).
+
+Bad input never crashes or prints: a missing or unreadable file, a file VTK cannot read (its
+messages are captured and returned), a file of another kind, missing arrays (the message lists
+the arrays present), wrong numbers of components, a rotated or flat image, or a NaN or infinite
+velocity at a fluid point (the message gives the point's index) make the function return
+`false` with a message that names the file and what is wrong.  Non-finite values at solid
+points are accepted and stored as zero.
+
+\tparam K a model of `Kernel`
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the file to read
+\param field receives the field on success; left untouched on failure
+\param np an optional sequence of named parameters among the ones listed below
+\param error if not null, receives the reason of a failure
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{array_name}
+    \cgalParamDescription{the name of the velocity array (`FAS::parameters::array_name()`)}
+    \cgalParamType{`std::string`}
+    \cgalParamDefault{the active vectors of the point data if they have 3 components, else its first
+      3-component array}
+  \cgalParamNEnd
+  \cgalParamNBegin{mask_array_name}
+    \cgalParamDescription{the name of the node mask array (`FAS::parameters::mask_array_name()`);
+      an error if given and absent; the empty string reads no mask}
+    \cgalParamType{`std::string`}
+    \cgalParamDefault{`"inside"` if the file has it, else no mask}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+
+\sa `write_VTI_flow_field()`, `read_VTK_flow_field()`, `read_PVD_flow_field()`
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_VTK_XML_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field,
+                             const NamedParameters& np = CGAL::parameters::default_values(),
+                             std::string* error = nullptr)
+{
+  std::optional<Regular_grid_flow_field_3<K>> result;
+  if (!read_VTK_XML_flow_field(filename, result, np, error))
+    return false;
+  field = std::move(*result);
+  return true;
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field on cells from a VTK XML file into an optional, for callers that
+have no field yet; same as the overload below otherwise.
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_VTK_XML_flow_field(const std::string& filename, std::optional<Unstructured_flow_field_3<K>>& field,
+                             const NamedParameters& np = CGAL::parameters::default_values(),
+                             std::string* error = nullptr)
+{
+  const internal::VTK_XML_array_names names = internal::VTK_XML_names(np);
+  const internal::VTK_XML_context c{"read_VTK_XML_flow_field", filename};
+  return internal::read_or_report(c.reader, filename, field, error, [&] {
+    return internal::read_VTK_XML_cells<K>(c, names.array_name(), names.mask_name());
+  });
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field on cells from a VTK XML UnstructuredGrid (`.vtu`), StructuredGrid
+(`.vts`) or ImageData (`.vti`) file with VTK's readers.
+
+The kind of file is told by its contents, not its name.  An unstructured grid may hold
+tetrahedra, hexahedra, wedges and pyramids (VTK cell types 10, 12, 13, 14; any other type is
+refused with the cell's index and type).  A structured grid or an image (without rotation)
+becomes its hexahedra, point `(i, j, k)` being point `i + nx (j + ny k)`.  The velocity and the
+mask are chosen as for the overload reading a `Regular_grid_flow_field_3`; with a mask, every
+cell touching a solid point (mask value 0) is left out of the field.  Bad input is reported as
+there, and also a grid without cells or without any cell whose points are all fluid.
+
+\tparam K a model of `Kernel`
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the file to read
+\param field receives the field on success; left untouched on failure
+\param np an optional sequence of named parameters: `array_name` and `mask_array_name`, as for
+       the overload reading a `Regular_grid_flow_field_3`
+\param error if not null, receives the reason of a failure
+
+\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+
+\sa `Unstructured_flow_field_3`, `read_PVD_flow_field()`
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_VTK_XML_flow_field(const std::string& filename, Unstructured_flow_field_3<K>& field,
+                             const NamedParameters& np = CGAL::parameters::default_values(),
+                             std::string* error = nullptr)
+{
+  std::optional<Unstructured_flow_field_3<K>> result;
+  if (!read_VTK_XML_flow_field(filename, result, np, error))
+    return false;
+  field = std::move(*result);
+  return true;
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a time series from a ParaView data collection (`.pvd`) into an optional, for
+callers that have no field yet; same as the overload below otherwise.
+*/
+template <class Field, class NamedParameters = parameters::Default_named_parameters>
+bool read_PVD_flow_field(const std::string& filename, std::optional<Unsteady_flow_field_3<Field>>& field,
+                         const NamedParameters& np = CGAL::parameters::default_values(),
+                         std::string* error = nullptr)
+{
+  const internal::VTK_XML_array_names names = internal::VTK_XML_names(np);
+  const internal::VTK_XML_context c{"read_PVD_flow_field", filename};
+  return internal::read_or_report(c.reader, filename, field, error, [&] {
+    std::vector<internal::PVD_step> steps = internal::read_PVD_steps(c);
+    std::stable_sort(
+        steps.begin(), steps.end(),
+        [](const internal::PVD_step& a, const internal::PVD_step& b) { return a.time < b.time; });
+    for (std::size_t i = 1; i < steps.size(); ++i)
+      if (steps[i - 1].time == steps[i].time) {
+        std::ostringstream msg;
+        msg.precision(17);
+        msg << "the DataSet elements at bytes " << steps[i - 1].byte << " (file " << steps[i - 1].file
+            << ") and " << steps[i].byte << " (file " << steps[i].file << ") have the same timestep "
+            << steps[i].time << "; expected distinct times (several parts per step are not supported)";
+        c.fail(msg.str());
+      }
+    std::vector<double> times;
+    std::vector<Field> fields;
+    times.reserve(steps.size());
+    fields.reserve(steps.size());
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      const internal::VTK_XML_context step{"read_VTK_XML_flow_field", steps[i].file};
+      try {
+        fields.push_back(
+            internal::VTK_XML_field_reader<Field>::read(step, names.array_name(), names.mask_name()));
+      } catch (const internal::VTK_XML_error& e) {
+        std::ostringstream msg;
+        msg.precision(17);
+        msg << "step " << i << " (timestep " << steps[i].time << ", file " << steps[i].file
+            << "): " << e.what();
+        c.fail(msg.str());
+      }
+      times.push_back(steps[i].time);
+    }
+    return Unsteady_flow_field_3<Field>(std::move(times), std::move(fields));
+  });
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a time series of flow fields from a ParaView data collection (`.pvd`).
+
+The collection is parsed with VTK's `vtkXMLDataParser`: its `DataSet` elements each give a
+`timestep` and a `file`, relative to the folder of the `.pvd` file unless absolute.  Every step
+is read with `read_VTK_XML_flow_field()` into a `Field` (with the same named parameters) and
+the steps are sorted by time.  A collection that cannot be parsed, has no step, a step without
+a time or file, two steps with the same time, or a step that cannot be read makes the function
+return `false` with a message naming the `.pvd` file, the step (its index after sorting, its
+time and its file) and the reason given by the step's reader.
+
+\tparam Field `Regular_grid_flow_field_3<K>` or `Unstructured_flow_field_3<K>`
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the `.pvd` file to read
+\param field receives the time series on success; left untouched on failure
+\param np an optional sequence of named parameters: `array_name` and `mask_array_name`, as for
+       `read_VTK_XML_flow_field()`
+\param error if not null, receives the reason of a failure
+
+\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+
+\sa `Unsteady_flow_field_3`, `read_VTK_XML_flow_field()`
+*/
+template <class Field, class NamedParameters = parameters::Default_named_parameters>
+bool read_PVD_flow_field(const std::string& filename, Unsteady_flow_field_3<Field>& field,
+                         const NamedParameters& np = CGAL::parameters::default_values(),
+                         std::string* error = nullptr)
+{
+  std::optional<Unsteady_flow_field_3<Field>> result;
+  if (!read_PVD_flow_field(filename, result, np, error))
+    return false;
+  field = std::move(*result);
+  return true;
+}
+
+} // namespace IO
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_READ_VTK_XML_H
