@@ -15,7 +15,10 @@ frozen at a time \f$ t_0 \f$, `[&](const Point_3& p) { return field(p, t0); }`, 
 of `FlowField_3`, which is how the deformation of this package looks at one instant of an
 unsteady flow.
 
-\cgalHasModel{Any callable `std::optional<Vector_3>(const Point_3&, double)`, such as a lambda}
+\cgalHasModelsBegin
+\cgalHasModels{Any callable `std::optional<Vector_3>(const Point_3&, double)`, such as a lambda}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Unsteady_flow_field_3<FlowField>`}
+\cgalHasModelsEnd
 
 \sa `FlowField_3`
 */
