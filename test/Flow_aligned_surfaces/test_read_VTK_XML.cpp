@@ -494,6 +494,22 @@ TEST(ReadVTKXML, BadFilesGiveClearMessagesAndChangeNothing)
   expect_read_fails<Grid>(truncated, {"VTK cannot read it: "});
   expect_read_fails<Cells>(truncated, {"VTK cannot read it: "});
 
+  // A lying header: 10^12 points announced in a file of a few hundred bytes.
+  const std::string lying = temporary("lying.vti");
+  write_bytes(lying, hand_written_vti(velocity, "", "0 9999 0 9999 0 9999"));
+  expect_read_fails<Grid>(lying, {"the header announces 1e+12 points", "truncated file or wrong header"});
+  const std::string lying_vtu = temporary("lying.vtu");
+  write_bytes(
+      lying_vtu,
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\">\n"
+      "<UnstructuredGrid><Piece NumberOfPoints=\"100000000000\" NumberOfCells=\"1\">\n"
+      "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0"
+      "</DataArray></Points>\n<Cells><DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0"
+      "</DataArray><DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">1</DataArray>"
+      "<DataArray type=\"UInt8\" Name=\"types\" "
+      "format=\"ascii\">1</DataArray></Cells>\n</Piece></UnstructuredGrid></VTKFile>\n");
+  expect_read_fails<Cells>(lying_vtu, {"the header announces 1e+11 points and 1 cells"});
+
   // Arrays: missing (the message lists the present ones), wrong components, wrong types.
   const std::string arrays = temporary("arrays.vti");
   write_bytes(arrays, hand_written_vti(ascii_array("Float32", "two", 2, repeated("1 2", 8)) +

@@ -34,6 +34,8 @@
 #include <vtkExecutive.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
+#include <vtkInformation.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkStructuredGrid.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLDataElement.h>
@@ -187,6 +189,47 @@ inline std::string VTK_XML_kind(const std::string& filename)
   return "not a VTK XML ImageData, UnstructuredGrid or StructuredGrid file";
 }
 
+// The numbers of points and cells that the header of the file announces, after
+// UpdateInformation().
+inline std::array<double, 2> announced_size(vtkXMLUnstructuredDataReader* reader)
+{
+  reader->SetupUpdateExtent(0, 1, 0);
+  return {{double(reader->GetNumberOfPoints()), double(reader->GetNumberOfCells())}};
+}
+
+inline std::array<double, 2> announced_size(vtkXMLStructuredDataReader* reader)
+{
+  int e[6] = {0, -1, 0, -1, 0, -1};
+  reader->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), e);
+  double points = 1., cells = 1.;
+  for (int a = 0; a < 3; ++a) {
+    points *= std::max(0., double(e[2 * a + 1]) - double(e[2 * a]) + 1.);
+    cells *= std::max(0., double(e[2 * a + 1]) - double(e[2 * a]));
+  }
+  return {{points, cells}};
+}
+
+// VTK allocates its arrays from the header's counts before it reads the data.  Each point needs
+// at least a velocity (12 bytes as floats) and each cell 4 point indices (16 bytes); compressed
+// they can shrink by zlib's 1032:1 at most, so a header announcing more than 2000 times the
+// file's size is a lie, refused before VTK allocates.
+template <class Reader>
+void check_announced_size(const VTK_XML_context& c, Reader* reader)
+{
+  std::error_code ec;
+  const double bytes = static_cast<double>(std::filesystem::file_size(c.file, ec));
+  const std::array<double, 2> n = announced_size(reader);
+  const double needed = 12. * n[0] + 16. * n[1];
+  if (!ec && needed > 2000. * bytes + 1e6) {
+    std::ostringstream msg;
+    msg << "the header announces " << n[0] << " points and " << n[1] << " cells, which need at least "
+        << needed << " bytes, far more than the " << bytes
+        << " bytes of the file can hold even compressed (truncated file "
+        << "or wrong header?)";
+    c.fail(msg.str());
+  }
+}
+
 // Runs a VTK reader on the file; its errors become ours.
 template <class Reader>
 vtkSmartPointer<vtkDataSet> run_VTK_reader(const VTK_XML_context& c)
@@ -194,6 +237,11 @@ vtkSmartPointer<vtkDataSet> run_VTK_reader(const VTK_XML_context& c)
   vtkSmartPointer<Reader> reader = vtkSmartPointer<Reader>::New();
   const vtkSmartPointer<VTK_error_observer> messages = watch_VTK_reader(reader.Get());
   reader->SetFileName(c.file.c_str());
+  // The header first, so that a lying one cannot make VTK allocate far more than the file holds.
+  reader->UpdateInformation();
+  if (messages->has_errors())
+    c.fail("VTK cannot read it: " + messages->errors());
+  check_announced_size(c, reader.Get());
   reader->Update();
   vtkSmartPointer<vtkDataSet> output = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (messages->has_errors())
