@@ -375,6 +375,23 @@ TEST(ReadVTKXML, VTIWriterIsReadByVTKWithTheSameValuesAndGeometry)
   EXPECT_EQ(back->values(), plain.values());
 }
 
+TEST(ReadVTKXML, VTIWriterFailuresAreReportedAndKeepTheExistingFile)
+{
+  const Grid grid = sample_grid();
+  const std::string file = temporary("kept.vti");
+  write_bytes(file, "what the user had");
+  std::string error;
+  EXPECT_FALSE(FAS::IO::write_VTI_flow_field(file, grid, FAS::parameters::array_name(""), &error));
+  EXPECT_NE(error.find("write_VTI_flow_field: " + file + ": an array name is empty"), std::string::npos)
+      << error;
+  EXPECT_FALSE(FAS::IO::write_VTI_flow_field(file, grid, FAS::parameters::array_name("inside"), &error));
+  EXPECT_NE(error.find("both named 'inside'"), std::string::npos) << error;
+  EXPECT_EQ(read_bytes(file), "what the user had");
+  const std::string nowhere = temporary("no_such_folder/field.vti");
+  EXPECT_FALSE(FAS::IO::write_VTI_flow_field(nowhere, grid, CGAL::parameters::default_values(), &error));
+  EXPECT_NE(error.find("write_VTI_flow_field: " + nowhere + ": cannot open"), std::string::npos) << error;
+}
+
 TEST(ReadVTKXML, ImageWrittenByVTKWithAShiftedExtentGivesTheLinearField)
 {
   // Extent starting at (2, 1, 3): the first point is origin + (2, 1, 3) * spacing.
