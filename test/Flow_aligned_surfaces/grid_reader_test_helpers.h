@@ -1,6 +1,7 @@
 // What the tests of the uniform-grid readers share: files written byte by byte, numbers
 // appended in either byte order, a sentinel field that a failed read must leave as it was, and
-// the check of a failure (false, a message naming the file and every given part, field kept).
+// the checks of one reader (success; failure = false, a message naming the file and every given
+// part, the field kept).
 
 #ifndef FAS_TEST_GRID_READER_TEST_HELPERS_H
 #define FAS_TEST_GRID_READER_TEST_HELPERS_H
@@ -16,6 +17,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fas_test {
@@ -42,6 +44,36 @@ void append_binary(std::string& s, T v, bool big_endian)
     s += static_cast<char>(b[host_little == big_endian ? sizeof(T) - 1 - i : i]);
 }
 
+/// The vectors `f(i, j, k)` at the nodes of an `n[0] x n[1] x n[2]` grid, x fastest: as text, one
+/// node a line, 6 decimals (exact for quarters)...
+template <class F>
+std::string node_values_text(const Grid::Dimensions& n, const F& f)
+{
+  std::string s;
+  for (std::size_t k = 0; k < n[2]; ++k)
+    for (std::size_t j = 0; j < n[1]; ++j)
+      for (std::size_t i = 0; i < n[0]; ++i) {
+        const Grid::Vector_3 v = f(i, j, k);
+        s += std::to_string(v.x()) + " " + std::to_string(v.y()) + " " + std::to_string(v.z()) + "\n";
+      }
+  return s;
+}
+
+/// ... or as binary numbers of type `T` in the given byte order.
+template <class T, class F>
+std::string node_values_binary(const Grid::Dimensions& n, const F& f, bool big_endian)
+{
+  std::string s;
+  for (std::size_t k = 0; k < n[2]; ++k)
+    for (std::size_t j = 0; j < n[1]; ++j)
+      for (std::size_t i = 0; i < n[0]; ++i) {
+        const Grid::Vector_3 v = f(i, j, k);
+        for (int c = 0; c < 3; ++c)
+          append_binary(s, static_cast<T>(v[c]), big_endian);
+      }
+  return s;
+}
+
 /// A grid unlike the ones read, to detect that a failed read changed nothing.
 inline Grid sentinel_grid()
 {
@@ -59,22 +91,64 @@ inline void expect_untouched(const Grid& g)
   EXPECT_FALSE(g.has_mask());
 }
 
-/// Writes `contents` to `file`, reads it with `read(file, grid, error)` into a sentinel grid and
-/// expects `false`, a message naming the file and holding every one of `parts`, and the grid
-/// untouched.
-template <class Read>
-void expect_read_failure(const std::string& file, const std::string& contents,
-                         std::initializer_list<std::string> parts, const Read& read)
-{
-  write_bytes(file, contents);
-  Grid g = sentinel_grid();
-  std::string error;
-  EXPECT_FALSE(read(file, g, &error)) << file;
-  EXPECT_NE(error.find(file), std::string::npos) << "the message does not name the file: " << error;
-  for (const std::string& part : parts)
-    EXPECT_NE(error.find(part), std::string::npos) << "'" << part << "' is not in the message: " << error;
-  expect_untouched(g);
-}
+/// The checks of one reader: `Reader` is a functor `bool(file, Grid&, np, std::string* error)`
+/// calling it; the files go to the test's temporary folder, their names starting with `prefix`.
+template <class Reader>
+class Grid_reader_checks {
+public:
+  explicit Grid_reader_checks(std::string prefix) : prefix_(std::move(prefix)) {}
+
+  std::string temporary(const std::string& name) const { return ::testing::TempDir() + prefix_ + name; }
+
+  /// Writes `contents` to a file, reads it and expects success.
+  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+  Grid read_ok(const std::string& name, const std::string& contents,
+               const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
+    const std::string file = temporary(name);
+    write_bytes(file, contents);
+    Grid g = sentinel_grid();
+    std::string error;
+    EXPECT_TRUE(Reader()(file, g, np, &error)) << error;
+    return g;
+  }
+
+  /// Writes `contents` to a file, reads it into a sentinel grid and expects `false`, a message
+  /// naming the file and holding every one of `parts`, and the grid untouched.
+  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+  void expect_failure(const std::string& name, const std::string& contents,
+                      std::initializer_list<std::string> parts,
+                      const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
+    const std::string file = temporary(name);
+    write_bytes(file, contents);
+    Grid g = sentinel_grid();
+    std::string error;
+    EXPECT_FALSE(Reader()(file, g, np, &error)) << name;
+    EXPECT_NE(error.find(file), std::string::npos) << "the message does not name the file: " << error;
+    for (const std::string& part : parts)
+      EXPECT_NE(error.find(part), std::string::npos) << "'" << part << "' is not in the message: " << error;
+    expect_untouched(g);
+  }
+
+  /// Every prefix of `contents` shorter than `until` bytes (one every `step`) fails with a
+  /// message, the grid untouched.
+  void expect_every_cut_fails(const std::string& contents, std::size_t until, std::size_t step) const
+  {
+    const std::string file = temporary("every_cut");
+    for (std::size_t cut = 0; cut < until; cut += step) {
+      write_bytes(file, contents.substr(0, cut));
+      Grid g = sentinel_grid();
+      std::string error;
+      EXPECT_FALSE(Reader()(file, g, CGAL::parameters::default_values(), &error)) << "cut at " << cut;
+      EXPECT_FALSE(error.empty());
+      expect_untouched(g);
+    }
+  }
+
+private:
+  std::string prefix_;
+};
 
 } // namespace fas_test
 

@@ -23,10 +23,14 @@ using fas_test::Grid;
 using Point = Grid::Point_3;
 using Vector = Grid::Vector_3;
 
-std::string temporary(const std::string& name)
-{
-  return ::testing::TempDir() + "fas_read_AmiraMesh_" + name;
-}
+struct Reader {
+  template <class NamedParameters>
+  bool operator()(const std::string& file, Grid& g, const NamedParameters& np, std::string* error) const
+  {
+    return FAS::IO::read_AmiraMesh_flow_field(file, g, np, error);
+  }
+};
+const fas_test::Grid_reader_checks<Reader> checks("fas_read_AmiraMesh_");
 
 // The velocity written at node (i, j, k) of every test file: small integers and quarters, exact
 // in every type used.
@@ -35,31 +39,15 @@ Vector velocity(std::size_t i, std::size_t j, std::size_t k)
   return Vector(double(i) + 10. * double(j) + 100. * double(k), -double(i), 0.25 * double(k));
 }
 
-// The values of `velocity()` on an nx x ny x nz lattice, x fastest, as text.
 std::string ascii_velocities(std::size_t nx, std::size_t ny, std::size_t nz)
 {
-  std::string s;
-  for (std::size_t k = 0; k < nz; ++k)
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t i = 0; i < nx; ++i) {
-        const Vector v = velocity(i, j, k);
-        s += std::to_string(v.x()) + " " + std::to_string(v.y()) + " " + std::to_string(v.z()) + "\n";
-      }
-  return s;
+  return fas_test::node_values_text({{nx, ny, nz}}, velocity);
 }
 
 template <class T>
 std::string binary_velocities(std::size_t nx, std::size_t ny, std::size_t nz, bool big_endian)
 {
-  std::string s;
-  for (std::size_t k = 0; k < nz; ++k)
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t i = 0; i < nx; ++i) {
-        const Vector v = velocity(i, j, k);
-        for (int c = 0; c < 3; ++c)
-          fas_test::append_binary(s, static_cast<T>(v[c]), big_endian);
-      }
-  return s;
+  return fas_test::node_values_binary<T>({{nx, ny, nz}}, velocity, big_endian);
 }
 
 // BoundingBox 1 2 -1 0 0 0.5 on 3 x 2 x 2 nodes: hx = 0.5, hy = 1, hz = 0.5.
@@ -94,37 +82,15 @@ void expect_known_field(const Grid& g)
   EXPECT_NEAR(v->z(), 0.125, 1e-12);
 }
 
-template <class NamedParameters = FAS::parameters::Default_named_parameters>
-Grid read_ok(const std::string& name, const std::string& contents,
-             const NamedParameters& np = CGAL::parameters::default_values())
-{
-  const std::string file = temporary(name);
-  fas_test::write_bytes(file, contents);
-  Grid g = fas_test::sentinel_grid();
-  std::string error;
-  EXPECT_TRUE(FAS::IO::read_AmiraMesh_flow_field(file, g, np, &error)) << error;
-  return g;
-}
-
-template <class NamedParameters = FAS::parameters::Default_named_parameters>
-void expect_failure(const std::string& name, const std::string& contents,
-                    std::initializer_list<std::string> parts,
-                    const NamedParameters& np = CGAL::parameters::default_values())
-{
-  fas_test::expect_read_failure(temporary(name), contents, parts,
-                                [&](const std::string& file, Grid& g, std::string* error) {
-                                  return FAS::IO::read_AmiraMesh_flow_field(file, g, np, error);
-                                });
-}
-
 // ------------------------------------------------------------------------------------------
 // Good files
 
 TEST(ReadAmiraMesh, AsciiFileGivesTheWrittenValuesAtTheBoundingBoxNodes)
 {
-  const Grid g = read_ok("ascii.am", "# AmiraMesh 3D ASCII 2.0\n\n\ndefine Lattice 3 2 2\n\n" + parameters +
-                                         "Lattice { float[3] Data } @1\n\n# Data section follows\n@1\n" +
-                                         ascii_velocities(3, 2, 2) + "\n");
+  const Grid g =
+      checks.read_ok("ascii.am", "# AmiraMesh 3D ASCII 2.0\n\n\ndefine Lattice 3 2 2\n\n" + parameters +
+                                     "Lattice { float[3] Data } @1\n\n# Data section follows\n@1\n" +
+                                     ascii_velocities(3, 2, 2) + "\n");
   expect_known_field(g);
   EXPECT_FALSE(g.has_mask());
 }
@@ -133,8 +99,8 @@ TEST(ReadAmiraMesh, AvizoHeaderAndNoDataSectionLine)
 {
   // Without '# Data section follows' the data start at the first '@1'.
   const Grid g =
-      read_ok("avizo.am", "# Avizo 3D ASCII 2.0\ndefine Lattice 3 2 2\n" + parameters +
-                              "Lattice { double[3] velocity } = @1\n@1\n" + ascii_velocities(3, 2, 2));
+      checks.read_ok("avizo.am", "# Avizo 3D ASCII 2.0\ndefine Lattice 3 2 2\n" + parameters +
+                                     "Lattice { double[3] velocity } = @1\n@1\n" + ascii_velocities(3, 2, 2));
   expect_known_field(g);
 }
 
@@ -150,7 +116,7 @@ TEST(ReadAmiraMesh, BinaryLittleEndianWithMaskAndOtherLocationsSkipped)
   for (int n = 0; n < 12; ++n)
     file += static_cast<char>(n == 5 ? 0 : 1); // node 5 = (2, 1, 0) is solid
   file += "\n";
-  const Grid g = read_ok("little.am", file);
+  const Grid g = checks.read_ok("little.am", file);
   expect_known_field(g);
   ASSERT_TRUE(g.has_mask());
   for (std::size_t n = 0; n < 12; ++n)
@@ -168,8 +134,9 @@ TEST(ReadAmiraMesh, BinaryBigEndianNamedArraysOfOtherTypes)
                      "\n@3\n";
   for (int n = 0; n < 12; ++n)
     fas_test::append_binary(file, std::int16_t(n == 11 ? 0 : -3), true);
-  const Grid g = read_ok("big.am", file + "\n",
-                         FAS::parameters::array_name("velocity", FAS::parameters::mask_array_name("solid")));
+  const Grid g =
+      checks.read_ok("big.am", file + "\n",
+                     FAS::parameters::array_name("velocity", FAS::parameters::mask_array_name("solid")));
   expect_known_field(g);
   EXPECT_TRUE(g.is_fluid(0, 0, 0));
   EXPECT_FALSE(g.is_fluid(2, 1, 1));
@@ -178,7 +145,7 @@ TEST(ReadAmiraMesh, BinaryBigEndianNamedArraysOfOtherTypes)
                   "Lattice { ushort[3] v } @1\n# Data section follows\n@1\n";
   for (int n = 0; n < 24; ++n)
     fas_test::append_binary(u, std::uint16_t(n == 5 ? 65535 : n), true);
-  const Grid h = read_ok("ushort.am", u);
+  const Grid h = checks.read_ok("ushort.am", u);
   EXPECT_EQ(h.node_value(1, 0, 0), Vector(3, 4, 65535));
   EXPECT_EQ(h.node_value(1, 1, 1), Vector(21, 22, 23));
 }
@@ -190,10 +157,11 @@ TEST(ReadAmiraMesh, HxByteRLESectionsAreExpanded)
   std::string rle = {'\x0c', '\x00', '\x8c'};
   for (char c = 1; c <= 12; ++c)
     rle += c;
-  const Grid g = read_ok("rle.am", "# AmiraMesh BINARY-LITTLE-ENDIAN 2.1\ndefine Lattice 2 2 2\n"
-                                   "Parameters { BoundingBox 0 1 0 1 0 1, CoordType \"uniform\" }\n"
-                                   "Lattice { byte[3] Data } @1(HxByteRLE,15)\n# Data section follows\n@1\n" +
-                                       rle + "\n");
+  const Grid g =
+      checks.read_ok("rle.am", "# AmiraMesh BINARY-LITTLE-ENDIAN 2.1\ndefine Lattice 2 2 2\n"
+                               "Parameters { BoundingBox 0 1 0 1 0 1, CoordType \"uniform\" }\n"
+                               "Lattice { byte[3] Data } @1(HxByteRLE,15)\n# Data section follows\n@1\n" +
+                                   rle + "\n");
   EXPECT_EQ(g.node_value(1, 1, 0), Vector(0, 0, 0));
   EXPECT_EQ(g.node_value(0, 0, 1), Vector(1, 2, 3));
   EXPECT_EQ(g.node_value(1, 1, 1), Vector(10, 11, 12));
@@ -215,97 +183,94 @@ TEST(ReadAmiraMeshBadInput, NotAmiraMeshAndMissingParts)
 {
   Grid g = fas_test::sentinel_grid();
   std::string error;
-  EXPECT_FALSE(FAS::IO::read_AmiraMesh_flow_field(temporary("absent.am"), g,
+  EXPECT_FALSE(FAS::IO::read_AmiraMesh_flow_field(checks.temporary("absent.am"), g,
                                                   CGAL::parameters::default_values(), &error));
   EXPECT_NE(error.find("cannot open"), std::string::npos) << error;
   fas_test::expect_untouched(g);
-  expect_failure("not_am.am", "# vtk DataFile Version 3.0\n", {"line 1", "not an AmiraMesh file"});
-  expect_failure("empty.am", "", {"not an AmiraMesh file"});
-  expect_failure("no_lattice.am", "# AmiraMesh 3D ASCII 2.0\ndefine Markers 3\n# Data section follows\n",
-                 {"define Lattice"});
-  expect_failure("no_bounding_box.am",
-                 "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nParameters { CoordType \"uniform\" }\n"
-                 "Lattice { float[3] Data } @1\n# Data section follows\n@1\n" +
-                     ascii_velocities(2, 2, 2),
-                 {"BoundingBox"});
-  expect_failure("no_data_section.am", ascii_header, {"no data section"});
-  expect_failure("missing_section.am",
-                 ascii_header + "Lattice { byte inside } @2\n# Data section follows\n@1\n" +
-                     ascii_velocities(3, 2, 2),
-                 {"section @2", "'inside'", "missing"});
-  expect_failure(
+  checks.expect_failure("not_am.am", "# vtk DataFile Version 3.0\n", {"line 1", "not an AmiraMesh file"});
+  checks.expect_failure("empty.am", "", {"not an AmiraMesh file"});
+  checks.expect_failure("no_lattice.am",
+                        "# AmiraMesh 3D ASCII 2.0\ndefine Markers 3\n# Data section follows\n",
+                        {"define Lattice"});
+  checks.expect_failure(
+      "no_bounding_box.am",
+      "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nParameters { CoordType \"uniform\" }\n"
+      "Lattice { float[3] Data } @1\n# Data section follows\n@1\n" +
+          ascii_velocities(2, 2, 2),
+      {"BoundingBox"});
+  checks.expect_failure("no_data_section.am", ascii_header, {"no data section"});
+  checks.expect_failure("missing_section.am",
+                        ascii_header + "Lattice { byte inside } @2\n# Data section follows\n@1\n" +
+                            ascii_velocities(3, 2, 2),
+                        {"section @2", "'inside'", "missing"});
+  checks.expect_failure(
       "missing_array.am", ascii_header + "# Data section follows\n@1\n" + ascii_velocities(3, 2, 2),
       {"no lattice field named 'speed'", "'Data' (float[3])"}, FAS::parameters::array_name("speed"));
-  expect_failure("missing_mask.am", ascii_header + "# Data section follows\n@1\n" + ascii_velocities(3, 2, 2),
-                 {"no lattice field named 'fluid' for the mask"}, FAS::parameters::mask_array_name("fluid"));
-  expect_failure("unclosed_parameters.am",
-                 "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nParameters {\n a { b",
-                 {"line 3", "not closed"});
+  checks.expect_failure(
+      "missing_mask.am", ascii_header + "# Data section follows\n@1\n" + ascii_velocities(3, 2, 2),
+      {"no lattice field named 'fluid' for the mask"}, FAS::parameters::mask_array_name("fluid"));
+  checks.expect_failure("unclosed_parameters.am",
+                        "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nParameters {\n a { b",
+                        {"line 3", "not closed"});
 }
 
 TEST(ReadAmiraMeshBadInput, UnsupportedCoordinatesCompressionAndTypes)
 {
   std::string rectilinear = ascii_header + "# Data section follows\n@1\n" + ascii_velocities(3, 2, 2);
   rectilinear.replace(rectilinear.find("\"uniform\""), 9, "\"rectilinear\"");
-  expect_failure("rectilinear.am", rectilinear, {"line 11", "CoordType \"rectilinear\" is not supported"});
-  expect_failure("hxzip.am",
-                 "# AmiraMesh BINARY-LITTLE-ENDIAN 2.1\ndefine Lattice 2 2 2\n"
-                 "Parameters { BoundingBox 0 1 0 1 0 1 }\nLattice { float[3] Data } @1(HxZip,4)\n"
-                 "# Data section follows\n@1\nabcd\n",
-                 {"HxZip", "not supported"});
-  expect_failure("unknown_type.am",
-                 "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nLattice { quaternion[3] Data } @1\n",
-                 {"line 3", "unknown data type 'quaternion'"});
-  expect_failure("flat.am", "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 4 4 1\n# Data section follows\n",
-                 {"line 2", "at least 2 nodes"});
-  expect_failure("2d.am", "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 4 4\n", {"line 2", "3D lattices"});
-  expect_failure("scalar_velocity.am",
-                 "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nParameters { BoundingBox 0 1 0 1 0 1 }\n"
-                 "Lattice { float Data } @1\n# Data section follows\n@1\n0 0 0 0 0 0 0 0\n",
-                 {"has 1 components"}, FAS::parameters::array_name("Data"));
+  checks.expect_failure("rectilinear.am", rectilinear,
+                        {"line 11", "CoordType \"rectilinear\" is not supported"});
+  checks.expect_failure("hxzip.am",
+                        "# AmiraMesh BINARY-LITTLE-ENDIAN 2.1\ndefine Lattice 2 2 2\n"
+                        "Parameters { BoundingBox 0 1 0 1 0 1 }\nLattice { float[3] Data } @1(HxZip,4)\n"
+                        "# Data section follows\n@1\nabcd\n",
+                        {"HxZip", "not supported"});
+  checks.expect_failure("unknown_type.am",
+                        "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nLattice { quaternion[3] Data } @1\n",
+                        {"line 3", "unknown data type 'quaternion'"});
+  checks.expect_failure("flat.am", "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 4 4 1\n# Data section follows\n",
+                        {"line 2", "at least 2 nodes"});
+  checks.expect_failure("2d.am", "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 4 4\n", {"line 2", "3D lattices"});
+  checks.expect_failure(
+      "scalar_velocity.am",
+      "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nParameters { BoundingBox 0 1 0 1 0 1 }\n"
+      "Lattice { float Data } @1\n# Data section follows\n@1\n0 0 0 0 0 0 0 0\n",
+      {"has 1 components"}, FAS::parameters::array_name("Data"));
 }
 
 TEST(ReadAmiraMeshBadInput, TruncatedFilesAndLyingSizes)
 {
   const std::size_t data = little_header.size();
   // Cut inside the velocities: their section needs 144 bytes.
-  expect_failure("truncated.am", little_file.substr(0, data + 100),
-                 {"byte " + std::to_string(data - 3), "section @1", "needs 144 bytes but only 100"});
+  checks.expect_failure("truncated.am", little_file.substr(0, data + 100),
+                        {"byte " + std::to_string(data - 3), "section @1", "needs 144 bytes but only 100"});
   // Every cut before the end of the mask fails cleanly.
-  for (std::size_t cut = 0; cut + 1 < little_file.size(); cut += 7) {
-    const std::string file = temporary("every_cut.am");
-    fas_test::write_bytes(file, little_file.substr(0, cut));
-    Grid g = fas_test::sentinel_grid();
-    std::string error;
-    EXPECT_FALSE(FAS::IO::read_AmiraMesh_flow_field(file, g, CGAL::parameters::default_values(), &error))
-        << cut;
-    EXPECT_FALSE(error.empty());
-    fas_test::expect_untouched(g);
-  }
+  checks.expect_every_cut_fails(little_file, little_file.size() - 1, 7);
   // A lattice far larger than the file: caught before anything is allocated.
   std::string lying = little_file;
   lying.replace(lying.find("3 2 2"), 5, "3000 2000 2000");
-  expect_failure("lying.am", lying, {"section @1", "bytes but only"});
+  checks.expect_failure("lying.am", lying, {"section @1", "bytes but only"});
   std::string overflow = little_file;
   overflow.replace(overflow.find("3 2 2"), 5, "99999999999 99999999999 99999999999");
-  expect_failure("overflow.am", overflow, {"line 2", "too many elements"});
+  checks.expect_failure("overflow.am", overflow, {"line 2", "too many elements"});
   // Wrong sizes: the data are for 3 x 2 x 2, the header says 2 x 2 x 2, so '@2' is not where the
   // sizes put it.
   std::string wrong = little_file;
   wrong.replace(wrong.find("3 2 2"), 5, "2 2 2");
-  expect_failure("wrong_sizes.am", wrong, {"data section marker", "wrong sizes"});
-  expect_failure("lying_rle.am",
-                 "# AmiraMesh BINARY-LITTLE-ENDIAN 2.1\ndefine Lattice 200 200 200\n"
-                 "Parameters { BoundingBox 0 1 0 1 0 1 }\nLattice { float[3] Data } @1(HxByteRLE,4)\n"
-                 "# Data section follows\n@1\n\x7f\x01\x7f\x01\n",
-                 {"HxByteRLE", "cannot expand"});
-  expect_failure("short_rle.am",
-                 "# AmiraMesh BINARY-LITTLE-ENDIAN 2.1\ndefine Lattice 2 2 2\n"
-                 "Parameters { BoundingBox 0 1 0 1 0 1 }\nLattice { byte[3] Data } @1(HxByteRLE,4)\n"
-                 "# Data section follows\n@1\n\x0a\x01\x0a\x01\n",
-                 {"HxByteRLE", "end after 20 of 24 bytes"});
-  expect_failure("ascii_short.am", ascii_header + "# Data section follows\n@1\n" + ascii_velocities(3, 2, 1),
-                 {"section @1", "ends after 18 of its 36 values"});
+  checks.expect_failure("wrong_sizes.am", wrong, {"data section marker", "wrong sizes"});
+  checks.expect_failure("lying_rle.am",
+                        "# AmiraMesh BINARY-LITTLE-ENDIAN 2.1\ndefine Lattice 200 200 200\n"
+                        "Parameters { BoundingBox 0 1 0 1 0 1 }\nLattice { float[3] Data } @1(HxByteRLE,4)\n"
+                        "# Data section follows\n@1\n\x7f\x01\x7f\x01\n",
+                        {"HxByteRLE", "cannot expand"});
+  checks.expect_failure("short_rle.am",
+                        "# AmiraMesh BINARY-LITTLE-ENDIAN 2.1\ndefine Lattice 2 2 2\n"
+                        "Parameters { BoundingBox 0 1 0 1 0 1 }\nLattice { byte[3] Data } @1(HxByteRLE,4)\n"
+                        "# Data section follows\n@1\n\x0a\x01\x0a\x01\n",
+                        {"HxByteRLE", "end after 20 of 24 bytes"});
+  checks.expect_failure("ascii_short.am",
+                        ascii_header + "# Data section follows\n@1\n" + ascii_velocities(3, 2, 1),
+                        {"section @1", "ends after 18 of its 36 values"});
 }
 
 TEST(ReadAmiraMeshBadInput, NonNumericTokensAndNonFiniteValues)
@@ -313,28 +278,30 @@ TEST(ReadAmiraMeshBadInput, NonNumericTokensAndNonFiniteValues)
   std::string word = ascii_header + "# Data section follows\n@1\n" + ascii_velocities(3, 2, 2);
   const std::size_t at = word.find("\n", word.find("follows\n@1\n") + 11) + 1; // the second node's line
   word.replace(at, 8, "abc     ");
-  expect_failure("word.am", word,
-                 {"line 18", "byte " + std::to_string(at), "'abc' is not a number", "'Data'"});
+  checks.expect_failure("word.am", word,
+                        {"line 18", "byte " + std::to_string(at), "'abc' is not a number", "'Data'"});
   std::string nan = ascii_header + "# Data section follows\n@1\n" + ascii_velocities(3, 2, 2);
   nan.replace(nan.find("\n", nan.find("follows\n@1\n") + 11) + 1, 8, "nan     ");
-  expect_failure("nan.am", nan, {"line 18", "node 1 = (1, 0, 0), component 0", "expected a finite number"});
+  checks.expect_failure("nan.am", nan,
+                        {"line 18", "node 1 = (1, 0, 0), component 0", "expected a finite number"});
   // A NaN at a solid node is accepted (stored as zero).
   std::string solid = little_file;
   const std::size_t v4 = little_header.size() + 4 * 12; // node 4, component 0
   solid.replace(v4, 4, std::string("\x00\x00\xc0\x7f", 4));
   solid[solid.size() - 1 - 12 + 4] = '\0';
-  const Grid g = read_ok("nan_solid.am", solid);
+  const Grid g = checks.read_ok("nan_solid.am", solid);
   EXPECT_EQ(g.node_value(1, 1, 0), Vector(0, 0, 0));
   EXPECT_FALSE(g.is_fluid(1, 1, 0));
   // ... but not at a fluid node, in binary either.
   solid[solid.size() - 1 - 12 + 4] = '\1';
-  expect_failure("nan_fluid.am", solid,
-                 {"byte " + std::to_string(v4), "node 4 = (1, 1, 0)", "at a fluid node"});
-  expect_failure("word_in_lattice.am", "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 two 2\n",
-                 {"line 2", "'two'"});
-  expect_failure("word_in_box.am",
-                 "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nParameters { BoundingBox 0 1 0 x 0 1 }\n",
-                 {"line 3", "'x' is not a finite number"});
+  checks.expect_failure("nan_fluid.am", solid,
+                        {"byte " + std::to_string(v4), "node 4 = (1, 1, 0)", "at a fluid node"});
+  checks.expect_failure("word_in_lattice.am", "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 two 2\n",
+                        {"line 2", "'two'"});
+  checks.expect_failure(
+      "word_in_box.am",
+      "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nParameters { BoundingBox 0 1 0 x 0 1 }\n",
+      {"line 3", "'x' is not a finite number"});
 }
 
 } // namespace

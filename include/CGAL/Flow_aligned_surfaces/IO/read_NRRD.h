@@ -547,11 +547,10 @@ bool read_NRRD_flow_field(const std::string& filename, Regular_grid_flow_field_3
                           const NamedParameters& np = CGAL::parameters::default_values(),
                           std::string* error = nullptr)
 {
-  std::optional<Regular_grid_flow_field_3<K>> result;
-  if (!read_NRRD_flow_field(filename, result, np, error))
-    return false;
-  field = std::move(*result);
-  return true;
+  return Flow_aligned_surfaces::internal::read_and_assign(
+      field, [&](std::optional<Regular_grid_flow_field_3<K>>& result) {
+        return read_NRRD_flow_field(filename, result, np, error);
+      });
 }
 
 } // namespace IO

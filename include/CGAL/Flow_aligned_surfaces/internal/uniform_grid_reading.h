@@ -160,6 +160,18 @@ bool read_into(const std::string& reader, const std::string& filename, std::opti
   return false;
 }
 
+/// The `Field&` overload of a reader from its `std::optional<Field>&` one, called as
+/// `read(result)`: `field` is assigned only on success.
+template <class Field, class Read_optional>
+bool read_and_assign(Field& field, const Read_optional& read)
+{
+  std::optional<Field> result;
+  if (!read(result))
+    return false;
+  field = std::move(*result);
+  return true;
+}
+
 } // namespace internal
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
