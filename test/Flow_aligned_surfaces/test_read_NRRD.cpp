@@ -202,6 +202,11 @@ TEST(ReadNRRDBadInput, TruncatedFilesWrongAndLyingSizes)
   checks.expect_failure("truncated.nrrd", raw_file.substr(0, raw_file.size() - 5),
                         {"byte " + std::to_string(data), "need 288 bytes but only 283"});
   checks.expect_every_cut_fails(raw_file, raw_file.size(), 5);
+  // A detached data file too short for the sizes: the message names both files.
+  fas_test::write_bytes(checks.temporary("short.raw"), binary_velocities<float>(false).substr(0, 100));
+  checks.expect_failure(
+      "short.nhdr", header("float", "endian: little\nencoding: raw\ndata file: fas_read_NRRD_short.raw\n"),
+      {"data file", "fas_read_NRRD_short.raw", "byte 0", "need 72 x 4 bytes but the data have 100"});
   std::string lying = raw_file;
   lying.replace(lying.find("3 4 3 2"), 7, "3 4000 3000 2000");
   checks.expect_failure("lying.nrrd", lying, {"72000000000 float values", "bytes but the data have"});

@@ -396,7 +396,9 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
     header.in.fail_file("the file ends after the header: no data attached (and no 'data file' field)");
   const std::string_view bytes =
       header.data_file.empty() ? std::string_view(contents) : std::string_view(detached);
-  I::Text_cursor data("read_NRRD_flow_field", data_name, bytes);
+  // Messages about the data name both files.
+  I::Text_cursor data("read_NRRD_flow_field",
+                      header.data_file.empty() ? filename : filename + ": data file " + data_name, bytes);
   data.pos = pos;
   data.line = line;
   for (std::size_t l = 0; l < header.line_skip; ++l) {
