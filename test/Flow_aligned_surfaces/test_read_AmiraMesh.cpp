@@ -253,6 +253,11 @@ TEST(ReadAmiraMeshBadInput, TruncatedFilesAndLyingSizes)
   std::string overflow = little_file;
   overflow.replace(overflow.find("3 2 2"), 5, "99999999999 99999999999 99999999999");
   checks.expect_failure("overflow.am", overflow, {"line 2", "too many elements"});
+  checks.expect_failure("overflow_components.am",
+                        "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\ndefine Markers 1000000000000000\n"
+                        "Parameters { BoundingBox 0 1 0 1 0 1 }\nMarkers { float[1024] x } @1\n"
+                        "# Data section follows\n@1\n1 2 3\n",
+                        {"line 5", "'x' have too many values"});
   // Wrong sizes: the data are for 3 x 2 x 2, the header says 2 x 2 x 2, so '@2' is not where the
   // sizes put it.
   std::string wrong = little_file;

@@ -503,7 +503,11 @@ private:
       in.fail_at(d.declaration_offset, d.declaration_line,
                  "the data '" + d.array.name + "' is declared on '" + d.location + "', which has no define");
     d.array.tuples = location->second;
-    const std::size_t count = d.array.tuples * d.array.components; // < max / 64 by define()
+    if (d.array.tuples > (std::numeric_limits<std::size_t>::max)() / 64 / d.array.components)
+      in.fail_at(d.declaration_offset, d.declaration_line,
+                 "the data '" + d.array.name + "' have too many values (" + std::to_string(d.array.tuples) +
+                     " x " + std::to_string(d.array.components) + ")");
+    const std::size_t count = d.array.tuples * d.array.components; // < max / 64
     const std::size_t size = Flow_aligned_surfaces::internal::binary_type_size(d.array.type);
     const std::size_t left = in.left();
     const std::string what = "data section @" + std::to_string(d.section) + " ('" + d.array.name + "', " +
