@@ -12,6 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#if defined(CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB)
+#include <zlib.h>
+#endif
+
 #include <cstddef>
 #include <cstring>
 #include <fstream>
@@ -73,6 +77,25 @@ std::string node_values_binary(const Grid::Dimensions& n, const F& f, bool big_e
       }
   return s;
 }
+
+#if defined(CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB)
+/// `bytes` compressed by zlib itself, in the zlib format (`gzip = false`) or the gzip one.
+inline std::string zlib_compress(const std::string& bytes, bool gzip)
+{
+  z_stream z{};
+  EXPECT_EQ(deflateInit2(&z, Z_BEST_COMPRESSION, Z_DEFLATED, gzip ? 15 + 16 : 15, 8, Z_DEFAULT_STRATEGY),
+            Z_OK);
+  std::string out(deflateBound(&z, static_cast<uLong>(bytes.size())) + 32, '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  z.avail_in = static_cast<uInt>(bytes.size());
+  z.next_out = reinterpret_cast<Bytef*>(&out[0]);
+  z.avail_out = static_cast<uInt>(out.size());
+  EXPECT_EQ(deflate(&z, Z_FINISH), Z_STREAM_END);
+  out.resize(out.size() - z.avail_out);
+  deflateEnd(&z);
+  return out;
+}
+#endif
 
 /// A grid unlike the ones read, to detect that a failed read changed nothing.
 inline Grid sentinel_grid()

@@ -167,6 +167,30 @@ TEST(ReadAmiraMesh, HxByteRLESectionsAreExpanded)
   EXPECT_EQ(g.node_value(1, 1, 1), Vector(10, 11, 12));
 }
 
+TEST(ReadAmiraMesh, HxZipSectionsAreInflatedWithZlib)
+{
+  const std::string raw = binary_velocities<float>(3, 2, 2, false);
+  auto file = [&](const std::string& lattice, const std::string& z) {
+    return "# AmiraMesh BINARY-LITTLE-ENDIAN 2.1\ndefine Lattice " + lattice + "\n" + parameters +
+           "Lattice { float[3] Data } @1(HxZip," + std::to_string(z.size()) +
+           ")\n# Data section follows\n@1\n" + z + "\n";
+  };
+#if defined(CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB)
+  // Compressed by zlib itself.
+  const std::string z = fas_test::zlib_compress(raw, false);
+  expect_known_field(checks.read_ok("hxzip.am", file("3 2 2", z)));
+  std::string corrupt = z;
+  corrupt[2] = static_cast<char>(corrupt[2] ^ 0x55);
+  checks.expect_failure("hxzip_corrupt.am", file("3 2 2", corrupt), {"the HxZip data of 'Data'", "invalid"});
+  checks.expect_failure("hxzip_cut.am", file("3 2 2", z.substr(0, z.size() - 10)),
+                        {"the HxZip data of 'Data'", "end after"});
+  checks.expect_failure("hxzip_more.am", file("2 2 2", z), {"expand to more than the 96 bytes"});
+  checks.expect_failure("hxzip_lying.am", file("300 200 200", z), {"cannot expand to the 144000000 bytes"});
+#else
+  checks.expect_failure("hxzip.am", file("3 2 2", raw), {"HxZip", "needs zlib"});
+#endif
+}
+
 // ------------------------------------------------------------------------------------------
 // Bad input
 
@@ -220,11 +244,11 @@ TEST(ReadAmiraMeshBadInput, UnsupportedCoordinatesCompressionAndTypes)
   rectilinear.replace(rectilinear.find("\"uniform\""), 9, "\"rectilinear\"");
   checks.expect_failure("rectilinear.am", rectilinear,
                         {"line 11", "CoordType \"rectilinear\" is not supported"});
-  checks.expect_failure("hxzip.am",
+  checks.expect_failure("hxfoo.am",
                         "# AmiraMesh BINARY-LITTLE-ENDIAN 2.1\ndefine Lattice 2 2 2\n"
-                        "Parameters { BoundingBox 0 1 0 1 0 1 }\nLattice { float[3] Data } @1(HxZip,4)\n"
+                        "Parameters { BoundingBox 0 1 0 1 0 1 }\nLattice { float[3] Data } @1(HxFoo,4)\n"
                         "# Data section follows\n@1\nabcd\n",
-                        {"HxZip", "not supported"});
+                        {"compressed with HxFoo, which is not supported"});
   checks.expect_failure("unknown_type.am",
                         "# AmiraMesh 3D ASCII 2.0\ndefine Lattice 2 2 2\nLattice { quaternion[3] Data } @1\n",
                         {"line 3", "unknown data type 'quaternion'"});

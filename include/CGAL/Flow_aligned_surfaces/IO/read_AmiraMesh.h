@@ -15,6 +15,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/internal/inflate_bytes.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
 #include <CGAL/Flow_aligned_surfaces/internal/uniform_grid_reading.h>
@@ -646,14 +647,25 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
     arrays[c] = d->array;
     if (d->encoding.empty())
       continue;
-    if (d->encoding != "HxByteRLE")
-      in.fail_at(d->array.begin, 0,
-                 "the data of '" + d->array.name + "' are compressed with " +
-                     Flow_aligned_surfaces::internal::printable(d->encoding) +
-                     ", which is not supported (only HxByteRLE is; save the file uncompressed)");
     const std::size_t bytes = d->array.tuples * d->array.components *
                               Flow_aligned_surfaces::internal::binary_type_size(d->array.type);
-    expanded[c] = expand_HxByteRLE(in, *d, bytes);
+    if (d->encoding == "HxByteRLE")
+      expanded[c] = expand_HxByteRLE(in, *d, bytes);
+    else if (d->encoding == "HxZip" && Flow_aligned_surfaces::internal::have_inflate()) {
+      const std::string why = Flow_aligned_surfaces::internal::inflate_bytes(
+          in.bytes().substr(d->array.begin, d->compressed_size), bytes, expanded[c]);
+      if (!why.empty())
+        in.fail_at(d->array.begin, 0, "the HxZip data of '" + d->array.name + "': " + why);
+    }
+    else
+      in.fail_at(d->array.begin, 0,
+                 "the data of '" + d->array.name + "' are compressed with " +
+                     Flow_aligned_surfaces::internal::printable(d->encoding) + ", which is not supported " +
+                     (d->encoding == "HxZip"
+                          ? "by this build (it needs zlib: define CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB "
+                            "and link zlib)"
+                          : "(HxByteRLE and HxZip are)") +
+                     "; save the file uncompressed");
     arrays[c].bytes = expanded[c];
     arrays[c].begin = 0;
     arrays[c].file_offset = d->array.begin;
@@ -705,9 +717,11 @@ node: node `(i, j, k)` is at `(xmin + i·hx, ymin + j·hy, zmin + k·hz)` with
 `hx = (xmax − xmin)/(nx − 1)` and so on.  `CoordType` must be `"uniform"` (or absent); every
 other parameter, nested blocks included, is skipped.  The fields are declared as
 `Lattice { float[3] Data } @1`, of type `byte`, `sbyte`, `short`, `ushort`, `int`, `uint`,
-`int64`, `uint64`, `float` or `double` with any number of components, and stored after the
+`int64`, `uint64`, `float` or `double` with 1 to 1024 components, and stored after the
 `# Data section follows` line in `@N` sections (x fastest, components interleaved).  Sections
-compressed with `HxByteRLE` are read; `HxZip` sections get an "unsupported" message.
+compressed with `HxByteRLE` are read, and those compressed with `HxZip` too when zlib is
+available (`CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB` defined and zlib linked; else an
+"unsupported" message).
 Declarations on other locations than `Lattice` are skipped.
 
 The velocity is the lattice field named by `array_name`, by default the first 3-component

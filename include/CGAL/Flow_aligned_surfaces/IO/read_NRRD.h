@@ -14,6 +14,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/internal/inflate_bytes.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
 #include <CGAL/Flow_aligned_surfaces/internal/uniform_grid_reading.h>
@@ -177,13 +178,17 @@ public:
         encoding = Text_cursor::lower(trim(rest));
         if (encoding == "txt" || encoding == "text")
           encoding = "ascii";
-        if (encoding == "gzip" || encoding == "gz" || encoding == "bzip2" || encoding == "bz2" ||
-            encoding == "hex")
+        if (encoding == "gz")
+          encoding = "gzip";
+        if (encoding == "gzip" && !Flow_aligned_surfaces::internal::have_inflate())
+          fail("encoding gzip is not supported by this build (it needs zlib: define "
+               "CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB and link zlib); decompress the data first");
+        if (encoding == "bzip2" || encoding == "bz2" || encoding == "hex")
           fail("encoding " + encoding +
-               " is not supported; expected raw or ascii (decompress the data first)");
-        if (encoding != "raw" && encoding != "ascii")
+               " is not supported; expected raw, ascii or gzip (decompress the data first)");
+        if (encoding != "raw" && encoding != "ascii" && encoding != "gzip")
           fail("unknown encoding '" + Flow_aligned_surfaces::internal::printable(encoding) +
-               "'; expected raw or ascii");
+               "'; expected raw, ascii or gzip");
       }
       else if (field == "byte skip") {
         const std::string s = trim(rest);
@@ -225,8 +230,9 @@ public:
         in.fail_at(0, sizes_line, "sizes 3 " + dimensions_string() + " has too many nodes");
       nodes *= dimensions[a];
     }
-    if (encoding == "raw" && !order && Flow_aligned_surfaces::internal::binary_type_size(type) > 1)
-      in.fail_file("the header has no 'endian' field (little or big), needed for raw " + type_name + " data");
+    if (encoding != "ascii" && !order && Flow_aligned_surfaces::internal::binary_type_size(type) > 1)
+      in.fail_file("the header has no 'endian' field (little or big), needed for " + encoding + " " +
+                   type_name + " data");
     if (byte_skip == -1 && encoding != "raw")
       in.fail_file("'byte skip: -1' is only allowed with raw encoding");
   }
@@ -419,6 +425,18 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
   const std::size_t count = 3 * header.nodes, size = I::binary_type_size(header.type);
   const std::string what = "the " + std::to_string(count) + " " + header.type_name + " values (sizes: 3 " +
                            header.dimensions_string() + ")";
+  std::string inflated;
+  if (header.encoding == "gzip") {
+    // 'byte skip' counts decompressed bytes.
+    const std::size_t skip = static_cast<std::size_t>(header.byte_skip);
+    const std::string why = I::inflate_bytes(bytes.substr(data.pos), count * size + skip, inflated);
+    if (!why.empty())
+      data.fail("the gzip data of " + what + ": " + why);
+    velocity.bytes = inflated;
+    velocity.begin = skip;
+    velocity.file_offset = data.pos;
+    return I::make_grid_field<K>(data, header.dimensions, header.origin, header.spacing, velocity, nullptr);
+  }
   if (velocity.ascii) {
     if (static_cast<std::size_t>(header.byte_skip) > data.left())
       data.fail("'byte skip: " + std::to_string(header.byte_skip) + "' skips past the end of the data");
@@ -487,8 +505,10 @@ The file starts with `NRRD0001` to `NRRD0005`; the header holds `type` (any nume
 `int8` … `uint64`, `float`, `double` and their synonyms), `dimension: 4` and
 `sizes: 3 nx ny nz` (the vector axis first, then x fastest; at least 2 nodes along each axis;
 `kinds`, if given, must be `vector` (or `3-vector`, ...) then `domain domain domain`),
-`encoding` (`raw`, or `ascii`/`text`; compressed encodings get an "unsupported" message),
-`endian` (required for raw multi-byte types), `byte skip` (`-1` = the data are the end of the
+`encoding` (`raw`, `ascii`/`text`, and `gzip` when zlib is available:
+`CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB` defined and zlib linked; other compressed encodings get
+an "unsupported" message),
+`endian` (required for raw and gzip multi-byte types), `byte skip` (`-1` = the data are the end of the
 file), `line skip`, `data file` (relative to the header's folder; one file only), and the
 geometry: `spacings: nan hx hy hz` or `space directions: none (hx,0,0) (0,hy,0) (0,0,hz)`
 (axis-aligned with positive steps only: a rotated, sheared, permuted or mirrored frame gets an
