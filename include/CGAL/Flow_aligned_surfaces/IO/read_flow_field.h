@@ -7,6 +7,8 @@
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_READ_FLOW_FIELD_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_READ_FLOW_FIELD_H
 
+#include <CGAL/Flow_aligned_surfaces/IO/read_AmiraMesh.h>
+#include <CGAL/Flow_aligned_surfaces/IO/read_NRRD.h>
 #include <CGAL/Flow_aligned_surfaces/IO/read_VTK_legacy.h>
 
 #endif // CGAL_FLOW_ALIGNED_SURFACES_IO_READ_FLOW_FIELD_H

@@ -1,0 +1,776 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reads a velocity field on a uniform grid from an AmiraMesh file (`.am`, written by Amira and
+// Avizo, the format in which many public flow data sets are shared): a lattice of nx × ny × nz
+// nodes whose bounding box [xmin, xmax] × [ymin, ymax] × [zmin, zmax] holds the first and the
+// last node, so node (i, j, k) is at (xmin + i·hx, ymin + j·hy, zmin + k·hz) with
+// hx = (xmax − xmin)/(nx − 1) (and so on); a 3-component lattice field (the velocity) and
+// optionally a 1-component one (the node mask).  Two passes over the file's bytes: the first
+// reads the header and locates every data section, checking each size against the bytes left
+// without allocating; the second decodes the two chosen fields.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_READ_AMIRAMESH_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_READ_AMIRAMESH_H
+
+#include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/internal/inflate_bytes.h>
+#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
+#include <CGAL/Flow_aligned_surfaces/internal/uniform_grid_reading.h>
+#include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace IO {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// One data declaration `Location { type[components] name } @section(encoding,size)`.
+struct AmiraMesh_data {
+  Flow_aligned_surfaces::internal::Grid_array array; // located by the data section
+  std::string location, type_name, encoding;         // encoding: empty (raw), HxByteRLE, HxZip, ...
+  std::size_t section = 0, compressed_size = 0;
+  std::size_t declaration_offset = 0, declaration_line = 0;
+  bool found = false; // whether its data section was met
+};
+
+class AmiraMesh_parser {
+  typedef Flow_aligned_surfaces::internal::Binary_type Binary_type;
+  typedef Flow_aligned_surfaces::internal::Byte_order Byte_order;
+  typedef Flow_aligned_surfaces::internal::Text_cursor Text_cursor;
+
+public:
+  AmiraMesh_parser(const std::string& filename, std::string_view contents)
+      : in("read_AmiraMesh_flow_field", filename, contents)
+  {
+  }
+
+  Text_cursor in;
+  std::array<std::size_t, 3> dimensions = {{0, 0, 0}};
+  std::array<double, 3> origin = {{0., 0., 0.}}, spacing = {{1., 1., 1.}};
+  std::size_t nodes = 0;
+  std::vector<AmiraMesh_data> data;
+  bool ascii = false;
+  Byte_order order = Byte_order::BIG_ENDIAN_ORDER;
+
+  // Pass 1.
+  void parse()
+  {
+    first_line();
+    header();
+    geometry();
+    sections();
+  }
+
+  std::string describe_lattice_fields() const
+  {
+    std::string r;
+    for (const AmiraMesh_data& d : data) {
+      if (d.location != "Lattice")
+        continue;
+      r += (r.empty() ? "'" : ", '") + d.array.name + "' (" + d.type_name + "[" +
+           std::to_string(d.array.components) + "])";
+    }
+    return r.empty() ? std::string("none") : r;
+  }
+
+  std::string dimensions_string() const
+  {
+    return std::to_string(dimensions[0]) + " " + std::to_string(dimensions[1]) + " " +
+           std::to_string(dimensions[2]);
+  }
+
+private:
+  // A header token: a word, a quoted string (without its quotes), one of `{ } , =`, or a
+  // section reference `@N(...)`.  Empty text and kind 0 at the end of the header.
+  struct Token {
+    std::string_view text;
+    char kind = 0; // 'w' word, 's' string, '@' section, or the punctuation character itself
+    std::size_t offset = 0, line = 0;
+  };
+
+  void first_line()
+  {
+    const std::string_view l = in.read_line();
+    Text_cursor words("", "", l);
+    const std::string_view hash = words.token(), name = words.token();
+    bool known = hash == "#" && (name == "AmiraMesh" || name == "Avizo");
+    std::string format;
+    for (std::string_view w = words.token(); known && !w.empty(); w = words.token())
+      if (w == "ASCII" || w == "BINARY" || w == "BINARY-LITTLE-ENDIAN" || w == "BINARY-BIG-ENDIAN")
+        format = std::string(w);
+    if (!known || format.empty())
+      in.fail_at(0, 1,
+                 "not an AmiraMesh file: the first line is '" +
+                     Flow_aligned_surfaces::internal::printable(l) +
+                     "'; expected '# AmiraMesh BINARY-LITTLE-ENDIAN 2.1', '# AmiraMesh 3D BINARY 2.0', "
+                     "'# AmiraMesh 3D ASCII 2.0' or the same with Avizo");
+    ascii = format == "ASCII";
+    order = format == "BINARY-LITTLE-ENDIAN" ? Byte_order::LITTLE_ENDIAN_ORDER : Byte_order::BIG_ENDIAN_ORDER;
+  }
+
+  static bool is_word_char(char c)
+  {
+    return !Text_cursor::is_space(c) && c != '{' && c != '}' && c != ',' && c != '"' && c != '#';
+  }
+
+  // The next header token; comments are skipped, and `# Data section follows` ends the header.
+  Token next()
+  {
+    for (;;) {
+      in.skip_space();
+      Token t;
+      t.offset = in.pos;
+      t.line = in.line;
+      if (in.at_end() || header_done_)
+        return t;
+      const std::string_view b = in.bytes();
+      const char c = b[in.pos];
+      if (c == '#') {
+        const std::string comment = Text_cursor::lower(in.read_line());
+        if (comment.find("data section follows") != std::string::npos) {
+          header_done_ = true;
+          data_start_ = in.pos;
+          data_line_ = in.line;
+        }
+        continue;
+      }
+      if (c == '{' || c == '}' || c == ',' || c == '=') {
+        ++in.pos;
+        t.kind = c;
+        t.text = b.substr(t.offset, 1);
+        return t;
+      }
+      if (c == '"') {
+        ++in.pos;
+        while (!in.at_end() && b[in.pos] != '"') {
+          if (b[in.pos] == '\n')
+            in.fail_at(t.offset, t.line, "a quoted string is not closed on its line");
+          if (b[in.pos] == '\\' && in.pos + 1 < b.size())
+            ++in.pos;
+          ++in.pos;
+        }
+        if (in.at_end())
+          in.fail_at(t.offset, t.line, "the file ends inside a quoted string");
+        t.kind = 's';
+        t.text = b.substr(t.offset + 1, in.pos - t.offset - 1);
+        ++in.pos;
+        return t;
+      }
+      if (c == '@') {
+        // @N, possibly followed by (encoding,size)
+        ++in.pos;
+        while (!in.at_end() && b[in.pos] >= '0' && b[in.pos] <= '9')
+          ++in.pos;
+        if (!in.at_end() && b[in.pos] == '(') {
+          while (!in.at_end() && b[in.pos] != ')' && b[in.pos] != '\n')
+            ++in.pos;
+          if (in.at_end() || b[in.pos] != ')')
+            in.fail_at(t.offset, t.line,
+                       "the section reference '" +
+                           Flow_aligned_surfaces::internal::printable(b.substr(t.offset, in.pos - t.offset)) +
+                           "' has no closing ')'");
+          ++in.pos;
+        }
+        t.kind = '@';
+        t.text = b.substr(t.offset, in.pos - t.offset);
+        return t;
+      }
+      while (!in.at_end() && is_word_char(b[in.pos]))
+        ++in.pos;
+      t.kind = 'w';
+      t.text = b.substr(t.offset, in.pos - t.offset);
+      return t;
+    }
+  }
+
+  Token peek()
+  {
+    const std::size_t p = in.pos, l = in.line;
+    const bool done = header_done_;
+    const std::size_t ds = data_start_, dl = data_line_;
+    Token t = next();
+    in.pos = p;
+    in.line = l;
+    header_done_ = done;
+    data_start_ = ds;
+    data_line_ = dl;
+    return t;
+  }
+
+  [[noreturn]] void fail_at(const Token& t, const std::string& what) const
+  {
+    in.fail_at(t.offset, t.line, what);
+  }
+
+  static std::string shown(const Token& t)
+  {
+    return t.kind == 0 ? std::string("the end of the header")
+                       : "'" + Flow_aligned_surfaces::internal::printable(t.text) + "'";
+  }
+
+  Token expect(char kind, const std::string& what)
+  {
+    const Token t = next();
+    if (t.kind != kind)
+      fail_at(t, "found " + shown(t) + " where " + what + " was expected");
+    return t;
+  }
+
+  std::size_t count(const Token& t, const std::string& what) const
+  {
+    std::size_t v = 0;
+    const auto r = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v);
+    if (t.kind != 'w' || r.ec != std::errc() || r.ptr != t.text.data() + t.text.size())
+      fail_at(t, shown(t) + " is not a non-negative integer (" + what + ")");
+    return v;
+  }
+
+  double real(const Token& t, const std::string& what) const
+  {
+    double v = 0;
+    if (t.kind != 'w' || !Text_cursor::parse_number(t.text, v) || !std::isfinite(v))
+      fail_at(t, shown(t) + " is not a finite number (" + what + ")");
+    return v;
+  }
+
+  // The header: `define`, `Parameters` and the data declarations, up to the data.
+  void header()
+  {
+    for (;;) {
+      const Token t = next();
+      if (t.kind == 0)
+        break;
+      if (t.kind == '@') {
+        // No `# Data section follows` line: the data start at the first section marker.
+        header_done_ = true;
+        data_start_ = t.offset;
+        data_line_ = t.line;
+        in.pos = t.offset;
+        in.line = t.line;
+        break;
+      }
+      if (t.kind != 'w')
+        fail_at(t, "found " + shown(t) + " where 'define', 'Parameters' or a data declaration was expected");
+      if (t.text == "define" || t.text == "nNodes" || t.text == "nTetrahedra" || t.text == "nTriangles") {
+        define(t);
+      }
+      else if (t.text == "Parameters") {
+        parameters_block();
+      }
+      else {
+        const Token brace = next();
+        if (brace.kind != '{')
+          fail_at(t, "unexpected " + shown(t) +
+                         " in the header; expected 'define', 'Parameters' or a data declaration "
+                         "'Location { type name } @N'");
+        declaration(t);
+      }
+    }
+    if (!header_done_)
+      in.fail("the file has no data section (no '# Data section follows' line and no '@1' marker)");
+  }
+
+  // `define Name n1 n2 ...` (the numbers on the same line), or the older `nNodes n`.
+  void define(const Token& keyword)
+  {
+    Token name = keyword;
+    if (keyword.text == "define")
+      name = expect('w', "the name of a define");
+    std::vector<std::size_t> sizes;
+    for (Token t = peek(); t.kind == 'w' && t.line == name.line; t = peek()) {
+      next();
+      sizes.push_back(count(t, "a size of '" + std::string(name.text) + "'"));
+    }
+    if (sizes.empty())
+      fail_at(name, "the define '" + std::string(name.text) + "' has no size");
+    std::size_t product = 1;
+    for (std::size_t s : sizes) {
+      if (s != 0 && product > (std::numeric_limits<std::size_t>::max)() / 64 / s)
+        fail_at(name, "the define '" + std::string(name.text) + "' has too many elements");
+      product *= s;
+    }
+    locations_[std::string(name.text)] = product;
+    if (name.text == "Lattice") {
+      if (sizes.size() != 3)
+        fail_at(name, "'define Lattice' has " + std::to_string(sizes.size()) +
+                          " sizes; this reader reads 3D lattices (define Lattice nx ny nz)");
+      for (int a = 0; a < 3; ++a)
+        dimensions[a] = sizes[a];
+      lattice_ = name;
+      nodes = product;
+    }
+  }
+
+  // `Parameters { ... }`: only BoundingBox and CoordType at the first level are read; nested
+  // blocks and every other value are skipped.
+  void parameters_block()
+  {
+    const Token open = expect('{', "'{' after Parameters");
+    int depth = 1;
+    bool entry_start = true;
+    while (depth > 0) {
+      const Token t = next();
+      if (t.kind == 0)
+        fail_at(open, "the Parameters block is not closed (no matching '}')");
+      if (t.kind == '{')
+        ++depth;
+      else if (t.kind == '}')
+        --depth;
+      else if (depth == 1 && entry_start && t.kind == 'w' && t.text == "BoundingBox") {
+        for (int i = 0; i < 6; ++i)
+          bounding_box_[i] = real(next(), "the BoundingBox xmin xmax ymin ymax zmin zmax");
+        have_bounding_box_ = true;
+        bounding_box_token_ = t;
+      }
+      else if (depth == 1 && entry_start && t.kind == 'w' && t.text == "CoordType") {
+        const Token v = next();
+        if (v.kind != 's' && v.kind != 'w')
+          fail_at(v, "found " + shown(v) + " where the CoordType (a quoted string) was expected");
+        coord_type_ = std::string(v.text);
+        coord_type_token_ = v;
+      }
+      const Token after = peek();
+      entry_start = t.kind == ',' || t.kind == '{' || t.kind == '}' || after.line != t.line;
+    }
+  }
+
+  // `Location { type[n] name } @N` (the '{' already read), or with `= @N`.
+  void declaration(const Token& location)
+  {
+    AmiraMesh_data d;
+    d.location = std::string(location.text);
+    d.declaration_offset = location.offset;
+    d.declaration_line = location.line;
+    const Token type = expect('w', "the data type of a '" + d.location + "' declaration");
+    const Token name = expect('w', "the name of a '" + d.location + "' data field");
+    expect('}', "'}' closing the declaration of '" + std::string(name.text) + "'");
+    Token section = next();
+    if (section.kind == '=')
+      section = next();
+    if (section.kind != '@')
+      fail_at(section, "found " + shown(section) + " where the section reference '@N' of '" +
+                           std::string(name.text) + "' was expected");
+    d.array.name = std::string(name.text);
+
+    // type[components]
+    std::string_view tn = type.text;
+    d.array.components = 1;
+    const std::size_t bracket = tn.find('[');
+    if (bracket != std::string_view::npos) {
+      const std::string_view n = tn.substr(bracket + 1);
+      std::size_t c = 0;
+      const auto r = std::from_chars(n.data(), n.data() + n.size(), c);
+      if (r.ec != std::errc() || r.ptr == n.data() + n.size() || *r.ptr != ']' ||
+          r.ptr + 1 != n.data() + n.size() || c == 0 || c > 1024)
+        fail_at(type, "the data type " + shown(type) + " has no valid '[components]' (1 to 1024)");
+      d.array.components = c;
+      tn = tn.substr(0, bracket);
+    }
+    d.type_name = std::string(tn);
+    if (!binary_type(d.type_name, d.array.type))
+      fail_at(type, "unknown data type '" + Flow_aligned_surfaces::internal::printable(tn) + "' of '" +
+                        d.array.name +
+                        "'; expected byte, sbyte, short, ushort, int, uint, int64, uint64, float or double");
+
+    // @N(encoding,size)
+    std::string_view ref = section.text.substr(1);
+    const std::size_t paren = ref.find('(');
+    const std::string_view number = ref.substr(0, paren);
+    const auto r = std::from_chars(number.data(), number.data() + number.size(), d.section);
+    if (number.empty() || r.ec != std::errc() || r.ptr != number.data() + number.size())
+      fail_at(section, "the section reference " + shown(section) + " has no section number");
+    if (paren != std::string_view::npos) {
+      const std::string_view inside = ref.substr(paren + 1, ref.size() - paren - 2);
+      const std::size_t comma = inside.find(',');
+      d.encoding = std::string(inside.substr(0, comma));
+      const std::string_view size =
+          comma == std::string_view::npos ? std::string_view() : inside.substr(comma + 1);
+      const auto s = std::from_chars(size.data(), size.data() + size.size(), d.compressed_size);
+      if (size.empty() || s.ec != std::errc() || s.ptr != size.data() + size.size())
+        fail_at(section, "the section reference " + shown(section) +
+                             " has no compressed size (expected '@N(" + d.encoding + ",size)')");
+    }
+    for (const AmiraMesh_data& other : data)
+      if (other.section == d.section)
+        fail_at(section, "section @" + std::to_string(d.section) + " is declared twice (for '" +
+                             other.array.name + "' and '" + d.array.name + "')");
+    d.array.ascii = ascii;
+    d.array.order = order;
+    d.array.bytes = in.bytes();
+    data.push_back(std::move(d));
+  }
+
+  static bool binary_type(const std::string& t, Binary_type& type)
+  {
+    static const std::pair<const char*, Binary_type> types[] = {
+        {"byte", Binary_type::UINT8},    {"ubyte", Binary_type::UINT8},   {"sbyte", Binary_type::INT8},
+        {"short", Binary_type::INT16},   {"ushort", Binary_type::UINT16}, {"int", Binary_type::INT32},
+        {"uint", Binary_type::UINT32},   {"int64", Binary_type::INT64},   {"uint64", Binary_type::UINT64},
+        {"float", Binary_type::FLOAT32}, {"double", Binary_type::FLOAT64}};
+    for (const auto& p : types)
+      if (t == p.first) {
+        type = p.second;
+        return true;
+      }
+    return false;
+  }
+
+  // The lattice and its uniform coordinates.
+  void geometry()
+  {
+    if (lattice_.kind == 0)
+      in.fail_file("the header has no 'define Lattice nx ny nz'; this reader reads uniform lattices");
+    for (int a = 0; a < 3; ++a)
+      if (dimensions[a] < 2)
+        fail_at(lattice_,
+                "define Lattice " + dimensions_string() +
+                    ": a grid needs at least 2 nodes along each axis (empty, 1D and 2D lattices are not "
+                    "supported)");
+    if (coord_type_token_.kind != 0 && coord_type_ != "uniform")
+      fail_at(coord_type_token_, "CoordType \"" + Flow_aligned_surfaces::internal::printable(coord_type_) +
+                                     "\" is not supported; this reader reads uniform lattices "
+                                     "(CoordType \"uniform\")");
+    if (!have_bounding_box_)
+      in.fail_file("the Parameters have no BoundingBox xmin xmax ymin ymax zmin zmax; the node positions are "
+                   "unknown");
+    for (int a = 0; a < 3; ++a) {
+      const double lo = bounding_box_[2 * a], hi = bounding_box_[2 * a + 1];
+      origin[a] = lo;
+      spacing[a] = (hi - lo) / static_cast<double>(dimensions[a] - 1);
+      if (!(hi > lo) || !(spacing[a] > 0.) || !std::isfinite(spacing[a]))
+        fail_at(bounding_box_token_, "the BoundingBox gives [" + std::to_string(lo) + ", " +
+                                         std::to_string(hi) + "] along axis " + std::to_string(a) +
+                                         "; expected min < max (the first and the last node)");
+    }
+  }
+
+  // Pass 1 over the data: every `@N` section in turn, its size checked against the bytes left.
+  void sections()
+  {
+    in.pos = data_start_;
+    in.line = data_line_;
+    for (;;) {
+      in.skip_space();
+      if (in.at_end())
+        break;
+      // Lines mean nothing after binary data: no line is named then.
+      const std::size_t marker = in.pos, marker_line = after_binary_ ? 0 : in.line;
+      const std::string_view l = in.read_line();
+      std::size_t n = 0;
+      const auto r = l.empty() ? std::from_chars_result{l.data(), std::errc::invalid_argument}
+                               : std::from_chars(l.data() + 1, l.data() + l.size(), n);
+      const bool blank_after = r.ec == std::errc() &&
+                               std::string_view(r.ptr, static_cast<std::size_t>(l.data() + l.size() - r.ptr))
+                                       .find_first_not_of(" \t") == std::string_view::npos;
+      if (l.empty() || l[0] != '@' || !blank_after)
+        in.fail_at(marker, marker_line,
+                   "found '" + Flow_aligned_surfaces::internal::printable(l) +
+                       "' where a data section marker '@N' alone on its line was expected (wrong sizes in "
+                       "the header?)");
+      AmiraMesh_data* d = nullptr;
+      for (AmiraMesh_data& candidate : data)
+        if (candidate.section == n)
+          d = &candidate;
+      if (d == nullptr)
+        in.fail_at(marker, marker_line,
+                   "data section @" + std::to_string(n) + " has no declaration in the header");
+      if (d->found)
+        in.fail_at(marker, marker_line, "data section @" + std::to_string(n) + " appears twice");
+      d->found = true;
+      section(*d, marker, marker_line);
+    }
+  }
+
+  void section(AmiraMesh_data& d, std::size_t marker, std::size_t marker_line)
+  {
+    const auto location = locations_.find(d.location);
+    if (location == locations_.end())
+      in.fail_at(d.declaration_offset, d.declaration_line,
+                 "the data '" + d.array.name + "' is declared on '" + d.location + "', which has no define");
+    d.array.tuples = location->second;
+    if (d.array.tuples > (std::numeric_limits<std::size_t>::max)() / 64 / d.array.components)
+      in.fail_at(d.declaration_offset, d.declaration_line,
+                 "the data '" + d.array.name + "' have too many values (" + std::to_string(d.array.tuples) +
+                     " x " + std::to_string(d.array.components) + ")");
+    const std::size_t count = d.array.tuples * d.array.components; // < max / 64
+    const std::size_t size = Flow_aligned_surfaces::internal::binary_type_size(d.array.type);
+    const std::size_t left = in.left();
+    const std::string what = "data section @" + std::to_string(d.section) + " ('" + d.array.name + "', " +
+                             std::to_string(d.array.tuples) + " x " + d.type_name + "[" +
+                             std::to_string(d.array.components) + "])";
+    d.array.begin = in.pos;
+    d.array.line = in.line;
+    if (!d.encoding.empty()) {
+      if (ascii)
+        in.fail_at(marker, marker_line, what + " is compressed (" + d.encoding + ") in an ASCII file");
+      if (d.compressed_size > left)
+        in.fail_at(marker, marker_line,
+                   what + " has " + std::to_string(d.compressed_size) + " compressed bytes but only " +
+                       std::to_string(left) + " are left (truncated file or wrong size)");
+      in.pos += d.compressed_size;
+      after_binary_ = true;
+      return;
+    }
+    if (ascii) {
+      if (count > (left + 1) / 2)
+        in.fail_at(marker, marker_line,
+                   what + " needs " + std::to_string(count) + " values but only " + std::to_string(left) +
+                       " bytes are left (truncated file or wrong sizes)");
+      for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t before = in.pos;
+        const std::string_view t = in.token();
+        if (t.empty() || t[0] == '@') {
+          if (!t.empty())
+            in.pos = before;
+          in.fail(what + " ends after " + std::to_string(i) + " of its " + std::to_string(count) +
+                  " values (truncated file or wrong sizes)");
+        }
+      }
+      return;
+    }
+    if (count > left / size)
+      in.fail_at(marker, marker_line,
+                 what + " needs " + std::to_string(count * size) + " bytes but only " + std::to_string(left) +
+                     " are left (truncated file or wrong sizes)");
+    in.pos += count * size;
+    after_binary_ = true;
+  }
+
+  std::map<std::string, std::size_t> locations_; // define name -> number of elements
+  Token lattice_, bounding_box_token_, coord_type_token_;
+  std::array<double, 6> bounding_box_ = {{0, 0, 0, 0, 0, 0}};
+  bool have_bounding_box_ = false;
+  std::string coord_type_;
+  bool header_done_ = false, after_binary_ = false;
+  std::size_t data_start_ = 0, data_line_ = 0;
+};
+
+// Expands HxByteRLE data (a control byte c: c < 128 = the next byte c times; c ≥ 128 = the
+// next c − 128 bytes as they are) into exactly `expected` bytes.
+inline std::string expand_HxByteRLE(const Flow_aligned_surfaces::internal::Text_cursor& in,
+                                    const AmiraMesh_data& d, std::size_t expected)
+{
+  // Each pair of input bytes gives at most 127 output bytes: a larger claim is a lying header.
+  if (expected / 127 > d.compressed_size)
+    in.fail_at(d.array.begin, 0,
+               "the HxByteRLE data of '" + d.array.name + "' (" + std::to_string(d.compressed_size) +
+                   " bytes) cannot expand to the " + std::to_string(expected) + " bytes the lattice needs");
+  std::string out; // grows with the data really expanded, never to a claimed size
+  const std::string_view b = in.bytes().substr(d.array.begin, d.compressed_size);
+  std::size_t i = 0;
+  while (out.size() < expected) {
+    if (i >= b.size())
+      in.fail_at(d.array.begin + i, 0,
+                 "the HxByteRLE data of '" + d.array.name + "' end after " + std::to_string(out.size()) +
+                     " of " + std::to_string(expected) + " bytes");
+    const unsigned char c = static_cast<unsigned char>(b[i++]);
+    const std::size_t n = c & 0x7f;
+    const std::size_t available = (c & 0x80) ? b.size() - i : (i < b.size() ? n : 0);
+    if (n == 0 || n > expected - out.size() || n > available)
+      in.fail_at(d.array.begin + i - 1, 0,
+                 "invalid HxByteRLE run of " + std::to_string(n) + " bytes in '" + d.array.name + "' after " +
+                     std::to_string(out.size()) + " of " + std::to_string(expected) + " bytes");
+    if (c & 0x80) {
+      out.append(b.data() + i, n);
+      i += n;
+    }
+    else
+      out.append(n, b[i++]);
+  }
+  return out;
+}
+
+template <class K>
+Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
+                                                 const std::optional<std::string>& array_name,
+                                                 const std::optional<std::string>& mask_name)
+{
+  const std::string contents =
+      Flow_aligned_surfaces::internal::read_file_contents(filename, "read_AmiraMesh_flow_field");
+  AmiraMesh_parser parser(filename, contents);
+  parser.parse();
+  const Flow_aligned_surfaces::internal::Text_cursor& in = parser.in;
+
+  const AmiraMesh_data* velocity = nullptr;
+  const AmiraMesh_data* mask = nullptr;
+  for (const AmiraMesh_data& d : parser.data) {
+    if (d.location != "Lattice")
+      continue;
+    if (velocity == nullptr && (array_name ? d.array.name == *array_name : d.array.components == 3))
+      velocity = &d;
+    if (mask == nullptr && d.array.name == mask_name.value_or("inside"))
+      mask = &d;
+  }
+  const std::string present = " (the lattice fields are: " + parser.describe_lattice_fields() + ")";
+  if (velocity == nullptr)
+    in.fail_file(array_name ? "there is no lattice field named '" + *array_name + "'" + present
+                            : "there is no 3-component lattice field to read as the velocity" + present);
+  if (velocity->array.components != 3)
+    in.fail_file("the lattice field '" + velocity->array.name + "' has " +
+                 std::to_string(velocity->array.components) +
+                 " components; a velocity needs 3 numbers per node");
+  if (mask_name && !mask_name->empty() && mask == nullptr)
+    in.fail_file("there is no lattice field named '" + *mask_name + "' for the mask" + present);
+  if (mask == velocity)
+    mask = nullptr;
+  if (mask != nullptr && mask->array.components != 1)
+    in.fail_file("the mask field '" + mask->array.name + "' has " + std::to_string(mask->array.components) +
+                 " components; a mask needs 1 number per node");
+
+  // The chosen fields' data, expanded if compressed.
+  std::string expanded[2];
+  Flow_aligned_surfaces::internal::Grid_array arrays[2];
+  const AmiraMesh_data* chosen[2] = {velocity, mask};
+  for (int c = 0; c < 2; ++c) {
+    const AmiraMesh_data* d = chosen[c];
+    if (d == nullptr)
+      continue;
+    if (!d->found)
+      in.fail_file("the data section @" + std::to_string(d->section) + " of '" + d->array.name +
+                   "' is missing (the file ends before it)");
+    arrays[c] = d->array;
+    if (d->encoding.empty())
+      continue;
+    const std::size_t bytes = d->array.tuples * d->array.components *
+                              Flow_aligned_surfaces::internal::binary_type_size(d->array.type);
+    if (d->encoding == "HxByteRLE")
+      expanded[c] = expand_HxByteRLE(in, *d, bytes);
+    else if (d->encoding == "HxZip" && Flow_aligned_surfaces::internal::have_inflate()) {
+      const std::string why = Flow_aligned_surfaces::internal::inflate_bytes(
+          in.bytes().substr(d->array.begin, d->compressed_size), bytes, expanded[c]);
+      if (!why.empty())
+        in.fail_at(d->array.begin, 0, "the HxZip data of '" + d->array.name + "': " + why);
+    }
+    else
+      in.fail_at(d->array.begin, 0,
+                 "the data of '" + d->array.name + "' are compressed with " +
+                     Flow_aligned_surfaces::internal::printable(d->encoding) + ", which is not supported " +
+                     (d->encoding == "HxZip"
+                          ? "by this build (it needs zlib: define CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB "
+                            "and link zlib)"
+                          : "(HxByteRLE and HxZip are)") +
+                     "; save the file uncompressed");
+    arrays[c].bytes = expanded[c];
+    arrays[c].begin = 0;
+    arrays[c].file_offset = d->array.begin;
+  }
+  return Flow_aligned_surfaces::internal::make_grid_field<K>(
+      in, parser.dimensions, parser.origin, parser.spacing, arrays[0], mask ? &arrays[1] : nullptr);
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field on a uniform grid from an AmiraMesh file into an optional, for
+callers that have no field yet; same as the overload below otherwise.
+
+\param filename the file to read
+\param field receives the field on success; left untouched on failure
+\param np the named parameters of the overload below
+\param error if not null, receives the reason of a failure
+\returns `true` on success.
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_AmiraMesh_flow_field(const std::string& filename,
+                               std::optional<Regular_grid_flow_field_3<K>>& field,
+                               const NamedParameters& np = CGAL::parameters::default_values(),
+                               std::string* error = nullptr)
+{
+  const std::optional<std::string> array_name =
+      Flow_aligned_surfaces::internal::string_parameter<Flow_aligned_surfaces::internal_np::array_name_t>(np);
+  const std::optional<std::string> mask_name = Flow_aligned_surfaces::internal::string_parameter<
+      Flow_aligned_surfaces::internal_np::mask_array_name_t>(np);
+  return Flow_aligned_surfaces::internal::read_into("read_AmiraMesh_flow_field", filename, field, error, [&] {
+    return internal::read_AmiraMesh_grid<K>(filename, array_name, mask_name);
+  });
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field on a uniform grid from an AmiraMesh file (`.am`, Amira and Avizo).
+
+The first line is `# AmiraMesh BINARY-LITTLE-ENDIAN 2.1`, `# AmiraMesh 3D BINARY 2.0`
+(big-endian), `# AmiraMesh 3D ASCII 2.0`, or the same with `Avizo` for `AmiraMesh`.  The header
+must have `define Lattice nx ny nz` (at least 2 nodes along each axis) and a `Parameters`
+block with `BoundingBox xmin xmax ymin ymax zmin zmax`, the positions of the first and the last
+node: node `(i, j, k)` is at `(xmin + i·hx, ymin + j·hy, zmin + k·hz)` with
+`hx = (xmax − xmin)/(nx − 1)` and so on.  `CoordType` must be `"uniform"` (or absent); every
+other parameter, nested blocks included, is skipped.  The fields are declared as
+`Lattice { float[3] Data } @1`, of type `byte`, `sbyte`, `short`, `ushort`, `int`, `uint`,
+`int64`, `uint64`, `float` or `double` with 1 to 1024 components, and stored after the
+`# Data section follows` line in `@N` sections (x fastest, components interleaved).  Sections
+compressed with `HxByteRLE` are read, and those compressed with `HxZip` too when zlib is
+available (`CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB` defined and zlib linked; else an
+"unsupported" message).
+Declarations on other locations than `Lattice` are skipped.
+
+The velocity is the lattice field named by `array_name`, by default the first 3-component
+one; the mask is the 1-component lattice field named by `mask_array_name` (nonzero = fluid).
+
+Bad input never crashes, hangs or allocates more than the file's size: a truncated file, a
+missing data section, sizes that do not match the bytes, non-numeric tokens, unknown types, a
+NaN or infinite velocity at a fluid node make the function return `false` with a message that
+names the file, the line and/or byte, and what is wrong.
+
+\tparam K a model of `Kernel`
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the file to read
+\param field receives the field on success; left untouched on failure
+\param np an optional sequence of named parameters among the ones listed below
+\param error if not null, receives the reason of a failure
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{array_name}
+    \cgalParamDescription{the name of the velocity field (`FAS::parameters::array_name()`)}
+    \cgalParamType{`std::string`}
+    \cgalParamDefault{the first 3-component lattice field}
+  \cgalParamNEnd
+  \cgalParamNBegin{mask_array_name}
+    \cgalParamDescription{the name of the node mask field (`FAS::parameters::mask_array_name()`);
+      an error if given and absent; the empty string reads no mask}
+    \cgalParamType{`std::string`}
+    \cgalParamDefault{`"inside"` if the file has it, else no mask}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+
+\sa `read_VTK_flow_field()`, `read_NRRD_flow_field()`, `Regular_grid_flow_field_3`
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_AmiraMesh_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field,
+                               const NamedParameters& np = CGAL::parameters::default_values(),
+                               std::string* error = nullptr)
+{
+  return Flow_aligned_surfaces::internal::read_and_assign(
+      field, [&](std::optional<Regular_grid_flow_field_3<K>>& result) {
+        return read_AmiraMesh_flow_field(filename, result, np, error);
+      });
+}
+
+} // namespace IO
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_READ_AMIRAMESH_H

@@ -1,0 +1,163 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A read position in the bytes of a text (or mixed text and binary) file, with the line number
+// kept up to date, and the failures of a reader thrown as `Read_error` with the message
+// "reader: file: line L, byte B: what".  Tokens are the runs of bytes between white space;
+// numbers are parsed with `std::from_chars` (no locale, no allocation).
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TEXT_CURSOR_H
+#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TEXT_CURSOR_H
+
+#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace internal {
+
+class Text_cursor {
+public:
+  /// `reader` and `file` name the messages; `bytes` must outlive the cursor.
+  Text_cursor(std::string reader, std::string file, std::string_view bytes)
+      : reader_(std::move(reader)), file_(std::move(file)), buf_(bytes)
+  {
+  }
+
+  std::size_t pos = 0;  ///< the byte offset of the next byte to read
+  std::size_t line = 1; ///< the line of `pos`, 0 once in binary data (no line is named then)
+
+  std::string_view bytes() const { return buf_; }
+  const std::string& file() const { return file_; }
+  bool at_end() const { return pos >= buf_.size(); }
+  std::size_t left() const { return pos < buf_.size() ? buf_.size() - pos : 0; }
+
+  [[noreturn]] void fail_at(std::size_t offset, std::size_t at_line, const std::string& what) const
+  {
+    std::ostringstream msg;
+    msg << reader_ << ": " << file_ << ": ";
+    if (at_line != 0)
+      msg << "line " << at_line << ", ";
+    msg << "byte " << offset << ": " << what;
+    throw Read_error(msg.str());
+  }
+  [[noreturn]] void fail(const std::string& what) const { fail_at(pos, line, what); }
+  [[noreturn]] void fail_file(const std::string& what) const
+  {
+    throw Read_error(reader_ + ": " + file_ + ": " + what);
+  }
+
+  static bool is_space(char c)
+  {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+  }
+
+  /// The rest of the current line without its end (`\n` or `\r\n`); moves to the next line.
+  std::string_view read_line()
+  {
+    const std::size_t start = pos;
+    while (pos < buf_.size() && buf_[pos] != '\n')
+      ++pos;
+    std::string_view l = buf_.substr(start, pos - start);
+    if (pos < buf_.size()) {
+      ++pos;
+      ++line;
+    }
+    if (!l.empty() && l.back() == '\r')
+      l.remove_suffix(1);
+    return l;
+  }
+
+  /// Skips white space, new lines included.
+  void skip_space()
+  {
+    while (pos < buf_.size() && is_space(buf_[pos])) {
+      if (buf_[pos] == '\n')
+        ++line;
+      ++pos;
+    }
+  }
+
+  /// Skips spaces and tabs (and `\r`), not the end of the line.
+  void skip_blanks()
+  {
+    while (pos < buf_.size() && (buf_[pos] == ' ' || buf_[pos] == '\t' || buf_[pos] == '\r'))
+      ++pos;
+  }
+
+  /// The next white-space separated token, empty at the end of the bytes.
+  std::string_view token()
+  {
+    skip_space();
+    const std::size_t start = pos;
+    while (pos < buf_.size() && !is_space(buf_[pos]))
+      ++pos;
+    return buf_.substr(start, pos - start);
+  }
+
+  /// Parses `t` as a number; a value out of the range of `double` becomes an infinity.
+  static bool parse_number(std::string_view t, double& v)
+  {
+    const char* b = t.data();
+    const char* e = b + t.size();
+    if (b != e && *b == '+')
+      ++b;
+    const auto r = std::from_chars(b, e, v);
+    if (r.ec == std::errc::result_out_of_range && r.ptr == e) {
+      v = (b != e && *b == '-') ? -std::numeric_limits<double>::infinity()
+                                : std::numeric_limits<double>::infinity();
+      return true;
+    }
+    return r.ec == std::errc() && r.ptr == e;
+  }
+
+  /// `t` (just read, so it ends at `pos`) as a finite number, else a failure naming `what`.
+  double finite_number(std::string_view t, const std::string& what) const
+  {
+    double v = 0;
+    if (t.empty())
+      fail("the file ends where " + what + " was expected (truncated file?)");
+    if (!parse_number(t, v) || !std::isfinite(v))
+      fail_at(pos - t.size(), line, "'" + printable(t) + "' is not a finite number (" + what + ")");
+    return v;
+  }
+
+  /// `t` (just read, so it ends at `pos`) as a non-negative integer, else a failure naming `what`.
+  std::size_t count(std::string_view t, const std::string& what) const
+  {
+    std::size_t v = 0;
+    if (t.empty())
+      fail("the file ends where " + what + " was expected (truncated file?)");
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (r.ec != std::errc() || r.ptr != t.data() + t.size())
+      fail_at(pos - t.size(), line, "'" + printable(t) + "' is not a non-negative integer (" + what + ")");
+    return v;
+  }
+
+  static std::string lower(std::string_view s)
+  {
+    std::string r(s);
+    for (char& c : r)
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return r;
+  }
+
+private:
+  std::string reader_, file_;
+  std::string_view buf_;
+};
+
+} // namespace internal
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TEXT_CURSOR_H
