@@ -430,17 +430,23 @@ TEST(ReadVTKLegacyBadInput, UnknownAndUnsupportedDatasetTypes)
 {
   expect_failure("dataset_foo.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET FOO\n",
                  {"line 4", "unknown dataset type 'FOO'"});
-  for (const std::string type : {"UNSTRUCTURED_GRID", "RECTILINEAR_GRID", "STRUCTURED_GRID"})
-    expect_failure("dataset_" + type + ".vtk",
-                   "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET " + type + "\n",
-                   {"line 4", type, "not supported by this reader yet"});
+  // The other dataset types are read into other fields, which the message names.
+  expect_failure("dataset_RECTILINEAR_GRID.vtk",
+                 "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET RECTILINEAR_GRID\n",
+                 {"line 4", "RECTILINEAR_GRID cannot be read into a Regular_grid_flow_field_3",
+                  "Rectilinear_grid_flow_field_3 and Unstructured_flow_field_3"});
+  for (const std::string type : {"UNSTRUCTURED_GRID", "STRUCTURED_GRID"})
+    expect_failure("dataset_" + type + ".vtk", "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET " + type + "\n",
+                   {"line 4", type + " cannot be read into a Regular_grid_flow_field_3",
+                    "it is read by Unstructured_flow_field_3"});
+  expect_failure("dataset_POLYDATA.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\n",
+                 {"line 4", "POLYDATA has no volume cells"});
   const std::string cells = shared_file("CYLINDER_cells.vtk");
   if (!cells.empty()) {
     Grid g = sentinel_grid();
     std::string error;
     EXPECT_FALSE(FAS::IO::read_VTK_flow_field(cells, g, CGAL::parameters::default_values(), &error));
-    EXPECT_NE(error.find("UNSTRUCTURED_GRID is not supported by this reader yet"), std::string::npos)
-        << error;
+    EXPECT_NE(error.find("it is read by Unstructured_flow_field_3"), std::string::npos) << error;
     expect_untouched(g);
   }
 }
