@@ -161,11 +161,8 @@ public:
       f[a] = (std::min)((x[a] - X[c[a]]) / (X[c[a] + 1] - X[c[a]]), 1.);
       g[a] = 1. - f[a];
     }
-    double r[3];
-    if (!internal::masked_trilinear_blend(v_, m_, c[0] + stride_y_ * c[1] + stride_z_ * c[2], stride_y_,
-                                          stride_z_, f, g, r))
-      return std::nullopt;
-    return Vector_3(FT(r[0]), FT(r[1]), FT(r[2]));
+    return internal::masked_trilinear_vector<Vector_3, FT>(v_, m_, c[0] + stride_y_ * c[1] + stride_z_ * c[2],
+                                                           stride_y_, stride_z_, f, g);
   }
 
   /// @}

@@ -825,9 +825,7 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
     const bool representable =
         std::isfinite(v) && std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)());
     if (!d.flags.empty() && d.flags[node] == 0) {
-      // A solid node's value is never interpolated: a non-finite one is stored as zero, as the
-      // fields' constructors do.
-      d.values[i] = representable ? static_cast<float>(v) : 0.f;
+      d.values[i] = representable ? static_cast<float>(v) : std::numeric_limits<float>::quiet_NaN();
       return;
     }
     if (!representable) {
@@ -840,6 +838,14 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
     }
     d.values[i] = static_cast<float>(v);
   });
+  // A solid node's value is never interpolated: one with a non-finite component is stored as
+  // zero, as the grid fields' constructors do (and the cells field, which refuses non-finite
+  // values, gets the same).
+  for (std::size_t node = 0; node < d.flags.size(); ++node) {
+    float* c = d.values.data() + 3 * node;
+    if (d.flags[node] == 0 && !(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2])))
+      c[0] = c[1] = c[2] = 0.f;
+  }
   return d;
 }
 

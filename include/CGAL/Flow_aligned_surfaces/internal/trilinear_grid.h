@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -133,6 +134,18 @@ inline bool masked_trilinear_blend(const float* v, const unsigned char* m, std::
     r[d] = g[2] * (g[1] * x00 + f[1] * x10) + f[2] * (g[1] * x01 + f[1] * x11);
   }
   return true;
+}
+
+/// The same blend as a kernel vector, or `std::nullopt` where the mask refuses it.
+template <class Vector_3, class FT>
+std::optional<Vector_3> masked_trilinear_vector(const float* v, const unsigned char* m, std::size_t base,
+                                                std::size_t stride_y, std::size_t stride_z, const double f[3],
+                                                const double g[3])
+{
+  double r[3];
+  if (!masked_trilinear_blend(v, m, base, stride_y, stride_z, f, g, r))
+    return std::nullopt;
+  return Vector_3(FT(r[0]), FT(r[1]), FT(r[2]));
 }
 
 } // namespace internal
