@@ -1344,10 +1344,10 @@ of the `Regular_grid_flow_field_3` overload; besides, a cell of another type giv
 naming the cell's index and its type, a point index out of range names the cell and the
 value, and counts that do not match (`CELLS` and `CELL_TYPES`, the number of values a cell
 list holds, `POINTS` and `DIMENSIONS`) give both numbers.  A **node mask removes every cell
-that touches a solid point**: the same rule as the grid fields (the interior of a cell
-touching a solid node is outside), except that with unstructured cells the faces shared with
-removed cells are still inside only through the kept cells.  Points of removed cells may have
-non-finite values (stored as zero); every other point must have a finite velocity.
+that touches a solid point**: the same rule as the grid fields: the interior of a cell
+touching a solid node is outside, and the faces that a kept cell shares with a removed one are
+inside (they belong to the kept cell).  Solid points may have non-finite values (stored as
+zero); every other point must have a finite velocity.
 
 \tparam K a model of `Kernel`
 \tparam NamedParameters a sequence of named parameters
