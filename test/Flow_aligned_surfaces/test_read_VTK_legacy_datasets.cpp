@@ -727,6 +727,19 @@ TEST(ReadVTKLegacyDatasetsBadInput, BadCoordinatesNameTheAxisOrPoint)
   }
 }
 
+TEST(ReadVTKLegacyDatasetsBadInput, TheFieldsConstructorErrorsNameTheFile)
+{
+  // A spacing whose far nodes overflow to infinity passes the reader's checks; the fields'
+  // constructors refuse the coordinates, and the reader returns their message with the file.
+  Vtk_file f(false, "STRUCTURED_POINTS");
+  f.line("DIMENSIONS 3 2 2").line("SPACING 1e308 1 1").velocity(std::vector<double>(36, 0.));
+  expect_failure<Cells>(
+      "overflowing_points.vtk", f.s,
+      {"Unstructured_flow_field_3: points[6] (coordinate 0 of point 2) is inf", "expected a finite number"});
+  expect_failure<Rectilinear>("overflowing_coordinates.vtk", f.s,
+                              {"Rectilinear_grid_flow_field_3: coordinates[0][2] (x of node 2) is inf"});
+}
+
 TEST(ReadVTKLegacyDatasetsBadInput, MaskThatRemovesEveryCell)
 {
   Vtk_file f = unstructured_geometry(false, false);
