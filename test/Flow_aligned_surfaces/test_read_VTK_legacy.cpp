@@ -17,6 +17,9 @@
 
 #include <gtest/gtest.h>
 
+#include "real_data.h"
+#include "test_files.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -42,22 +45,7 @@ namespace FAS = CGAL::Flow_aligned_surfaces;
 
 std::string temporary(const std::string& name)
 {
-  return ::testing::TempDir() + "fas_read_VTK_legacy_" + name;
-}
-
-void write_bytes(const std::string& filename, const std::string& bytes)
-{
-  std::ofstream os(filename, std::ios::binary | std::ios::trunc);
-  os.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  ASSERT_TRUE(bool(os)) << filename;
-}
-
-std::string read_bytes(const std::string& filename)
-{
-  std::ifstream is(filename, std::ios::binary);
-  std::ostringstream s;
-  s << is.rdbuf();
-  return s.str();
+  return temporary_file("fas_read_VTK_legacy_", name);
 }
 
 // A 4 x 3 x 5 grid with irregular values, a non-trivial origin and spacing, and two solid nodes.
@@ -271,12 +259,7 @@ TEST(ReadVTKLegacy, BinaryFileWithDoubleVectorsCellDataAndAnIntMask)
 
 std::string shared_file(const std::string& name)
 {
-#ifdef FAS_SHARED_DATA_DIR
-  const std::string file = std::string(FAS_SHARED_DATA_DIR) + "/" + name;
-  if (std::ifstream(file).good())
-    return file;
-#endif
-  return std::string();
+  return shared_data_file(name);
 }
 
 struct Grid_statistics {
@@ -382,29 +365,8 @@ TEST(ReadVTKLegacy, PatchesInTheCylinderWakeAlignToTheFlow)
   ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) << error;
   // In the near wake (3 diameters behind the cylinder's axis, where the (v, w) secondary flow
   // is strong), more than 0.1 away from every wall and 0.15 from the cylinder.
-  const Point center(0.8, 0.2, 0.2);
-  {
-    Mesh tm;
-    FAS::make_planar_patch(tm, center, Vector(0.4, 0.2, 1), 0.15, 0.15, 800);
-    const double before = FAS::normalized_flux(tm, g);
-    EXPECT_GT(before, 0.3);
-    const FAS::Alignment_report r = FAS::align_to_flow(tm, g, FAS::Alignment::TANGENTIAL);
-    EXPECT_LE(r.normalized_flux, 0.02)
-        << "from " << before << " in " << r.number_of_iterations << " iterations";
-    RecordProperty("tangential_flux", std::to_string(before) + " -> " + std::to_string(r.normalized_flux) +
-                                          " in " + std::to_string(r.number_of_iterations) + " iterations");
-  }
-  {
-    Mesh tm;
-    FAS::make_planar_patch(tm, center, Vector(1, 0.8, 0.5), 0.15, 0.15, 800);
-    const double before = FAS::normalized_flux(tm, g);
-    EXPECT_LT(before, 0.8);
-    const FAS::Alignment_report r = FAS::align_to_flow(tm, g, FAS::Alignment::ORTHOGONAL);
-    EXPECT_GE(r.normalized_flux, 0.9)
-        << "from " << before << " in " << r.number_of_iterations << " iterations";
-    RecordProperty("orthogonal_flux", std::to_string(before) + " -> " + std::to_string(r.normalized_flux) +
-                                          " in " + std::to_string(r.number_of_iterations) + " iterations");
-  }
+  expect_patches_align(g, "CYLINDER_grid", Point(0.8, 0.2, 0.2), Vector(0.4, 0.2, 1), Vector(1, 0.8, 0.5),
+                       0.15);
 }
 
 // ------------------------------------------------------------------------------------------
@@ -430,17 +392,24 @@ TEST(ReadVTKLegacyBadInput, UnknownAndUnsupportedDatasetTypes)
 {
   expect_failure("dataset_foo.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET FOO\n",
                  {"line 4", "unknown dataset type 'FOO'"});
-  for (const std::string type : {"UNSTRUCTURED_GRID", "RECTILINEAR_GRID", "STRUCTURED_GRID"})
+  // The other dataset types are read into other fields, which the message names.
+  expect_failure("dataset_RECTILINEAR_GRID.vtk",
+                 "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET RECTILINEAR_GRID\n",
+                 {"line 4", "RECTILINEAR_GRID cannot be read into a Regular_grid_flow_field_3",
+                  "Rectilinear_grid_flow_field_3 and Unstructured_flow_field_3"});
+  for (const std::string type : {"UNSTRUCTURED_GRID", "STRUCTURED_GRID"})
     expect_failure("dataset_" + type + ".vtk",
                    "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET " + type + "\n",
-                   {"line 4", type, "not supported by this reader yet"});
+                   {"line 4", type + " cannot be read into a Regular_grid_flow_field_3",
+                    "it is read by Unstructured_flow_field_3"});
+  expect_failure("dataset_POLYDATA.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\n",
+                 {"line 4", "POLYDATA has no volume cells"});
   const std::string cells = shared_file("CYLINDER_cells.vtk");
   if (!cells.empty()) {
     Grid g = sentinel_grid();
     std::string error;
     EXPECT_FALSE(FAS::IO::read_VTK_flow_field(cells, g, CGAL::parameters::default_values(), &error));
-    EXPECT_NE(error.find("UNSTRUCTURED_GRID is not supported by this reader yet"), std::string::npos)
-        << error;
+    EXPECT_NE(error.find("it is read by Unstructured_flow_field_3"), std::string::npos) << error;
     expect_untouched(g);
   }
 }

@@ -14,6 +14,8 @@
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
+#include <CGAL/Flow_aligned_surfaces/internal/trilinear_grid.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -106,37 +108,7 @@ public:
       : origin_(origin), spacing_(spacing), n_(dimensions)
   {
     const std::size_t nodes = checked_number_of_nodes(origin, spacing, dimensions);
-    // Compared before anything is read or allocated: the sizes come from the caller.
-    if (values.size() / 3 != nodes || values.size() % 3 != 0) {
-      std::ostringstream msg;
-      msg << "Regular_grid_flow_field_3: values.size() is " << values.size() << " but the dimensions "
-          << dimensions_string(dimensions) << " need 3*nx*ny*nz = " << 3 * nodes;
-      throw std::invalid_argument(msg.str());
-    }
-    if (!mask.empty() && mask.size() != nodes) {
-      std::ostringstream msg;
-      msg << "Regular_grid_flow_field_3: mask.size() is " << mask.size() << " but the dimensions "
-          << dimensions_string(dimensions) << " need nx*ny*nz = " << nodes
-          << " (or an empty mask for no mask)";
-      throw std::invalid_argument(msg.str());
-    }
-    for (std::size_t v = 0; v < nodes; ++v) {
-      float* c = values.data() + 3 * v;
-      if (std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]))
-        continue;
-      if (!mask.empty() && mask[v] == 0) {
-        // A solid node can still get a zero weight in the interpolation (on the faces of fluid
-        // cells), and 0 * NaN would poison the result.
-        c[0] = c[1] = c[2] = 0.f;
-        continue;
-      }
-      const std::size_t i = v % n_[0], j = (v / n_[0]) % n_[1], k = v / (n_[0] * n_[1]);
-      std::ostringstream msg;
-      msg << "Regular_grid_flow_field_3: values of fluid node (" << i << ", " << j << ", " << k
-          << ") (values[" << 3 * v << ".." << 3 * v + 2 << "]) are (" << c[0] << ", " << c[1] << ", " << c[2]
-          << "); expected finite numbers";
-      throw std::invalid_argument(msg.str());
-    }
+    internal::check_grid_node_values("Regular_grid_flow_field_3", dimensions, nodes, values, mask);
 
     values_ = std::make_shared<const std::vector<float>>(std::move(values));
     v_ = values_->data();
@@ -185,36 +157,8 @@ public:
       f[a] = (std::min)(t - static_cast<double>(c[a]), 1.);
       g[a] = 1. - f[a];
     }
-    const std::size_t base = c[0] + stride_y_ * c[1] + stride_z_ * c[2];
-    const std::size_t corner[8] = {base,
-                                   base + 1,
-                                   base + stride_y_,
-                                   base + stride_y_ + 1,
-                                   base + stride_z_,
-                                   base + stride_z_ + 1,
-                                   base + stride_z_ + stride_y_,
-                                   base + stride_z_ + stride_y_ + 1};
-
-    if (m_ != nullptr) {
-      // Only corners with a nonzero weight count, so that closed fluid cells are inside even
-      // where they touch solid cells.
-      for (int q = 0; q < 8; ++q) {
-        if (m_[corner[q]] == 0 && ((q & 1) ? f[0] : g[0]) != 0. && ((q & 2) ? f[1] : g[1]) != 0. &&
-            ((q & 4) ? f[2] : g[2]) != 0.)
-          return std::nullopt;
-      }
-    }
-
-    // The (1-f)·a + f·b form returns a node's value exactly when f is 0 or 1.
-    double r[3];
-    for (int d = 0; d < 3; ++d) {
-      const double x00 = g[0] * v_[3 * corner[0] + d] + f[0] * v_[3 * corner[1] + d];
-      const double x10 = g[0] * v_[3 * corner[2] + d] + f[0] * v_[3 * corner[3] + d];
-      const double x01 = g[0] * v_[3 * corner[4] + d] + f[0] * v_[3 * corner[5] + d];
-      const double x11 = g[0] * v_[3 * corner[6] + d] + f[0] * v_[3 * corner[7] + d];
-      r[d] = g[2] * (g[1] * x00 + f[1] * x10) + f[2] * (g[1] * x01 + f[1] * x11);
-    }
-    return Vector_3(FT(r[0]), FT(r[1]), FT(r[2]));
+    return internal::masked_trilinear_vector<Vector_3, FT>(v_, m_, c[0] + stride_y_ * c[1] + stride_z_ * c[2],
+                                                           stride_y_, stride_z_, f, g);
   }
 
   /// @}
@@ -336,27 +280,13 @@ private:
     return i + stride_y_ * j + stride_z_ * k;
   }
 
-  static std::string dimensions_string(const Dimensions& d)
-  {
-    std::ostringstream s;
-    s << d[0] << " x " << d[1] << " x " << d[2];
-    return s.str();
-  }
-
   // Validates the geometry and returns nx·ny·nz, guaranteed to fit with the factor 3 of the
   // value array, so that callers can allocate from it.
   static std::size_t checked_number_of_nodes(const Point_3& origin, const Vector_3& spacing,
                                              const Dimensions& dimensions)
   {
     static const char* const axis[3] = {"x", "y", "z"};
-    for (int a = 0; a < 3; ++a) {
-      if (dimensions[a] < 2) {
-        std::ostringstream msg;
-        msg << "Regular_grid_flow_field_3: dimensions[" << a << "] (n" << axis[a] << ") is " << dimensions[a]
-            << "; expected at least 2 nodes along each axis";
-        throw std::invalid_argument(msg.str());
-      }
-    }
+    internal::check_grid_dimensions("Regular_grid_flow_field_3", dimensions);
     const double h[3] = {CGAL::to_double(spacing.x()), CGAL::to_double(spacing.y()),
                          CGAL::to_double(spacing.z())};
     for (int a = 0; a < 3; ++a) {
@@ -378,19 +308,7 @@ private:
         throw std::invalid_argument(msg.str());
       }
     }
-    const std::size_t max_nodes =
-        (std::min)(std::vector<float>().max_size() / 3, std::vector<unsigned char>().max_size());
-    std::size_t nodes = dimensions[0];
-    for (int a = 1; a < 3; ++a) {
-      if (nodes > max_nodes / dimensions[a]) {
-        std::ostringstream msg;
-        msg << "Regular_grid_flow_field_3: dimensions " << dimensions_string(dimensions)
-            << " have more nodes than a std::vector can hold (at most " << max_nodes << ")";
-        throw std::invalid_argument(msg.str());
-      }
-      nodes *= dimensions[a];
-    }
-    return nodes;
+    return internal::grid_node_count("Regular_grid_flow_field_3", dimensions);
   }
 
   // The kernel objects, as given, for the accessors.

@@ -1,24 +1,30 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Reads a velocity field on a uniform grid from a legacy VTK file (`.vtk`, ASCII or BINARY,
-// `DATASET STRUCTURED_POINTS`): nx × ny × nz nodes, a 3-component point data array (the
-// velocity, 3·nx·ny·nz numbers) and optionally a 1-component array (the node mask, nx·ny·nz
-// numbers).  The file is read in two passes over its bytes: the first checks the whole
+// Reads a velocity field from a legacy VTK file (`.vtk`, ASCII or BINARY) with DATASET
+// STRUCTURED_POINTS, RECTILINEAR_GRID, STRUCTURED_GRID or UNSTRUCTURED_GRID: the nodes (a uniform
+// grid origin + (i hx, j hy, k hz), per-axis coordinates (X_i, Y_j, Z_k), or listed points), the
+// cells of an unstructured grid (point indices and VTK types), a 3-component point data array
+// (the velocity, 3 numbers per node) and optionally a 1-component array (the node mask, one
+// number per node).  The file is read in two passes over its bytes: the first checks the whole
 // structure and records where each array starts, skipping the data; the second decodes only the
-// two chosen arrays.  Every count is checked against the bytes left before anything is
-// allocated, so a lying header cannot make the reader allocate more than the file's size.
+// arrays needed.  Every count is checked against the bytes left before anything is allocated,
+// so a lying header cannot make the reader allocate more than the file's size.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_READ_VTK_LEGACY_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_READ_VTK_LEGACY_H
 
 #include <string>
 
+#include <CGAL/Flow_aligned_surfaces/Rectilinear_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
@@ -27,6 +33,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -48,7 +55,8 @@ struct VTK_legacy_array {
   std::string kind; // SCALARS, VECTORS, NORMALS, FIELD, ...
   std::string type; // the VTK data type, lower case
   std::size_t components = 0, tuples = 0;
-  std::size_t begin = 0, line = 0; // byte offset and line of the first value
+  std::size_t begin = 0, line = 0;         // byte offset and line of the first value
+  std::size_t header = 0, header_line = 0; // byte offset and line of the header
   bool point_data = true;
 };
 
@@ -65,9 +73,15 @@ public:
 
   std::array<std::size_t, 3> dimensions = {{0, 0, 0}};
   std::array<double, 3> origin = {{0., 0., 0.}}, spacing = {{1., 1., 1.}};
-  std::size_t nodes = 0;
+  std::size_t nodes = 0, cells = 0;
   std::vector<VTK_legacy_array> arrays;
   bool binary = false;
+  std::string dataset;
+  // The geometry arrays: per-axis coordinates (RECTILINEAR_GRID), points (STRUCTURED_GRID and
+  // UNSTRUCTURED_GRID), and the cells of an UNSTRUCTURED_GRID, either as one list (`cell_list`,
+  // up to file version 5.0) or as offsets and connectivity (version 5.1).
+  std::optional<VTK_legacy_array> coordinates[3], points, cell_list, offsets, connectivity, cell_types;
+  bool have_cells = false;
 
   [[noreturn]] void fail_at(std::size_t offset, std::size_t line, const std::string& what) const
   {
@@ -84,8 +98,9 @@ public:
     throw VTK_legacy_error("read_VTK_flow_field: " + file_ + ": " + what);
   }
 
-  // Pass 1: the header, the geometry and the position of every array.
-  void parse()
+  // Pass 1: the header, the geometry and the position of every array.  `target` names the
+  // field type being read, for the message when `dataset` is not one it reads.
+  void parse(std::initializer_list<const char*> accepted, const char* target)
   {
     const std::string_view first = read_line();
     if (lower(first).rfind("# vtk datafile version", 0) != 0)
@@ -100,13 +115,21 @@ public:
       fail("unknown file format '" + format + "'; expected ASCII or BINARY");
 
     expect_keyword("DATASET");
-    const std::string dataset = upper(token("the dataset type"));
-    if (dataset == "RECTILINEAR_GRID" || dataset == "STRUCTURED_GRID" || dataset == "UNSTRUCTURED_GRID" ||
-        dataset == "POLYDATA")
-      fail("DATASET " + dataset + " is not supported by this reader yet; it reads STRUCTURED_POINTS");
-    if (dataset != "STRUCTURED_POINTS")
-      fail("unknown dataset type '" + dataset +
-           "'; expected STRUCTURED_POINTS, STRUCTURED_GRID, RECTILINEAR_GRID, UNSTRUCTURED_GRID or POLYDATA");
+    dataset = upper(token("the dataset type"));
+    const char* readers = readers_of(dataset);
+    if (readers == nullptr)
+      fail(dataset == "POLYDATA"
+               ? std::string("DATASET POLYDATA has no volume cells to interpolate in; expected "
+                             "STRUCTURED_POINTS, RECTILINEAR_GRID, STRUCTURED_GRID or UNSTRUCTURED_GRID")
+               : "unknown dataset type '" + printable(dataset) +
+                     "'; expected STRUCTURED_POINTS, STRUCTURED_GRID, RECTILINEAR_GRID, UNSTRUCTURED_GRID or "
+                     "POLYDATA");
+    if (std::find_if(accepted.begin(), accepted.end(), [&](const char* d) { return dataset == d; }) ==
+        accepted.end())
+      fail("DATASET " + dataset + " cannot be read into a " + target + "; it is read by " + readers);
+    const bool structured_points = dataset == "STRUCTURED_POINTS",
+               rectilinear = dataset == "RECTILINEAR_GRID", curvilinear = dataset == "STRUCTURED_GRID",
+               unstructured = dataset == "UNSTRUCTURED_GRID";
 
     bool have_dimensions = false;
     std::string key;
@@ -116,18 +139,62 @@ public:
         break;
       }
       key = upper(key);
-      if (key == "DIMENSIONS") {
+      const int axis = key == "X_COORDINATES"   ? 0
+                       : key == "Y_COORDINATES" ? 1
+                       : key == "Z_COORDINATES" ? 2
+                                                : -1;
+      if (key == "DIMENSIONS" && !unstructured) {
         for (int a = 0; a < 3; ++a)
           dimensions[a] = integer("DIMENSIONS");
         have_dimensions = true;
       }
-      else if (key == "ORIGIN") {
+      else if (key == "ORIGIN" && structured_points) {
         for (int a = 0; a < 3; ++a)
           origin[a] = real("ORIGIN");
       }
-      else if (key == "SPACING" || key == "ASPECT_RATIO") {
+      else if ((key == "SPACING" || key == "ASPECT_RATIO") && structured_points) {
         for (int a = 0; a < 3; ++a)
           spacing[a] = real(key.c_str());
+      }
+      else if (axis >= 0 && rectilinear) {
+        const std::size_t n = integer(key.c_str());
+        coordinates[axis] = geometry_array(key, data_type(key.c_str()), 1, n);
+      }
+      else if (key == "POINTS" && (curvilinear || unstructured)) {
+        const std::size_t n = integer("POINTS");
+        points = geometry_array(key, data_type("POINTS"), 3, n);
+      }
+      else if (key == "CELLS" && unstructured) {
+        const std::size_t n = integer("CELLS"), size = integer("the CELLS size");
+        std::string next;
+        if (peek_token(next) && upper(next) == "OFFSETS") {
+          // VTK >= 9 (file version 5.1): n offsets (cells + 1) and `size` point indices.
+          if (n == 0)
+            fail("CELLS 0 " + std::to_string(size) +
+                 ": the OFFSETS form needs the number of cells + 1 offsets");
+          next_token(next);
+          offsets = geometry_array("OFFSETS", data_type("OFFSETS"), 1, n);
+          expect_keyword("CONNECTIVITY");
+          connectivity = geometry_array("CONNECTIVITY", data_type("CONNECTIVITY"), 1, size);
+          cells = n - 1;
+        }
+        else {
+          // Up to file version 5.0: per cell, its number of points and their indices.
+          if (n > size)
+            fail("CELLS " + std::to_string(n) + " " + std::to_string(size) + ": " + std::to_string(n) +
+                 " cells cannot be listed in " + std::to_string(size) +
+                 " values (each needs its number of points)");
+          cell_list = geometry_array(key, "int", 1, size);
+          cells = n;
+        }
+        have_cells = true;
+      }
+      else if (key == "CELL_TYPES" && unstructured) {
+        const std::size_t n = integer("CELL_TYPES");
+        if (have_cells && n != cells)
+          fail("CELL_TYPES " + std::to_string(n) + " does not match the " + std::to_string(cells) +
+               " cells of CELLS");
+        cell_types = geometry_array(key, "int", 1, n);
       }
       else if (key == "FIELD") {
         field(false);
@@ -136,33 +203,18 @@ public:
         break;
       }
       else {
-        fail("unexpected keyword '" + key +
-             "' in the STRUCTURED_POINTS geometry; expected DIMENSIONS, ORIGIN, SPACING, ASPECT_RATIO, "
-             "FIELD, POINT_DATA or CELL_DATA");
+        fail("unexpected keyword '" + printable(key) + "' in the " + dataset + " geometry; expected " +
+             (structured_points ? "DIMENSIONS, ORIGIN, SPACING, ASPECT_RATIO"
+              : rectilinear     ? "DIMENSIONS, X_COORDINATES, Y_COORDINATES, Z_COORDINATES"
+              : curvilinear     ? "DIMENSIONS, POINTS"
+                                : "POINTS, CELLS, CELL_TYPES") +
+             ", FIELD, POINT_DATA or CELL_DATA");
       }
     }
-    if (!have_dimensions)
-      fail("the STRUCTURED_POINTS dataset has no DIMENSIONS");
-    for (int a = 0; a < 3; ++a)
-      if (dimensions[a] == 0)
-        fail("empty grid: DIMENSIONS " + dimensions_string() + " has no nodes");
-    for (int a = 0; a < 3; ++a)
-      if (dimensions[a] < 2)
-        fail("DIMENSIONS " + dimensions_string() +
-             ": a grid needs at least 2 nodes along each axis (2D and 1D grids are not supported)");
-    for (int a = 0; a < 3; ++a)
-      if (!(spacing[a] > 0.))
-        fail("SPACING component " + std::to_string(a) + " is " + std::to_string(spacing[a]) +
-             "; expected positive numbers");
-    nodes = dimensions[0];
-    for (int a = 1; a < 3; ++a) {
-      // A grid whose float values cannot fit in the file is caught by the array sizes; this only
-      // keeps the product from overflowing.
-      if (nodes > (std::numeric_limits<std::size_t>::max)() / 16 / dimensions[a])
-        fail("DIMENSIONS " + dimensions_string() + " has too many nodes");
-      nodes *= dimensions[a];
-    }
-    const std::size_t cells = (dimensions[0] - 1) * (dimensions[1] - 1) * (dimensions[2] - 1);
+    if (unstructured)
+      check_unstructured_geometry();
+    else
+      check_structured_geometry(have_dimensions);
 
     // The attribute sections.
     while (!key.empty()) {
@@ -171,8 +223,8 @@ public:
         const std::size_t n = integer(key.c_str());
         const std::size_t expected = point_data ? nodes : cells;
         if (n != expected)
-          fail(key + " " + std::to_string(n) + " does not match DIMENSIONS " + dimensions_string() +
-               ", which has " + std::to_string(expected) + (point_data ? " nodes" : " cells"));
+          fail(key + " " + std::to_string(n) + " does not match " + size_source(point_data) + ", which has " +
+               std::to_string(expected) + (point_data ? " nodes" : " cells"));
         section_tuples_ = n;
         in_point_data_ = point_data;
         in_section_ = true;
@@ -237,6 +289,106 @@ public:
       else
         key = upper(key);
     }
+  }
+
+  // The checks of a structured dataset's geometry once it is all read; sets `nodes` and `cells`.
+  void check_structured_geometry(bool have_dimensions)
+  {
+    if (!have_dimensions)
+      fail("the " + dataset + " dataset has no DIMENSIONS");
+    for (int a = 0; a < 3; ++a)
+      if (dimensions[a] == 0)
+        fail("empty grid: DIMENSIONS " + dimensions_string() + " has no nodes");
+    for (int a = 0; a < 3; ++a)
+      if (dimensions[a] < 2)
+        fail("DIMENSIONS " + dimensions_string() +
+             ": a grid needs at least 2 nodes along each axis (2D and 1D grids are not supported)");
+    for (int a = 0; a < 3; ++a)
+      if (!(spacing[a] > 0.))
+        fail("SPACING component " + std::to_string(a) + " is " + std::to_string(spacing[a]) +
+             "; expected positive numbers");
+    nodes = dimensions[0];
+    for (int a = 1; a < 3; ++a) {
+      // A grid whose float values cannot fit in the file is caught by the array sizes; this only
+      // keeps the product from overflowing.
+      if (nodes > (std::numeric_limits<std::size_t>::max)() / 16 / dimensions[a])
+        fail("DIMENSIONS " + dimensions_string() + " has too many nodes");
+      nodes *= dimensions[a];
+    }
+    cells = (dimensions[0] - 1) * (dimensions[1] - 1) * (dimensions[2] - 1);
+    static const char* const names[3] = {"X_COORDINATES", "Y_COORDINATES", "Z_COORDINATES"};
+    if (dataset == "RECTILINEAR_GRID") {
+      for (int a = 0; a < 3; ++a) {
+        if (!coordinates[a])
+          fail("the RECTILINEAR_GRID dataset has no " + std::string(names[a]));
+        if (coordinates[a]->tuples != dimensions[a])
+          fail_at(coordinates[a]->header, coordinates[a]->header_line,
+                  std::string(names[a]) + " " + std::to_string(coordinates[a]->tuples) +
+                      " does not match DIMENSIONS " + dimensions_string() + ", which has " +
+                      std::to_string(dimensions[a]) + " nodes along " + "xyz"[a]);
+      }
+    }
+    if (dataset == "STRUCTURED_GRID") {
+      if (!points)
+        fail("the STRUCTURED_GRID dataset has no POINTS");
+      if (points->tuples != nodes)
+        fail_at(points->header, points->header_line,
+                "POINTS " + std::to_string(points->tuples) + " does not match DIMENSIONS " +
+                    dimensions_string() + ", which has " + std::to_string(nodes) + " nodes");
+    }
+  }
+
+  void check_unstructured_geometry()
+  {
+    if (!points)
+      fail("the UNSTRUCTURED_GRID dataset has no POINTS");
+    if (!have_cells)
+      fail("the UNSTRUCTURED_GRID dataset has no CELLS");
+    if (!cell_types)
+      fail("the UNSTRUCTURED_GRID dataset has no CELL_TYPES");
+    if (cell_types->tuples != cells)
+      fail_at(cell_types->header, cell_types->header_line,
+              "CELL_TYPES " + std::to_string(cell_types->tuples) + " does not match the " +
+                  std::to_string(cells) + " cells of CELLS");
+    nodes = points->tuples;
+    if (nodes == 0 || cells == 0)
+      fail("empty grid: POINTS " + std::to_string(nodes) + " and " + std::to_string(cells) + " cells");
+  }
+
+  // What the number of nodes (or cells) comes from, for messages.
+  std::string size_source(bool point_data = true) const
+  {
+    if (dataset != "UNSTRUCTURED_GRID")
+      return "DIMENSIONS " + dimensions_string();
+    return point_data ? "POINTS " + std::to_string(nodes) : "CELLS " + std::to_string(cells);
+  }
+
+  // The node in messages: its grid index, or the point index of an unstructured grid.
+  std::string node_name(std::size_t node) const
+  {
+    if (dataset == "UNSTRUCTURED_GRID")
+      return "point " + std::to_string(node);
+    const std::size_t nx = dimensions[0], ny = dimensions[1];
+    return "node " + std::to_string(node) + " = (" + std::to_string(node % nx) + ", " +
+           std::to_string((node / nx) % ny) + ", " + std::to_string(node / (nx * ny)) + ")";
+  }
+
+  // The field types that read a dataset type, or null for the types no field reads.
+  static const char* readers_of(const std::string& dataset)
+  {
+    if (dataset == "STRUCTURED_POINTS")
+      return "Regular_grid_flow_field_3, Rectilinear_grid_flow_field_3 and Unstructured_flow_field_3";
+    if (dataset == "RECTILINEAR_GRID")
+      return "Rectilinear_grid_flow_field_3 and Unstructured_flow_field_3";
+    if (dataset == "STRUCTURED_GRID" || dataset == "UNSTRUCTURED_GRID")
+      return "Unstructured_flow_field_3";
+    return nullptr;
+  }
+
+  // An array in messages: "VECTORS 'velocity'", or "POINTS" for the unnamed geometry arrays.
+  static std::string label(const std::string& kind, const std::string& name)
+  {
+    return name.empty() ? kind : kind + " '" + name + "'";
   }
 
   // Pass 2: decodes the array `a` (checked by pass 1) into doubles, calling `out(index, value,
@@ -327,7 +479,7 @@ private:
   void next_view(std::string_view& t, const VTK_legacy_array& a)
   {
     if (!next_view(t))
-      fail("the file ends inside the values of " + a.kind + " '" + a.name + "'");
+      fail("the file ends inside the values of " + label(a.kind, a.name));
   }
 
   bool next_token(std::string& t)
@@ -441,13 +593,34 @@ private:
     }
   }
 
-  // Records an array and skips its values, after checking that they fit in what is left.
+  // Records an array of the point or cell data and skips its values.
   void array(const std::string& kind, const std::string& name, const std::string& type,
              std::size_t components, std::size_t tuples, bool candidate = true)
   {
+    arrays.push_back(skip_values(kind, name, type, components, tuples));
+    arrays.back().point_data = in_point_data_ && candidate && kind != "LOOKUP_TABLE";
+    skip_metadata();
+  }
+
+  // Records an array of the geometry (coordinates, points, cells) and skips its values.
+  VTK_legacy_array geometry_array(const std::string& kind, const std::string& type, std::size_t components,
+                                  std::size_t tuples)
+  {
+    if (type == "bit")
+      fail(kind + " of type bit; expected numbers");
+    VTK_legacy_array a = skip_values(kind, "", type, components, tuples);
+    a.point_data = false;
+    skip_metadata();
+    return a;
+  }
+
+  // Checks that the values of an array fit in what is left, then skips them.
+  VTK_legacy_array skip_values(const std::string& kind, const std::string& name, const std::string& type,
+                               std::size_t components, std::size_t tuples)
+  {
     const std::size_t left = buf_.size() - pos_;
     if (components != 0 && tuples > left / components)
-      fail(kind + " '" + name + "' needs " + std::to_string(tuples) + " x " + std::to_string(components) +
+      fail(label(kind, name) + " needs " + std::to_string(tuples) + " x " + std::to_string(components) +
            " values but only " + std::to_string(left) + " bytes are left (truncated file or wrong count)");
     const std::size_t count = components * tuples;
     VTK_legacy_array a;
@@ -456,12 +629,13 @@ private:
     a.type = type;
     a.components = components;
     a.tuples = tuples;
-    a.point_data = in_point_data_ && candidate && kind != "LOOKUP_TABLE";
+    a.header = pos_;
+    a.header_line = line_;
     if (binary) {
       // The values start right after the end of the header line.
       while (pos_ < buf_.size() && buf_[pos_] != '\n') {
         if (!is_space(buf_[pos_]))
-          fail("unexpected text after the header of " + kind + " '" + name + "'");
+          fail("unexpected text after the header of " + label(kind, name));
         ++pos_;
       }
       if (pos_ < buf_.size()) {
@@ -471,7 +645,7 @@ private:
       const std::size_t bytes = type == "bit" ? (count + 7) / 8 : count * type_size(type);
       const std::size_t remaining = buf_.size() - pos_;
       if (bytes > remaining)
-        fail(kind + " '" + name + "' (" + type + ") needs " + std::to_string(bytes) +
+        fail(label(kind, name) + " (" + type + ") needs " + std::to_string(bytes) +
              " bytes of binary data but only " + std::to_string(remaining) +
              " are left (truncated file or wrong count)");
       a.begin = pos_;
@@ -480,7 +654,7 @@ private:
     }
     else {
       if (count > (left + 1) / 2)
-        fail(kind + " '" + name + "' needs " + std::to_string(count) + " values but only " +
+        fail(label(kind, name) + " needs " + std::to_string(count) + " values but only " +
              std::to_string(left) + " bytes are left (truncated file or wrong count)");
       skip_space();
       a.begin = pos_;
@@ -492,8 +666,7 @@ private:
           ascii_value(t, a);
       }
     }
-    arrays.push_back(std::move(a));
-    skip_metadata();
+    return a;
   }
 
   // VTK ≥ 8 may follow an array with METADATA and INFORMATION lines, ended by an empty line.
@@ -524,7 +697,7 @@ private:
                                 : std::numeric_limits<double>::infinity();
     else if (r.ec != std::errc() || r.ptr != e)
       fail_at(pos_ - t.size(), line_,
-              "'" + printable(t) + "' is not a number (in the values of " + a.kind + " '" + a.name + "')");
+              "'" + printable(t) + "' is not a number (in the values of " + label(a.kind, a.name) + ")");
     return v;
   }
 
@@ -582,15 +755,19 @@ inline std::string describe_arrays(const std::vector<VTK_legacy_array>& arrays)
   return r.empty() ? std::string("none") : r;
 }
 
-// Reads the file and builds the field; throws VTK_legacy_error with the message.
-template <class K>
-Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, const std::string* array_name,
-                                                  const std::string* mask_name)
-{
-  std::string contents = Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field");
-  VTK_legacy_parser parser(filename, std::move(contents));
-  parser.parse();
+// The node arrays of a parsed file: the velocity (3 floats per node) and the mask (empty when
+// there is none), decoded and checked.
+struct VTK_legacy_node_data {
+  std::vector<float> values;
+  std::vector<unsigned char> flags;
+  std::string mask_name;
+};
 
+// Chooses the velocity and mask arrays among the point data (by name, else the first VECTORS,
+// else the first 3-component array; the mask named `inside` by default) and decodes them.
+inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std::string* array_name,
+                                           const std::string* mask_name)
+{
   const VTK_legacy_array* velocity = nullptr;
   const VTK_legacy_array* mask = nullptr;
   for (const VTK_legacy_array& a : parser.arrays) {
@@ -628,50 +805,369 @@ Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, c
   for (const VTK_legacy_array* a : {velocity, mask})
     if (a != nullptr && a->tuples != parser.nodes)
       parser.fail_file(std::string(a == mask ? "the mask array '" : "the velocity array '") + a->name +
-                       "' has " + std::to_string(a->tuples) + " tuples but the grid (DIMENSIONS " +
-                       parser.dimensions_string() + ") has " + std::to_string(parser.nodes) + " nodes");
+                       "' has " + std::to_string(a->tuples) + " tuples but the grid (" +
+                       parser.size_source() + ") has " + std::to_string(parser.nodes) + " nodes");
 
+  VTK_legacy_node_data d;
   const std::size_t nodes = parser.nodes;
-  std::vector<unsigned char> flags;
   if (mask != nullptr) {
-    flags.resize(nodes);
+    d.mask_name = mask->name;
+    d.flags.resize(nodes);
     parser.decode(*mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
       if (std::isnan(v))
         parser.fail_at(offset, line, "the mask '" + mask->name + "' is NaN at node " + std::to_string(i));
-      flags[i] = v != 0. ? 1 : 0;
+      d.flags[i] = v != 0. ? 1 : 0;
     });
   }
-  std::vector<float> values(3 * nodes);
+  d.values.resize(3 * nodes);
   parser.decode(*velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
     const std::size_t node = i / 3;
     const bool representable =
         std::isfinite(v) && std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)());
-    if (!flags.empty() && flags[node] == 0) {
-      // The constructor replaces a solid node's non-finite values by zeros.
-      values[i] = representable ? static_cast<float>(v) : std::numeric_limits<float>::quiet_NaN();
+    if (!d.flags.empty() && d.flags[node] == 0) {
+      d.values[i] = representable ? static_cast<float>(v) : std::numeric_limits<float>::quiet_NaN();
       return;
     }
     if (!representable) {
-      const std::size_t nx = parser.dimensions[0], ny = parser.dimensions[1];
       std::ostringstream msg;
-      msg << "the velocity '" << velocity->name << "' at node " << node << " = (" << node % nx << ", "
-          << (node / nx) % ny << ", " << node / (nx * ny) << "), component " << i % 3 << ", is " << v
+      msg << "the velocity '" << velocity->name << "' at " << parser.node_name(node) << ", component "
+          << i % 3 << ", is " << v
           << (std::isfinite(v) ? ", which does not fit in a 32-bit float" : "; expected a finite number")
-          << (flags.empty() ? "" : " at a fluid node");
+          << (d.flags.empty() ? "" : " at a fluid node");
       parser.fail_at(offset, line, msg.str());
     }
-    values[i] = static_cast<float>(v);
+    d.values[i] = static_cast<float>(v);
   });
+  // A solid node's value is never interpolated: one with a non-finite component is stored as
+  // zero, as the grid fields' constructors do (and the cells field, which refuses non-finite
+  // values, gets the same).
+  for (std::size_t node = 0; node < d.flags.size(); ++node) {
+    float* c = d.values.data() + 3 * node;
+    if (d.flags[node] == 0 && !(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2])))
+      c[0] = c[1] = c[2] = 0.f;
+  }
+  return d;
+}
 
+// The values of a geometry array (coordinates or points) as doubles, each finite.
+inline std::vector<double> decode_reals(VTK_legacy_parser& parser, const VTK_legacy_array& a)
+{
+  std::vector<double> r(a.components * a.tuples);
+  parser.decode(a, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
+    if (!std::isfinite(v)) {
+      std::ostringstream msg;
+      msg << a.kind << ": ";
+      if (a.components == 3)
+        msg << "coordinate " << i % 3 << " of point " << i / 3;
+      else
+        msg << "value " << i;
+      msg << " is " << v << "; expected a finite number";
+      parser.fail_at(offset, line, msg.str());
+    }
+    r[i] = v;
+  });
+  return r;
+}
+
+// The node coordinates along each axis of a STRUCTURED_POINTS or RECTILINEAR_GRID dataset.
+inline std::array<std::vector<double>, 3> grid_coordinates(VTK_legacy_parser& parser)
+{
+  std::array<std::vector<double>, 3> x;
+  for (int a = 0; a < 3; ++a) {
+    if (parser.dataset == "RECTILINEAR_GRID") {
+      x[a] = decode_reals(parser, *parser.coordinates[a]);
+      continue;
+    }
+    x[a].resize(parser.dimensions[a]);
+    for (std::size_t i = 0; i < x[a].size(); ++i) // the formula of Regular_grid_flow_field_3
+      x[a][i] = parser.origin[a] + static_cast<double>(i) * parser.spacing[a];
+  }
+  return x;
+}
+
+// The VTK cell type names, for messages; the number of points of the supported ones (else 0).
+inline const char* vtk_cell_type_name(double t, int* points = nullptr)
+{
+  static const struct {
+    int type, points;
+    const char* name;
+  } table[] = {{1, 0, "VTK_VERTEX"},
+               {2, 0, "VTK_POLY_VERTEX"},
+               {3, 0, "VTK_LINE"},
+               {4, 0, "VTK_POLY_LINE"},
+               {5, 0, "VTK_TRIANGLE"},
+               {6, 0, "VTK_TRIANGLE_STRIP"},
+               {7, 0, "VTK_POLYGON"},
+               {8, 0, "VTK_PIXEL"},
+               {9, 0, "VTK_QUAD"},
+               {10, 4, "VTK_TETRA"},
+               {11, 0, "VTK_VOXEL"},
+               {12, 8, "VTK_HEXAHEDRON"},
+               {13, 6, "VTK_WEDGE"},
+               {14, 5, "VTK_PYRAMID"},
+               {15, 0, "VTK_PENTAGONAL_PRISM"},
+               {16, 0, "VTK_HEXAGONAL_PRISM"},
+               {21, 0, "VTK_QUADRATIC_EDGE"},
+               {22, 0, "VTK_QUADRATIC_TRIANGLE"},
+               {23, 0, "VTK_QUADRATIC_QUAD"},
+               {24, 0, "VTK_QUADRATIC_TETRA"},
+               {25, 0, "VTK_QUADRATIC_HEXAHEDRON"},
+               {26, 0, "VTK_QUADRATIC_WEDGE"},
+               {27, 0, "VTK_QUADRATIC_PYRAMID"},
+               {42, 0, "VTK_POLYHEDRON"}};
+  for (const auto& e : table)
+    if (t == e.type) {
+      if (points != nullptr)
+        *points = e.points;
+      return e.name;
+    }
+  if (points != nullptr)
+    *points = 0;
+  return "not a linear 3D cell type this reader knows";
+}
+
+inline std::string number_string(double v)
+{
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// The cells of an UNSTRUCTURED_GRID (either form of CELLS) in the form of
+// `Unstructured_flow_field_3`, with every type, point count and point index checked.
+inline Flow_aligned_surfaces::internal::Structured_grid_cells
+read_unstructured_cells(VTK_legacy_parser& parser)
+{
+  Flow_aligned_surfaces::internal::Structured_grid_cells r;
+  const std::size_t nc = parser.cells, np = parser.nodes;
+  std::vector<int> points_per_cell(nc);
+  r.cell_types.resize(nc);
+  parser.decode(*parser.cell_types, [&](std::size_t i, double t, std::size_t offset, std::size_t line) {
+    int n = 0;
+    const char* name = vtk_cell_type_name(t, &n);
+    if (n == 0)
+      parser.fail_at(
+          offset, line,
+          "cell " + std::to_string(i) + " has VTK type " + number_string(t) + " (" + name +
+              "); supported: 10 (VTK_TETRA), 12 (VTK_HEXAHEDRON), 13 (VTK_WEDGE), 14 (VTK_PYRAMID)");
+    r.cell_types[i] = static_cast<unsigned char>(t);
+    points_per_cell[i] = n;
+  });
+  auto point_index = [&](std::size_t cell, double v, std::size_t offset, std::size_t line) {
+    if (!(v >= 0. && v < static_cast<double>(np) && v == std::floor(v)))
+      parser.fail_at(offset, line,
+                     "cell " + std::to_string(cell) + " has the point index " + number_string(v) +
+                         "; expected an index in [0, " + std::to_string(np) + ") (POINTS " +
+                         std::to_string(np) + ")");
+    return static_cast<std::int64_t>(v);
+  };
+  auto cell_name = [&](std::size_t cell) {
+    return "cell " + std::to_string(cell) + " (" + vtk_cell_type_name(r.cell_types[cell]) + ")";
+  };
+
+  if (parser.cell_list) {
+    // Legacy form: per cell, its number of points, then their indices.
+    const VTK_legacy_array& list = *parser.cell_list;
+    const std::string cells_line = "CELLS " + std::to_string(nc) + " " + std::to_string(list.tuples);
+    r.offsets.reserve(nc + 1);
+    r.offsets.push_back(0);
+    r.connectivity.reserve(list.tuples - nc); // nc <= list.tuples, checked by pass 1
+    std::size_t cell = 0, left = 0;           // the current cell and its points still to read
+    parser.decode(list, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
+      if (left == 0) {
+        if (cell == nc)
+          parser.fail_at(offset, line,
+                         cells_line + ": the " + std::to_string(nc) + " cells end after " +
+                             std::to_string(i) + " values, not " + std::to_string(list.tuples));
+        if (v != points_per_cell[cell])
+          parser.fail_at(offset, line,
+                         cell_name(cell) + " lists " + number_string(v) + " points; expected " +
+                             std::to_string(points_per_cell[cell]));
+        left = static_cast<std::size_t>(points_per_cell[cell]);
+        return;
+      }
+      r.connectivity.push_back(point_index(cell, v, offset, line));
+      if (--left == 0) {
+        r.offsets.push_back(static_cast<std::int64_t>(r.connectivity.size()));
+        ++cell;
+      }
+    });
+    if (cell != nc)
+      parser.fail_at(list.header, list.header_line,
+                     cells_line + ": the values end inside cell " + std::to_string(cell) + " of " +
+                         std::to_string(nc) + " (wrong count)");
+    return r;
+  }
+
+  // File version 5.1: OFFSETS (cells + 1 of them) and CONNECTIVITY.
+  const VTK_legacy_array& offsets = *parser.offsets;
+  const VTK_legacy_array& connectivity = *parser.connectivity;
+  r.offsets.resize(nc + 1);
+  parser.decode(offsets, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
+    if (i == 0 && v != 0.)
+      parser.fail_at(offset, line, "OFFSETS[0] is " + number_string(v) + "; expected 0");
+    if (i > 0) {
+      const double previous = static_cast<double>(r.offsets[i - 1]);
+      if (v - previous != points_per_cell[i - 1])
+        parser.fail_at(offset, line,
+                       cell_name(i - 1) + " has OFFSETS " + number_string(previous) + " and " +
+                           number_string(v) + ", so " + number_string(v - previous) + " points; expected " +
+                           std::to_string(points_per_cell[i - 1]));
+    }
+    if (i == nc && v != static_cast<double>(connectivity.tuples))
+      parser.fail_at(offset, line,
+                     "the last offset is " + number_string(v) + " but CONNECTIVITY has " +
+                         std::to_string(connectivity.tuples) + " values; expected them equal");
+    r.offsets[i] = static_cast<std::int64_t>(v);
+  });
+  r.connectivity.resize(connectivity.tuples);
+  parser.decode(connectivity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
+    const std::size_t cell = static_cast<std::size_t>(
+        std::upper_bound(r.offsets.begin(), r.offsets.end(), static_cast<std::int64_t>(i)) -
+        r.offsets.begin() - 1);
+    r.connectivity[i] = point_index(cell, v, offset, line);
+  });
+  return r;
+}
+
+// Removes every cell that touches a solid node (`fluid[p] == 0`).
+inline void remove_masked_cells(const VTK_legacy_parser& parser, const VTK_legacy_node_data& d,
+                                Flow_aligned_surfaces::internal::Structured_grid_cells& c)
+{
+  Flow_aligned_surfaces::internal::Structured_grid_cells kept;
+  kept.offsets.push_back(0);
+  for (std::size_t cell = 0; cell < c.cell_types.size(); ++cell) {
+    const auto b = c.connectivity.begin() + c.offsets[cell], e = c.connectivity.begin() + c.offsets[cell + 1];
+    if (std::any_of(b, e, [&](std::int64_t p) { return d.flags[static_cast<std::size_t>(p)] == 0; }))
+      continue;
+    kept.connectivity.insert(kept.connectivity.end(), b, e);
+    kept.offsets.push_back(static_cast<std::int64_t>(kept.connectivity.size()));
+    kept.cell_types.push_back(c.cell_types[cell]);
+  }
+  if (kept.cell_types.empty())
+    parser.fail_file("every one of the " + std::to_string(c.cell_types.size()) +
+                     " cells touches a solid node of the mask '" + d.mask_name + "'; no cell is left");
+  c = std::move(kept);
+}
+
+// Reads the file and builds the field; throw VTK_legacy_error with the message.
+template <class K>
+Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, const std::string* array_name,
+                                                  const std::string* mask_name)
+{
+  VTK_legacy_parser parser(
+      filename, Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field"));
+  parser.parse({"STRUCTURED_POINTS"}, "Regular_grid_flow_field_3");
+  VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
   try {
     return Regular_grid_flow_field_3<K>(Point_3(parser.origin[0], parser.origin[1], parser.origin[2]),
                                         Vector_3(parser.spacing[0], parser.spacing[1], parser.spacing[2]),
-                                        parser.dimensions, std::move(values), std::move(flags));
+                                        parser.dimensions, std::move(d.values), std::move(d.flags));
   } catch (const std::invalid_argument& e) {
     parser.fail_file(e.what());
   }
+}
+
+template <class K>
+Rectilinear_grid_flow_field_3<K> read_VTK_legacy_rectilinear(const std::string& filename,
+                                                             const std::string* array_name,
+                                                             const std::string* mask_name)
+{
+  VTK_legacy_parser parser(
+      filename, Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field"));
+  parser.parse({"STRUCTURED_POINTS", "RECTILINEAR_GRID"}, "Rectilinear_grid_flow_field_3");
+  VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
+  std::array<std::vector<double>, 3> x = grid_coordinates(parser);
+  try {
+    return Rectilinear_grid_flow_field_3<K>(std::move(x), std::move(d.values), std::move(d.flags));
+  } catch (const std::invalid_argument& e) {
+    parser.fail_file(e.what());
+  }
+}
+
+template <class K>
+Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, const std::string* array_name,
+                                                   const std::string* mask_name)
+{
+  VTK_legacy_parser parser(
+      filename, Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field"));
+  parser.parse({"UNSTRUCTURED_GRID", "STRUCTURED_GRID", "RECTILINEAR_GRID", "STRUCTURED_POINTS"},
+               "Unstructured_flow_field_3");
+  VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
+  std::vector<double> points;
+  Flow_aligned_surfaces::internal::Structured_grid_cells cells;
+  if (parser.dataset == "UNSTRUCTURED_GRID") {
+    points = decode_reals(parser, *parser.points);
+    cells = read_unstructured_cells(parser);
+  }
+  else {
+    if (parser.dataset == "STRUCTURED_GRID") {
+      points = decode_reals(parser, *parser.points);
+    }
+    else {
+      const std::array<std::vector<double>, 3> x = grid_coordinates(parser);
+      points.reserve(3 * parser.nodes);
+      for (double z : x[2])
+        for (double y : x[1])
+          for (double xi : x[0])
+            points.insert(points.end(), {xi, y, z});
+    }
+    cells = Flow_aligned_surfaces::internal::structured_grid_cells(parser.dimensions);
+  }
+  if (!d.flags.empty())
+    remove_masked_cells(parser, d, cells);
+  try {
+    return Unstructured_flow_field_3<K>(points, std::move(cells.connectivity), std::move(cells.offsets),
+                                        std::move(cells.cell_types), std::move(d.values));
+  } catch (const std::invalid_argument& e) {
+    parser.fail_file(e.what());
+  }
+}
+
+// The public functions' common part: the named parameters, and the errors made `false` + message.
+template <class Field, class NamedParameters, class Read>
+bool read_VTK_legacy(const std::string& filename, std::optional<Field>& field, const NamedParameters& np,
+                     std::string* error, const Read& read)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const std::string array_name =
+      choose_parameter(get_parameter(np, Flow_aligned_surfaces::internal_np::array_name_t()), std::string());
+  const std::string mask_name = choose_parameter(
+      get_parameter(np, Flow_aligned_surfaces::internal_np::mask_array_name_t()), std::string());
+  constexpr bool has_array_name =
+      !parameters::is_default_parameter<NamedParameters,
+                                        Flow_aligned_surfaces::internal_np::array_name_t>::value;
+  constexpr bool has_mask_name =
+      !parameters::is_default_parameter<NamedParameters,
+                                        Flow_aligned_surfaces::internal_np::mask_array_name_t>::value;
+  try {
+    field.emplace(
+        read(filename, has_array_name ? &array_name : nullptr, has_mask_name ? &mask_name : nullptr));
+    return true;
+  } catch (const VTK_legacy_error& e) {
+    if (error)
+      *error = e.what();
+  } catch (const std::bad_alloc&) {
+    if (error)
+      *error = "read_VTK_flow_field: " + filename + ": not enough memory for the field";
+  }
+  return false;
+}
+
+// The same into an existing field, assigned only on success.
+template <class Field, class NamedParameters, class Read>
+bool read_VTK_legacy(const std::string& filename, Field& field, const NamedParameters& np, std::string* error,
+                     const Read& read)
+{
+  std::optional<Field> result;
+  if (!read_VTK_legacy(filename, result, np, error, read))
+    return false;
+  field = std::move(*result);
+  return true;
 }
 
 } // namespace internal
@@ -694,30 +1190,7 @@ bool read_VTK_flow_field(const std::string& filename, std::optional<Regular_grid
                          const NamedParameters& np = CGAL::parameters::default_values(),
                          std::string* error = nullptr)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const std::string array_name =
-      choose_parameter(get_parameter(np, Flow_aligned_surfaces::internal_np::array_name_t()), std::string());
-  const std::string mask_name = choose_parameter(
-      get_parameter(np, Flow_aligned_surfaces::internal_np::mask_array_name_t()), std::string());
-  constexpr bool has_array_name =
-      !parameters::is_default_parameter<NamedParameters,
-                                        Flow_aligned_surfaces::internal_np::array_name_t>::value;
-  constexpr bool has_mask_name =
-      !parameters::is_default_parameter<NamedParameters,
-                                        Flow_aligned_surfaces::internal_np::mask_array_name_t>::value;
-  try {
-    field.emplace(internal::read_VTK_legacy_grid<K>(filename, has_array_name ? &array_name : nullptr,
-                                                    has_mask_name ? &mask_name : nullptr));
-    return true;
-  } catch (const internal::VTK_legacy_error& e) {
-    if (error)
-      *error = e.what();
-  } catch (const std::bad_alloc&) {
-    if (error)
-      *error = "read_VTK_flow_field: " + filename + ": not enough memory for the field";
-  }
-  return false;
+  return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_grid<K>);
 }
 
 /*!
@@ -727,11 +1200,13 @@ bool read_VTK_flow_field(const std::string& filename, std::optional<Regular_grid
 
 The file must be a legacy VTK file (`# vtk DataFile Version x.x`), ASCII or BINARY (big-endian,
 as VTK writes it), with `DATASET STRUCTURED_POINTS` (`DIMENSIONS`, `ORIGIN`, `SPACING`, or its
-older synonym `ASPECT_RATIO`; at least 2 nodes along each axis).  The velocity is a
+older synonym `ASPECT_RATIO`; at least 2 nodes along each axis).  The other dataset types are
+refused with a message naming the field type that reads them (`Rectilinear_grid_flow_field_3`
+for `RECTILINEAR_GRID`, `Unstructured_flow_field_3` for all).  The velocity is a
 3-component `POINT_DATA` array: `VECTORS`, `NORMALS`, a 3-component `SCALARS` or a
 3-component `FIELD` array, of any numeric type (stored as 32-bit floats).  The node mask is a
 1-component `POINT_DATA` array of any numeric type, nonzero = fluid.  Every other array and
-every `CELL_DATA` section is skipped.
+every `CELL_DATA` section is skipped, and so are the `METADATA` blocks that VTK 9 writes.
 
 Bad input never crashes, hangs or allocates more than the file's size: a truncated file,
 counts that do not match `DIMENSIONS`, unknown or unsupported dataset types, non-numeric tokens,
@@ -772,14 +1247,131 @@ bool read_VTK_flow_field(const std::string& filename, Regular_grid_flow_field_3<
                          const NamedParameters& np = CGAL::parameters::default_values(),
                          std::string* error = nullptr)
 {
-  std::optional<Regular_grid_flow_field_3<K>> result;
-  if (!read_VTK_flow_field(filename, result, np, error))
-    return false;
-  field = std::move(*result);
-  return true;
+  return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_grid<K>);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field on a rectilinear grid from a legacy VTK file into an optional;
+same as the overload below otherwise.
+
+\param filename the file to read
+\param field receives the field on success; left untouched on failure
+\param np the named parameters of the overload below
+\param error if not null, receives the reason of a failure
+\returns `true` on success.
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_VTK_flow_field(const std::string& filename, std::optional<Rectilinear_grid_flow_field_3<K>>& field,
+                         const NamedParameters& np = CGAL::parameters::default_values(),
+                         std::string* error = nullptr)
+{
+  return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_rectilinear<K>);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field on a rectilinear grid from a legacy VTK file.
+
+As the `Regular_grid_flow_field_3` overload, for `DATASET RECTILINEAR_GRID` (`DIMENSIONS`, then
+`X_COORDINATES nx type`, `Y_COORDINATES ny type`, `Z_COORDINATES nz type`, each count equal to
+the matching dimension and the coordinates strictly increasing) and for `DATASET
+STRUCTURED_POINTS` (its nodes `origin + i·spacing` along each axis).  The velocity and mask
+arrays, the named parameters and the messages are those of that overload; a coordinate that is
+not finite or not increasing is named with its axis and index.
+
+\tparam K a model of `Kernel`
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the file to read
+\param field receives the field on success; left untouched on failure
+\param np an optional sequence of named parameters: `array_name` and `mask_array_name`, as
+          in the `Regular_grid_flow_field_3` overload
+\param error if not null, receives the reason of a failure
+
+\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+
+\sa `Rectilinear_grid_flow_field_3`
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_VTK_flow_field(const std::string& filename, Rectilinear_grid_flow_field_3<K>& field,
+                         const NamedParameters& np = CGAL::parameters::default_values(),
+                         std::string* error = nullptr)
+{
+  return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_rectilinear<K>);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field on cells from a legacy VTK file into an optional; same as the
+overload below otherwise.
+
+\param filename the file to read
+\param field receives the field on success; left untouched on failure
+\param np the named parameters of the overload below
+\param error if not null, receives the reason of a failure
+\returns `true` on success.
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_VTK_flow_field(const std::string& filename, std::optional<Unstructured_flow_field_3<K>>& field,
+                         const NamedParameters& np = CGAL::parameters::default_values(),
+                         std::string* error = nullptr)
+{
+  return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_cells<K>);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field on the cells of any legacy VTK dataset with volume cells.
+
+- `DATASET UNSTRUCTURED_GRID`: `POINTS n type`, then `CELLS` in either form: the legacy one
+  (file versions up to 5.0: `CELLS n size`, then per cell its number of points and their
+  indices) or the one of file version 5.1 (`CELLS n+1 size`, `OFFSETS type` with `n + 1`
+  values, `CONNECTIVITY type` with `size` values), and `CELL_TYPES n`.  The cell types must
+  be 10 (tetrahedron), 12 (hexahedron), 13 (wedge) or 14 (pyramid), with VTK's point orders
+  (see `Unstructured_flow_field_3`).
+- `DATASET STRUCTURED_GRID` (`DIMENSIONS`, `POINTS`), `RECTILINEAR_GRID` and
+  `STRUCTURED_POINTS`: their grid cells become hexahedra, cell `(i, j, k)` with the points
+  `(i, j, k)`, `(i+1, j, k)`, `(i+1, j+1, k)`, `(i, j+1, k)` and the same at `k + 1`, whose
+  isoparametric interpolation is the trilinear one of the grid.
+
+The velocity and mask arrays, the named parameters, and the messages for bad input are those
+of the `Regular_grid_flow_field_3` overload; besides, a cell of another type gives a message
+naming the cell's index and its type, a point index out of range names the cell and the
+value, and counts that do not match (`CELLS` and `CELL_TYPES`, the number of values a cell
+list holds, `POINTS` and `DIMENSIONS`) give both numbers.  A **node mask removes every cell
+that touches a solid point**: the same rule as the grid fields: the interior of a cell
+touching a solid node is outside, and the faces that a kept cell shares with a removed one are
+inside (they belong to the kept cell).  Solid points may have non-finite values (stored as
+zero); every other point must have a finite velocity.
+
+\tparam K a model of `Kernel`
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the file to read
+\param field receives the field on success; left untouched on failure
+\param np an optional sequence of named parameters: `array_name` and `mask_array_name`, as
+          in the `Regular_grid_flow_field_3` overload
+\param error if not null, receives the reason of a failure
+
+\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+
+\sa `Unstructured_flow_field_3`
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_VTK_flow_field(const std::string& filename, Unstructured_flow_field_3<K>& field,
+                         const NamedParameters& np = CGAL::parameters::default_values(),
+                         std::string* error = nullptr)
+{
+  return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_cells<K>);
 }
 
 } // namespace IO
+
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
