@@ -3,13 +3,14 @@
 // what a user opens afterwards: the initial and aligned surfaces as PLY and VTP
 // (ParaView), the normalized flux of every iteration as CSV, and a JSON summary.
 //
-// Usage: align_patch [--flow NAME | --field FILE.vtk [--array NAME]]
+// Usage: align_patch [--flow NAME | --field FILE [--array NAME]]
 //                    [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]
 //                    [--center X,Y,Z] [--normal X,Y,Z] [--size S]
 // Flows: cylinder (default), point-source, sphere, helical, hill, burgers, abc, tornado.
-// A data file is a legacy VTK STRUCTURED_POINTS file with a velocity array (and an optional
-// mask array "inside"); without --center the patch is placed at the middle of the grid, and
-// without --normal it faces the flow there (orthogonal) or contains it (tangential).
+// A data file is any file IO::read_flow_field() reads (legacy VTK grids and cells, VTK XML
+// .vti/.vtu/.vts when built with VTK, AmiraMesh, NRRD) with a velocity array (and an optional
+// mask array "inside"); without --center the patch is placed at the middle of the data's box,
+// and without --normal it faces the flow there (orthogonal) or contains it (tangential).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -17,7 +18,7 @@
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/IO/read_flow_field.h>
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
-#include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
@@ -116,25 +117,25 @@ struct Placement {
   std::optional<double> size;
 };
 
-// A scene in a flow read from a file: the patch at the given place or in the middle of the grid.
+// A scene in a flow read from a file: the patch at the given place or in the middle of the data.
 std::optional<Scene> make_data_scene(const std::string& file, const std::string& array,
                                      const Placement& placement)
 {
-  std::optional<FAS::Regular_grid_flow_field_3<Kernel>> grid;
+  std::optional<FAS::Sampled_flow_field_3<Kernel>> field;
   std::string error;
-  const bool read =
-      array.empty() ? FAS::IO::read_VTK_flow_field(file, grid, CGAL::parameters::default_values(), &error)
-                    : FAS::IO::read_VTK_flow_field(file, grid, FAS::parameters::array_name(array), &error);
+  const bool read = array.empty()
+                        ? FAS::IO::read_flow_field(file, field, CGAL::parameters::default_values(), &error)
+                        : FAS::IO::read_flow_field(file, field, FAS::parameters::array_name(array), &error);
   if (!read) {
     std::cerr << "error: --field: " << error << "\n";
     return std::nullopt;
   }
-  const CGAL::Bbox_3 box = grid->bbox();
+  const CGAL::Bbox_3 box = field->bbox();
   const Point center = placement.center
                            ? Point((*placement.center)[0], (*placement.center)[1], (*placement.center)[2])
                            : Point((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
                                    (box.zmin() + box.zmax()) / 2);
-  const auto v = (*grid)(center);
+  const auto v = (*field)(center);
   if (!v || v->squared_length() == 0) {
     std::cerr << "error: --center: the flow of " << file << " is not defined (or zero) at " << center
               << "; place the patch in the fluid with --center X,Y,Z\n";
@@ -150,7 +151,7 @@ std::optional<Scene> make_data_scene(const std::string& file, const std::string&
   if (placement.normal)
     orthogonal_normal = tangential_normal =
         Vector((*placement.normal)[0], (*placement.normal)[1], (*placement.normal)[2]);
-  return Scene{Flow(*grid), center, center, tangential_normal, orthogonal_normal, size};
+  return Scene{Flow(*field), center, center, tangential_normal, orthogonal_normal, size};
 }
 
 std::vector<double> face_fluxes(const Mesh& tm, const Flow& flow)
@@ -298,7 +299,7 @@ int main(int argc, char** argv)
     }
     else {
       std::cerr << "usage: " << argv[0]
-                << " [--flow cylinder|point-source|sphere|helical|hill|burgers|abc|tornado | --field FILE.vtk"
+                << " [--flow cylinder|point-source|sphere|helical|hill|burgers|abc|tornado | --field FILE"
                    " [--array NAME]] [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]"
                    " [--center X,Y,Z] [--normal X,Y,Z] [--size S]\n"
                 << "error: unknown or incomplete argument '" << arg << "'\n";

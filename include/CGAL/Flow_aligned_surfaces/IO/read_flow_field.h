@@ -1,8 +1,10 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The flow-field readers of the package, one header per file format; include this one
-// to have them all.
+// The flow-field readers of the package, one header per file format, and `read_flow_field()`,
+// which reads a file of any of these formats into a `Sampled_flow_field_3`: the format is told
+// from the first bytes of the file (never from its name), and the field type from the dataset
+// the file holds (a uniform grid, a rectilinear grid, or cells).
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_READ_FLOW_FIELD_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_READ_FLOW_FIELD_H
@@ -10,5 +12,209 @@
 #include <CGAL/Flow_aligned_surfaces/IO/read_AmiraMesh.h>
 #include <CGAL/Flow_aligned_surfaces/IO/read_NRRD.h>
 #include <CGAL/Flow_aligned_surfaces/IO/read_VTK_legacy.h>
+#if defined(CGAL_FLOW_ALIGNED_SURFACES_USE_VTK) || defined(DOXYGEN_RUNNING)
+#include <CGAL/Flow_aligned_surfaces/IO/read_VTK_XML.h>
+#endif
+#include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#include <cctype>
+#include <cstddef>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace IO {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+enum class Flow_field_file_kind {
+  LEGACY_UNIFORM_GRID,
+  LEGACY_RECTILINEAR_GRID,
+  LEGACY_CELLS, // STRUCTURED_GRID, UNSTRUCTURED_GRID and what the legacy reader then rejects
+  XML_IMAGE_DATA,
+  XML_CELLS, // UnstructuredGrid, StructuredGrid and what the XML reader then rejects
+  AMIRA_MESH,
+  NRRD_FILE,
+  UNKNOWN
+};
+
+// The kind of file from its first bytes; an unreadable file is UNKNOWN (the reader then called
+// says why it cannot open it).  `head` receives those bytes for the message about an unknown
+// format.
+inline Flow_field_file_kind flow_field_file_kind(const std::string& filename, std::string& head)
+{
+  std::ifstream is(filename, std::ios::binary);
+  char bytes[4096];
+  is.read(bytes, sizeof bytes);
+  head.assign(bytes, static_cast<std::size_t>(is.gcount()));
+  const std::string_view h(head);
+  auto starts_with = [&h](std::string_view s) { return h.substr(0, s.size()) == s; };
+
+  if (starts_with("# vtk DataFile") || starts_with("# vtk datafile")) {
+    // The dataset type follows the DATASET keyword of line 4 (after the title and the format).
+    std::string upper(head);
+    for (char& c : upper)
+      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const std::size_t d = upper.find("DATASET");
+    const std::string_view rest =
+        d == std::string::npos ? std::string_view() : std::string_view(upper).substr(d + 7);
+    const std::size_t b = rest.find_first_not_of(" \t\r\n");
+    const std::string_view type = b == std::string_view::npos ? std::string_view() : rest.substr(b);
+    if (type.substr(0, 17) == "STRUCTURED_POINTS")
+      return Flow_field_file_kind::LEGACY_UNIFORM_GRID;
+    if (type.substr(0, 16) == "RECTILINEAR_GRID")
+      return Flow_field_file_kind::LEGACY_RECTILINEAR_GRID;
+    return Flow_field_file_kind::LEGACY_CELLS;
+  }
+  if (starts_with("# AmiraMesh") || starts_with("# Avizo"))
+    return Flow_field_file_kind::AMIRA_MESH;
+  if (starts_with("NRRD000"))
+    return Flow_field_file_kind::NRRD_FILE;
+  // XML: a '<' first (after white space and a byte-order mark), then the VTKFile element.
+  const std::size_t first = h.find_first_not_of(" \t\r\n\xef\xbb\xbf");
+  const std::size_t x = h.find("<VTKFile");
+  if (first != std::string_view::npos && h[first] == '<' && x != std::string_view::npos) {
+    const std::size_t t = h.find("type=\"", x);
+    if (t != std::string_view::npos && h.substr(t + 6, 10) == "ImageData\"")
+      return Flow_field_file_kind::XML_IMAGE_DATA;
+    return Flow_field_file_kind::XML_CELLS;
+  }
+  return Flow_field_file_kind::UNKNOWN;
+}
+
+// Reads with `read(std::optional<Field>&)` and moves the result into the sampled field.
+template <class K, class Field, class Read>
+bool read_sampled(std::optional<Sampled_flow_field_3<K>>& field, const Read& read)
+{
+  std::optional<Field> result;
+  if (!read(result))
+    return false;
+  field.emplace(std::move(*result));
+  return true;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field from a file of any supported format into a
+`Sampled_flow_field_3`, for programs that take whatever file their user has.
+
+The format is told from the first bytes of the file, not from its name:
+
+| the file starts with | format | read by | the field holds |
+|---|---|---|---|
+| `# vtk DataFile`, `DATASET STRUCTURED_POINTS` | legacy VTK | `read_VTK_flow_field()` | a `Regular_grid_flow_field_3` |
+| `# vtk DataFile`, `DATASET RECTILINEAR_GRID` | legacy VTK | `read_VTK_flow_field()` | a `Rectilinear_grid_flow_field_3` |
+| `# vtk DataFile`, `DATASET STRUCTURED_GRID` or `UNSTRUCTURED_GRID` | legacy VTK | `read_VTK_flow_field()` | an `Unstructured_flow_field_3` |
+| `<VTKFile type="ImageData"` | VTK XML (`.vti`) | `read_VTK_XML_flow_field()` | a `Regular_grid_flow_field_3` |
+| `<VTKFile type="UnstructuredGrid"` or `"StructuredGrid"` | VTK XML (`.vtu`, `.vts`) | `read_VTK_XML_flow_field()` | an `Unstructured_flow_field_3` |
+| `# AmiraMesh` or `# Avizo` | AmiraMesh (`.am`) | `read_AmiraMesh_flow_field()` | a `Regular_grid_flow_field_3` |
+| `NRRD000` | NRRD (`.nrrd`, `.nhdr` + raw data) | `read_NRRD_flow_field()` | a `Regular_grid_flow_field_3` |
+
+VTK XML files need the VTK library: the program must link the CMake target
+`CGAL::Flow_aligned_surfaces_VTK` (which defines `CGAL_FLOW_ALIGNED_SURFACES_USE_VTK`);
+without it such a file gets a message saying so.  Time series (`.pvd`) are read by
+`read_PVD_flow_field()`.
+
+\tparam K a model of `Kernel`
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the file to read
+\param field receives the field on success; left untouched on failure
+\param np an optional sequence of named parameters, passed on to the reader of the format:
+`array_name` and `mask_array_name` (see `read_VTK_flow_field()`)
+\param error if not null, receives the reason of a failure: the one of the reader of the
+format, or, for a file of no supported format, a message naming the file and its first bytes
+
+\returns `true` on success.
+
+\sa `Sampled_flow_field_3`
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_flow_field(const std::string& filename, std::optional<Sampled_flow_field_3<K>>& field,
+                     const NamedParameters& np = CGAL::parameters::default_values(),
+                     std::string* error = nullptr)
+{
+  typedef Sampled_flow_field_3<K> Sampled;
+  typedef typename Sampled::Regular_grid Regular;
+  typedef typename Sampled::Rectilinear_grid Rectilinear;
+  typedef typename Sampled::Unstructured_grid Cells;
+  std::string head;
+  switch (internal::flow_field_file_kind(filename, head)) {
+  case internal::Flow_field_file_kind::LEGACY_UNIFORM_GRID:
+    return internal::read_sampled<K, Regular>(
+        field, [&](std::optional<Regular>& f) { return read_VTK_flow_field(filename, f, np, error); });
+  case internal::Flow_field_file_kind::LEGACY_RECTILINEAR_GRID:
+    return internal::read_sampled<K, Rectilinear>(
+        field, [&](std::optional<Rectilinear>& f) { return read_VTK_flow_field(filename, f, np, error); });
+  case internal::Flow_field_file_kind::LEGACY_CELLS:
+    return internal::read_sampled<K, Cells>(
+        field, [&](std::optional<Cells>& f) { return read_VTK_flow_field(filename, f, np, error); });
+  case internal::Flow_field_file_kind::AMIRA_MESH:
+    return internal::read_sampled<K, Regular>(
+        field, [&](std::optional<Regular>& f) { return read_AmiraMesh_flow_field(filename, f, np, error); });
+  case internal::Flow_field_file_kind::NRRD_FILE:
+    return internal::read_sampled<K, Regular>(
+        field, [&](std::optional<Regular>& f) { return read_NRRD_flow_field(filename, f, np, error); });
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_VTK
+  case internal::Flow_field_file_kind::XML_IMAGE_DATA:
+    return internal::read_sampled<K, Regular>(
+        field, [&](std::optional<Regular>& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
+  case internal::Flow_field_file_kind::XML_CELLS:
+    return internal::read_sampled<K, Cells>(
+        field, [&](std::optional<Cells>& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
+#else
+  case internal::Flow_field_file_kind::XML_IMAGE_DATA:
+  case internal::Flow_field_file_kind::XML_CELLS:
+    if (error)
+      *error = "read_flow_field: " + filename +
+               ": a VTK XML file; reading it needs the VTK library: link the CMake target "
+               "CGAL::Flow_aligned_surfaces_VTK (Debian: libvtk9-dev)";
+    return false;
+#endif
+  case internal::Flow_field_file_kind::UNKNOWN:
+    break;
+  }
+  if (error) {
+    std::ifstream probe(filename, std::ios::binary);
+    if (!probe)
+      *error = "read_flow_field: " + filename + ": cannot open the file for reading";
+    else
+      *error = "read_flow_field: " + filename + ": unknown file format (it starts with '" +
+               Flow_aligned_surfaces::internal::printable(head.substr(0, 24)) +
+               "'); expected a legacy VTK file ('# vtk DataFile'), a VTK XML file ('<VTKFile'), an "
+               "AmiraMesh file ('# AmiraMesh') or a NRRD file ('NRRD000x')";
+  }
+  return false;
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads a velocity field from a file of any supported format; same as the overload
+above, for callers that have a field already (it is assigned only on success).
+*/
+template <class K, class NamedParameters = parameters::Default_named_parameters>
+bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field,
+                     const NamedParameters& np = CGAL::parameters::default_values(),
+                     std::string* error = nullptr)
+{
+  return Flow_aligned_surfaces::internal::read_and_assign(
+      field,
+      [&](std::optional<Sampled_flow_field_3<K>>& f) { return read_flow_field(filename, f, np, error); });
+}
+
+} // namespace IO
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
 
 #endif // CGAL_FLOW_ALIGNED_SURFACES_IO_READ_FLOW_FIELD_H

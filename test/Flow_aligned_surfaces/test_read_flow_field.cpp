@@ -1,0 +1,206 @@
+// read_flow_field(): a file of each supported format lands in the right alternative of
+// Sampled_flow_field_3 and gives back the linear field it holds,
+//   v(p) = (1 + x + 2y - z, -2 + x/2 - 3y + 2z, 1/2 - 2x + y + z/4),
+// which every grid and cell type reproduces exactly; a file of no supported format, a missing
+// file and a reader's failure give false with a message naming the file, and the field kept.
+
+#include <CGAL/Flow_aligned_surfaces/IO/read_flow_field.h>
+#include <CGAL/Flow_aligned_surfaces/IO/write_flow_field.h>
+#include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <gtest/gtest.h>
+
+#include "real_data.h"
+#include "test_files.h"
+
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Vector = K::Vector_3;
+using Sampled = CGAL::Flow_aligned_surfaces::Sampled_flow_field_3<K>;
+namespace FAS = CGAL::Flow_aligned_surfaces;
+
+Vector linear(const Point& p)
+{
+  const double x = p.x(), y = p.y(), z = p.z();
+  return Vector(1 + x + 2 * y - z, -2 + x / 2 - 3 * y + 2 * z, 0.5 - 2 * x + y + z / 4);
+}
+
+std::string data_file(const std::string& name)
+{
+  return std::string(FAS_TEST_DATA_DIR) + "/" + name;
+}
+
+std::string scratch(const std::string& name)
+{
+  return temporary_file("fas_read_flow_field_", name);
+}
+
+// Reads `file`, expects the alternative `Field`, and compares with the linear field at the
+// points of the bounding box where the field is defined (a few cells of the unstructured
+// test meshes cover a fifth of their box: at least a tenth of the points must be inside).
+template <class Field>
+void expect_reads_linear_field(const std::string& file)
+{
+  SCOPED_TRACE(file);
+  std::optional<Sampled> field;
+  std::string error;
+  ASSERT_TRUE(FAS::IO::read_flow_field(file, field, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_NE(field->get_if<Field>(), nullptr) << "the file was read into another kind of field";
+  const CGAL::Bbox_3 box = field->bbox();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(0., 1.);
+  int defined = 0;
+  const int samples = 400;
+  for (int s = 0; s < samples; ++s) {
+    const Point p(box.xmin() + u(random) * (box.xmax() - box.xmin()),
+                  box.ymin() + u(random) * (box.ymax() - box.ymin()),
+                  box.zmin() + u(random) * (box.zmax() - box.zmin()));
+    const std::optional<Vector> v = (*field)(p);
+    // The sampled field forwards to the field it holds, exactly.
+    const std::optional<Vector> direct = (*field->get_if<Field>())(p);
+    ASSERT_EQ(bool(v), bool(direct));
+    if (!v)
+      continue;
+    ++defined;
+    EXPECT_EQ(*v, *direct);
+    const Vector e = linear(p);
+    for (int d = 0; d < 3; ++d)
+      EXPECT_NEAR((*v)[d], e[d], 1e-5 * (1 + std::abs(e[d]))) << "at " << p; // float storage
+  }
+  EXPECT_GE(defined, samples / 10);
+}
+
+// The linear field sampled on a 4 x 3 x 5 uniform grid.
+Sampled::Regular_grid linear_grid()
+{
+  return FAS::sample_on_grid([](const Point& p) { return std::optional<Vector>(linear(p)); },
+                             Point(0.25, -1., 0.5), Vector(0.5, 0.25, 0.75), {{4, 3, 5}});
+}
+
+// The node values of linear_grid() as text, one node a line, x fastest.
+std::string linear_grid_values_text()
+{
+  const Sampled::Regular_grid grid = linear_grid();
+  std::ostringstream s;
+  s.precision(9);
+  for (std::size_t k = 0; k < 5; ++k)
+    for (std::size_t j = 0; j < 3; ++j)
+      for (std::size_t i = 0; i < 4; ++i) {
+        const Vector v = grid.node_value(i, j, k);
+        s << v.x() << " " << v.y() << " " << v.z() << "\n";
+      }
+  return s.str();
+}
+
+TEST(ReadFlowField, LegacyVTKDatasetsGoToTheirFields)
+{
+  const std::string regular = scratch("structured_points.vtk");
+  std::string error;
+  ASSERT_TRUE(
+      FAS::IO::write_VTK_flow_field(regular, linear_grid(), CGAL::parameters::default_values(), &error))
+      << error;
+  expect_reads_linear_field<Sampled::Regular_grid>(regular);
+  expect_reads_linear_field<Sampled::Rectilinear_grid>(data_file("vtk_rectilinear_grid_ascii.vtk"));
+  expect_reads_linear_field<Sampled::Unstructured_grid>(data_file("vtk_structured_grid_binary.vtk"));
+  expect_reads_linear_field<Sampled::Unstructured_grid>(data_file("vtk_unstructured_4.2_binary.vtk"));
+  expect_reads_linear_field<Sampled::Unstructured_grid>(data_file("vtk_unstructured_5.1_ascii.vtk"));
+}
+
+TEST(ReadFlowField, AmiraMeshAndNRRD)
+{
+  // BoundingBox: the first and last nodes of linear_grid().
+  const std::string am = scratch("grid.am");
+  write_bytes(am, "# AmiraMesh 3D ASCII 2.0\n\ndefine Lattice 4 3 5\n\nParameters {\n"
+                  "    BoundingBox 0.25 1.75 -1 -0.5 0.5 3.5,\n    CoordType \"uniform\"\n}\n\n"
+                  "Lattice { float[3] Data } @1\n\n# Data section follows\n@1\n" +
+                      linear_grid_values_text());
+  expect_reads_linear_field<Sampled::Regular_grid>(am);
+
+  const std::string nrrd = scratch("grid.nrrd");
+  write_bytes(nrrd, "NRRD0004\ntype: float\ndimension: 4\nsizes: 3 4 3 5\nencoding: ascii\n"
+                    "space dimension: 3\nspace origin: (0.25,-1,0.5)\n"
+                    "space directions: none (0.5,0,0) (0,0.25,0) (0,0,0.75)\n\n" +
+                        linear_grid_values_text());
+  expect_reads_linear_field<Sampled::Regular_grid>(nrrd);
+}
+
+TEST(ReadFlowField, VTKXMLFiles)
+{
+  const std::string vti = scratch("grid.vti");
+  std::string error;
+  ASSERT_TRUE(FAS::IO::write_VTI_flow_field(vti, linear_grid(), CGAL::parameters::default_values(), &error))
+      << error;
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_VTK
+  expect_reads_linear_field<Sampled::Regular_grid>(vti);
+#else
+  std::optional<Sampled> field;
+  EXPECT_FALSE(FAS::IO::read_flow_field(vti, field, CGAL::parameters::default_values(), &error));
+  EXPECT_NE(error.find("CGAL::Flow_aligned_surfaces_VTK"), std::string::npos) << error;
+  EXPECT_FALSE(field);
+  GTEST_SKIP() << "built without VTK: only the message for VTK XML files is checked";
+#endif
+}
+
+TEST(ReadFlowField, FailuresNameTheFileAndKeepTheField)
+{
+  Sampled field(linear_grid());
+  const Point probe(0.5, -0.75, 1.);
+  const Vector before = *field(probe);
+  std::string error;
+
+  const std::string text = scratch("notes.txt");
+  write_bytes(text, "velocity, but as prose\n");
+  EXPECT_FALSE(FAS::IO::read_flow_field(text, field, CGAL::parameters::default_values(), &error));
+  for (const char* part : {"notes.txt", "unknown file format", "velocity, but", "# vtk DataFile", "NRRD"})
+    EXPECT_NE(error.find(part), std::string::npos) << "\"" << error << "\" lacks \"" << part << "\"";
+
+  const std::string missing = scratch("no_such_file.vtk");
+  EXPECT_FALSE(FAS::IO::read_flow_field(missing, field, CGAL::parameters::default_values(), &error));
+  EXPECT_NE(error.find("no_such_file.vtk"), std::string::npos) << error;
+  EXPECT_NE(error.find("cannot open"), std::string::npos) << error;
+
+  // A reader's own message comes through: here the legacy reader's, about a missing array.
+  EXPECT_FALSE(FAS::IO::read_flow_field(data_file("vtk_unstructured_4.2_ascii.vtk"), field,
+                                        FAS::parameters::array_name(std::string("U")), &error));
+  EXPECT_NE(error.find("'U'"), std::string::npos) << error;
+  EXPECT_NE(error.find("vtk_unstructured_4.2_ascii.vtk"), std::string::npos) << error;
+
+  ASSERT_NE(field.get_if<Sampled::Regular_grid>(), nullptr);
+  EXPECT_EQ(*field(probe), before);
+}
+
+TEST(ReadFlowField, RealDataInBothForms)
+{
+  const std::string cells = shared_data_file("CAVITY_cells.vtk"), grid = shared_data_file("CAVITY_grid.vtk");
+  if (cells.empty() || grid.empty())
+    GTEST_SKIP() << "../shared/data/CAVITY_{cells,grid}.vtk not found: the real-data check is not run";
+  std::optional<Sampled> from_cells, from_grid;
+  std::string error;
+  ASSERT_TRUE(FAS::IO::read_flow_field(cells, from_cells, CGAL::parameters::default_values(), &error))
+      << error;
+  ASSERT_TRUE(FAS::IO::read_flow_field(grid, from_grid, CGAL::parameters::default_values(), &error)) << error;
+  EXPECT_NE(from_cells->get_if<Sampled::Unstructured_grid>(), nullptr);
+  EXPECT_NE(from_grid->get_if<Sampled::Regular_grid>(), nullptr);
+  // At the grid's nodes the two forms agree to the float rounding of the resampled grid (see
+  // test_read_VTK_legacy_datasets.cpp for the whole comparison).
+  const Sampled::Regular_grid& g = *from_grid->get_if<Sampled::Regular_grid>();
+  for (std::size_t n : {std::size_t(8), std::size_t(32), std::size_t(56)}) {
+    const Point p = g.node_point(n, n, n);
+    const std::optional<Vector> a = (*from_cells)(p), b = (*from_grid)(p);
+    ASSERT_TRUE(a && b) << p;
+    EXPECT_LT(std::sqrt((*a - *b).squared_length()), 2e-7) << p;
+  }
+}
+
+} // namespace
