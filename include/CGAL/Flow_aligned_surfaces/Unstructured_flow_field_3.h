@@ -46,9 +46,11 @@ namespace Flow_aligned_surfaces {
 /// - `13` wedge: triangle `0 1 2`, triangle `3 4 5`, edges `0-3`, `1-4`, `2-5`;
 /// - `14` pyramid: quadrilateral base `0 1 2 3` in order, apex `4`.
 ///
-/// A point is located in two steps: first the cell that answered the previous query of the
-/// same thread on the same field and its face neighbours (the hint), then the cells whose
-/// bounding boxes cover the point's bucket in a uniform grid of buckets over the mesh.  A cell
+/// A point is located in two steps: first a walk from the cell that answered the previous
+/// query of the same thread on the same field (the hint), each step crossing the face through
+/// which the cell's inverted map says the point lies outside, then the hint's face neighbours,
+/// then the cells whose bounding boxes cover the point's bucket in a uniform grid of buckets
+/// over the mesh.  A cell
 /// contains `p` when the Newton inversion of its isoparametric map converges and the parametric
 /// coordinates lie in the reference cell up to `1e-10` (so that points on shared faces and on
 /// the mesh boundary are inside; points outside the bounding box of the points never are).
@@ -206,9 +208,10 @@ public:
   {
     CGAL_precondition(cell < number_of_cells());
     std::vector<std::size_t> r;
-    for (std::size_t f = storage_->face_begin[cell]; f < storage_->face_begin[cell + 1]; ++f)
-      if (storage_->neighbour[f] != no_cell)
-        r.push_back(storage_->neighbour[f]);
+    const std::uint32_t* n = storage_->neighbour.data() + storage_->face_stride * cell;
+    for (std::size_t f = 0; f < storage_->face_stride; ++f)
+      if (n[f] != no_cell)
+        r.push_back(n[f]);
     return r;
   }
 
@@ -221,6 +224,9 @@ private:
   // solution (~1e-15 for well-shaped cells) so that a point on a shared face is inside both
   // cells, and far below any distance that matters for sampling a flow.
   static constexpr double inside_tolerance = 1e-10;
+  // The longest walk from the hint before the bucket grid is asked; coherent queries move by a
+  // fraction of a cell, so they need one or two steps.
+  static constexpr int max_walk_steps = 8;
 
   struct Storage {
     std::vector<double> points;
@@ -233,11 +239,11 @@ private:
     // Bucket grid: cell lists per bucket in CSR form.
     double bucket_lo[3], bucket_inv_h[3];
     std::size_t bucket_n[3];
-    std::vector<std::size_t> bucket_begin;
-    std::vector<std::uint32_t> bucket_cells;
-    // Per cell face, the cell across it (or no_cell); faces of cell c are
-    // [face_begin[c], face_begin[c+1]).
-    std::vector<std::size_t> face_begin;
+    std::vector<std::uint32_t> bucket_begin, bucket_cells;
+    // Per cell face, the cell across it (or no_cell): face f of cell c (in the numbering of
+    // faces_of()) at neighbour[face_stride * c + f]; face_stride is the largest number of faces
+    // of the mesh's cell types (unused slots are no_cell).
+    std::size_t face_stride = 0;
     std::vector<std::uint32_t> neighbour;
   };
 
@@ -245,11 +251,17 @@ private:
     std::size_t cell = 0;
     int n = 0;
     double N[8];
+    // The parametric coordinates of the last inversion: where the point is when it was found,
+    // else where Newton ended outside the reference cell if finite (xi_valid; the walk's
+    // direction).
+    bool xi_valid = false;
+    double xi[3];
   };
 
   struct Hint {
     const Storage* owner = nullptr;
     std::size_t cell = 0;
+    double xi[3]; // where the last query was found in `cell`: Newton's start for the next one
   };
 
   static const char* type_name(unsigned char t)
@@ -446,8 +458,23 @@ private:
       else
         ++flat;
     }
+    // The bucket edge: that of about one bucket per cell, but at least the mean edge of the
+    // cells' boxes, so that a cell's box (6 times a tetrahedron's volume for the tetrahedra of
+    // a cube) does not cover dozens of buckets (1 M tetrahedra: -21 % memory, random queries
+    // ~5 % slower).
+    const double dimension = double(3 - (std::min)(flat, 2));
+    double box_edge = 1.;
+    for (int a = 0; a < 3; ++a) {
+      if (!(ext[a] > 0.))
+        continue;
+      double mean = 0.;
+      for (std::size_t c = 0; c < nc; ++c)
+        mean += double(s.cell_bbox[6 * c + a + 3]) - double(s.cell_bbox[6 * c + a]);
+      box_edge *= mean / static_cast<double>(nc);
+    }
+    box_edge = std::pow(box_edge, 1. / dimension);
     const double per_bucket =
-        std::pow(volume / static_cast<double>(nc), 1. / double(3 - (std::min)(flat, 2)));
+        (std::max)(std::pow(volume / static_cast<double>(nc), 1. / dimension), box_edge);
     for (int a = 0; a < 3; ++a) {
       std::size_t n = 1;
       if (ext[a] > 0. && per_bucket > 0.)
@@ -457,13 +484,22 @@ private:
       s.bucket_inv_h[a] = ext[a] > 0. ? static_cast<double>(n) / ext[a] : 0.;
     }
     const std::size_t nb = s.bucket_n[0] * s.bucket_n[1] * s.bucket_n[2];
-    s.bucket_begin.assign(nb + 1, 0);
+    // 32-bit counts and positions: the counting pass checks that the total fits.
+    std::vector<std::size_t> count(nb + 1, 0);
     // Two passes over the cells: count, then fill.
     for (int pass = 0; pass < 2; ++pass) {
-      std::vector<std::size_t> fill;
+      std::vector<std::uint32_t> fill;
       if (pass == 1) {
         for (std::size_t b = 0; b < nb; ++b)
-          s.bucket_begin[b + 1] += s.bucket_begin[b];
+          count[b + 1] += count[b];
+        if (count[nb] > (std::numeric_limits<std::uint32_t>::max)()) {
+          std::ostringstream msg;
+          msg << "the cells' bounding boxes cover " << count[nb] << " buckets in all; at most "
+              << (std::numeric_limits<std::uint32_t>::max)() << " are supported (too many cells)";
+          fail(msg.str());
+        }
+        s.bucket_begin.assign(count.begin(), count.end());
+        count = std::vector<std::size_t>();
         s.bucket_cells.resize(s.bucket_begin[nb]);
         fill.assign(s.bucket_begin.begin(), s.bucket_begin.end() - 1);
       }
@@ -478,7 +514,7 @@ private:
             for (std::size_t i = lo[0]; i <= hi[0]; ++i) {
               const std::size_t b = i + s.bucket_n[0] * (j + s.bucket_n[1] * k);
               if (pass == 0)
-                ++s.bucket_begin[b + 1];
+                ++count[b + 1];
               else
                 s.bucket_cells[fill[b]++] = static_cast<std::uint32_t>(c);
             }
@@ -497,11 +533,14 @@ private:
   static void build_neighbours(Storage& s)
   {
     const std::size_t nc = s.cell_types.size();
-    s.face_begin.resize(nc + 1);
-    s.face_begin[0] = 0;
     const std::array<int, 4>* f = nullptr;
-    for (std::size_t c = 0; c < nc; ++c)
-      s.face_begin[c + 1] = s.face_begin[c] + static_cast<std::size_t>(faces_of(s.cell_types[c], f));
+    std::size_t number_of_faces = 0;
+    s.face_stride = 0;
+    for (std::size_t c = 0; c < nc; ++c) {
+      const std::size_t nf = static_cast<std::size_t>(faces_of(s.cell_types[c], f));
+      number_of_faces += nf;
+      s.face_stride = (std::max)(s.face_stride, nf);
+    }
     // A face is identified by its sorted point indices (a triangle padded with -1); sorting all
     // faces brings the two sides of every shared face together.
     struct Face {
@@ -511,7 +550,7 @@ private:
       bool operator<(const Face& o) const { return key < o.key; }
     };
     std::vector<Face> faces;
-    faces.reserve(s.face_begin[nc]);
+    faces.reserve(number_of_faces);
     for (std::size_t c = 0; c < nc; ++c) {
       const int nf = faces_of(s.cell_types[c], f);
       const Index* v = s.connectivity.data() + s.offsets[c];
@@ -526,11 +565,11 @@ private:
       }
     }
     std::sort(faces.begin(), faces.end());
-    s.neighbour.assign(s.face_begin[nc], no_cell);
+    s.neighbour.assign(s.face_stride * nc, no_cell);
     for (std::size_t i = 0; i + 1 < faces.size(); ++i) {
       if (faces[i].key == faces[i + 1].key) {
-        s.neighbour[s.face_begin[faces[i].cell] + faces[i].local] = faces[i + 1].cell;
-        s.neighbour[s.face_begin[faces[i + 1].cell] + faces[i + 1].local] = faces[i].cell;
+        s.neighbour[s.face_stride * faces[i].cell + faces[i].local] = faces[i + 1].cell;
+        s.neighbour[s.face_stride * faces[i + 1].cell + faces[i + 1].local] = faces[i].cell;
       }
     }
   }
@@ -614,11 +653,14 @@ private:
     }
   }
 
-  // Inverts the cell's map x(xi) = p by Newton's method from the cell's parametric center.
-  // Returns whether it converged and xi is in the reference cell,
-  // with the shape function values in hit.
-  static bool invert(const Storage& s, std::size_t cell, const double* p, Hit& hit)
+  // Inverts the cell's map x(xi) = p by Newton's method from `start` (in the reference cell)
+  // or else from the cell's parametric center.  Returns whether it converged and xi is in the
+  // reference cell, with the shape function values and xi in hit; otherwise hit.xi is the last
+  // xi when it is finite.
+  static bool invert(const Storage& s, std::size_t cell, const double* p, Hit& hit,
+                     const double* start = nullptr)
   {
+    hit.xi_valid = false;
     const unsigned char type = s.cell_types[cell];
     const Index* v = s.connectivity.data() + s.offsets[cell];
     double X[8][3];
@@ -645,6 +687,9 @@ private:
     default:
       xi[0] = xi[1] = xi[2] = 0.5;
     }
+    if (start != nullptr && type != TETRA) // linear maps need no start
+      for (int a = 0; a < 3; ++a)
+        xi[a] = start[a];
     double N[8], dN[8][3];
     // Linear cells converge in one step; the trilinear map in a few for reasonable cells.  The
     // cap bounds the cost of points that are far outside a cell (in its bounding box only).
@@ -694,7 +739,7 @@ private:
         for (int a = 0; a < 3; ++a)
           far = far || xi[a] < -0.5 || xi[a] > 1.5;
         if (far)
-          return false;
+          return keep_xi(xi, hit);
       }
     }
     if (!converged) {
@@ -709,7 +754,7 @@ private:
         err = (std::max)(err, std::abs(x - p[a]));
       }
       if (!(err <= 1e-12 * size))
-        return false;
+        return keep_xi(xi, hit);
     }
     if (type == PYRAMID && xi[2] >= 1. - 1e-8) {
       // At the apex r and s are undetermined and irrelevant.
@@ -717,9 +762,63 @@ private:
       xi[1] = (std::min)((std::max)(xi[1], 0.), 1.);
     }
     if (!in_reference_cell(type, xi))
-      return false;
+      return keep_xi(xi, hit);
     hit.cell = cell;
     hit.n = shape(type, xi, hit.N, dN);
+    for (int a = 0; a < 3; ++a)
+      hit.xi[a] = xi[a];
+    return true;
+  }
+
+  // Keeps xi in hit for the walk when it is finite; returns false (no hit).
+  static bool keep_xi(const double* xi, Hit& hit)
+  {
+    hit.xi_valid = std::isfinite(xi[0]) && std::isfinite(xi[1]) && std::isfinite(xi[2]);
+    for (int a = 0; a < 3; ++a)
+      hit.xi[a] = xi[a];
+    return false;
+  }
+
+  // The face (in the numbering of faces_of()) through which the parametric point xi lies
+  // farthest outside the reference cell, or -1 if xi is inside it.
+  static int exit_face(unsigned char type, const double* xi)
+  {
+    const double r = xi[0], s = xi[1], t = xi[2];
+    double m[6];
+    int nf;
+    switch (type) {
+    case TETRA: // faces without point 2, 0, 1, 3
+      m[0] = s, m[1] = 1. - r - s - t, m[2] = r, m[3] = t, nf = 4;
+      break;
+    case HEXAHEDRON:
+      m[0] = r, m[1] = 1. - r, m[2] = s, m[3] = 1. - s, m[4] = t, m[5] = 1. - t, nf = 6;
+      break;
+    case WEDGE:
+      m[0] = t, m[1] = 1. - t, m[2] = s, m[3] = 1. - r - s, m[4] = r, nf = 5;
+      break;
+    default: // PYRAMID
+      m[0] = t, m[1] = s, m[2] = 1. - r, m[3] = 1. - s, m[4] = r, nf = 5;
+    }
+    int best = -1;
+    double worst = 0.;
+    for (int f = 0; f < nf; ++f)
+      if (m[f] < worst) {
+        worst = m[f];
+        best = f;
+      }
+    return best;
+  }
+
+  // Whether x is in the cell's bounding box enlarged by its own extent on every side: the
+  // walk starts only from such cells (farther points go to the bucket grid directly).
+  static bool near_cell_bbox(const Storage& s, std::size_t c, const double* x)
+  {
+    const float* b = s.cell_bbox.data() + 6 * c;
+    for (int a = 0; a < 3; ++a) {
+      const double e = double(b[a + 3]) - double(b[a]);
+      if (!(x[a] >= b[a] - e && x[a] <= b[a + 3] + e))
+        return false;
+    }
     return true;
   }
 
@@ -747,6 +846,13 @@ private:
     return in_cell_bbox(*storage_, c, x) && invert(*storage_, c, x, hit);
   }
 
+  static void remember(Hint& hint, const Hit& hit)
+  {
+    hint.cell = hit.cell;
+    for (int a = 0; a < 3; ++a)
+      hint.xi[a] = hit.xi[a];
+  }
+
   bool find(const double* x, Hit& hit) const
   {
     const Storage& s = *storage_;
@@ -756,14 +862,32 @@ private:
       return false;
     static thread_local Hint hint;
     const std::size_t nc = s.cell_types.size();
-    if (hint.owner == &s && hint.cell < nc) {
+    if (hint.owner == &s && hint.cell < nc && near_cell_bbox(s, hint.cell, x)) {
+      // The walk: invert in the current cell (without the box test, whose rejection would not
+      // tell a direction) and cross the face the point lies beyond, a few steps at most.
       const std::size_t h = hint.cell;
-      if (try_cell(h, x, hit))
-        return true;
-      for (std::size_t f = s.face_begin[h]; f < s.face_begin[h + 1]; ++f) {
-        const std::uint32_t c = s.neighbour[f];
-        if (c != no_cell && try_cell(c, x, hit)) {
-          hint.cell = c;
+      std::size_t c = h, previous = no_cell;
+      for (int step = 0; step < max_walk_steps; ++step) {
+        if (invert(s, c, x, hit, c == h ? hint.xi : nullptr)) {
+          remember(hint, hit);
+          return true;
+        }
+        if (!hit.xi_valid)
+          break;
+        const int f = exit_face(s.cell_types[c], hit.xi);
+        const std::uint32_t next = f < 0 ? no_cell : s.neighbour[s.face_stride * c + std::size_t(f)];
+        if (next == no_cell || next == previous)
+          break;
+        previous = c;
+        c = next;
+      }
+      // Then the hint's other face neighbours (the walk's first step may have chosen a wrong
+      // face in a strongly distorted cell).
+      const std::uint32_t* n = s.neighbour.data() + s.face_stride * h;
+      for (std::size_t f = 0; f < s.face_stride; ++f) {
+        const std::uint32_t c2 = n[f];
+        if (c2 != no_cell && c2 != c && try_cell(c2, x, hit)) {
+          remember(hint, hit);
           return true;
         }
       }
@@ -775,7 +899,7 @@ private:
       const std::size_t c = s.bucket_cells[k];
       if (try_cell(c, x, hit)) {
         hint.owner = &s;
-        hint.cell = c;
+        remember(hint, hit);
         return true;
       }
     }

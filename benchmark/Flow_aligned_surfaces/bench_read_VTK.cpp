@@ -1,0 +1,110 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reading a ~100 MB BINARY legacy VTK file (STRUCTURED_POINTS, 198^3 nodes: VECTORS float and
+// an unsigned_char mask, 100.9 MB) with read_VTK_flow_field(), against `cat FILE > /dev/null`
+// in the same run (target: <= 2 x cat).  The file is written once into a temporary folder by
+// the package's writer, read once by cat to warm the page cache, then cat and the reader are
+// timed alternately, `runs` times each (default 7); the medians and their ratio are printed.
+// Wall-clock times (steady_clock); cat's include starting the shell and cat (~1 ms).
+//
+//   bench_read_VTK [runs] [folder]
+
+#include <CGAL/Flow_aligned_surfaces/IO/read_flow_field.h>
+#include <CGAL/Flow_aligned_surfaces/IO/write_flow_field.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+namespace FAS = CGAL::Flow_aligned_surfaces;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef FAS::Regular_grid_flow_field_3<K> Grid;
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 7;
+  std::string folder = argc > 2 ? argv[2] : (std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp");
+  const std::string file = folder + "/fas_bench_read_" + std::to_string(getpid()) + ".vtk";
+
+  const std::size_t n = 198, nodes = n * n * n;
+  {
+    std::vector<float> values(3 * nodes);
+    std::vector<unsigned char> mask(nodes, 1);
+    for (std::size_t v = 0; v < nodes; ++v) {
+      const double x = double(v % n) / n, y = double((v / n) % n) / n, z = double(v / (n * n)) / n;
+      values[3 * v] = float(std::sin(6. * y) + z);
+      values[3 * v + 1] = float(std::cos(5. * z) - x);
+      values[3 * v + 2] = float(x * y);
+      if ((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5) + (z - 0.5) * (z - 0.5) < 0.01)
+        mask[v] = 0;
+    }
+    const Grid g(K::Point_3(0, 0, 0), K::Vector_3(1. / n, 1. / n, 1. / n), Grid::Dimensions{{n, n, n}},
+                 std::move(values), std::move(mask));
+    if (!FAS::IO::write_VTK_flow_field(file, g)) {
+      std::fprintf(stderr, "bench_read_VTK: cannot write %s\n", file.c_str());
+      return 1;
+    }
+  }
+  std::FILE* f = std::fopen(file.c_str(), "rb");
+  std::fseek(f, 0, SEEK_END);
+  const double size_mb = double(std::ftell(f)) / 1e6;
+  std::fclose(f);
+
+  const std::string cat = "cat '" + file + "' > /dev/null";
+  if (std::system(cat.c_str()) != 0) // warms the page cache
+    return 1;
+  std::vector<double> t_cat, t_read;
+  for (int r = 0; r < runs; ++r) {
+    auto t0 = std::chrono::steady_clock::now();
+    if (std::system(cat.c_str()) != 0)
+      return 1;
+    t_cat.push_back(seconds_since(t0));
+    t0 = std::chrono::steady_clock::now();
+    std::optional<Grid> field;
+    std::string error;
+    if (!FAS::IO::read_VTK_flow_field(file, field, CGAL::parameters::default_values(), &error)) {
+      std::fprintf(stderr, "bench_read_VTK: %s\n", error.c_str());
+      return 1;
+    }
+    t_read.push_back(seconds_since(t0));
+  }
+  std::remove(file.c_str());
+  const double c = median(t_cat), rd = median(t_read);
+  std::printf(
+      "file: %.1f MB BINARY STRUCTURED_POINTS %zu^3 (VECTORS float + SCALARS unsigned_char), %d runs\n",
+      size_mb, n, runs);
+  std::printf("cat FILE > /dev/null: median %.1f ms (min %.1f, max %.1f)\n", 1e3 * c,
+              1e3 * *std::min_element(t_cat.begin(), t_cat.end()),
+              1e3 * *std::max_element(t_cat.begin(), t_cat.end()));
+  std::printf("read_VTK_flow_field:  median %.1f ms (min %.1f, max %.1f), %.0f MB/s\n", 1e3 * rd,
+              1e3 * *std::min_element(t_read.begin(), t_read.end()),
+              1e3 * *std::max_element(t_read.begin(), t_read.end()), size_mb / rd);
+  std::printf("ratio read / cat: %.2f (target <= 2: %s)\n", rd / c, rd <= 2. * c ? "met" : "missed");
+  return 0;
+}
