@@ -7,6 +7,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
 
 "$root/scripts/install-deps.sh"
+# ccache hashes paths relative to the clone, so a fresh clone reuses an earlier clone's objects.
+export CCACHE_BASEDIR="$root"
 
 build="$root/build/release"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
