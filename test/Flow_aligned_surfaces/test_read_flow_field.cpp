@@ -67,13 +67,14 @@ void expect_reads_linear_field(const std::string& file)
                   box.ymin() + u(random) * (box.ymax() - box.ymin()),
                   box.zmin() + u(random) * (box.zmax() - box.zmin()));
     const std::optional<Vector> v = (*field)(p);
-    // The sampled field forwards to the field it holds, exactly.
+    // The sampled field forwards to the field it holds (up to rounding: a cells field starts
+    // Newton's iteration from its thread's previous query).
     const std::optional<Vector> direct = (*field->get_if<Field>())(p);
     ASSERT_EQ(bool(v), bool(direct));
     if (!v)
       continue;
     ++defined;
-    EXPECT_EQ(*v, *direct);
+    EXPECT_LT(std::sqrt((*v - *direct).squared_length()), 1e-12) << "at " << p;
     const Vector e = linear(p);
     for (int d = 0; d < 3; ++d)
       EXPECT_NEAR((*v)[d], e[d], 1e-5 * (1 + std::abs(e[d]))) << "at " << p; // float storage

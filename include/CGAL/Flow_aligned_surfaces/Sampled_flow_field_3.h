@@ -39,11 +39,18 @@ class Sampled_flow_field_3 {
 public:
   /// \name Types
   /// @{
+
+  /// The geometric traits.
   typedef GeomTraits Geom_traits;
+  /// The point type.
   typedef typename GeomTraits::Point_3 Point_3;
+  /// The vector type.
   typedef typename GeomTraits::Vector_3 Vector_3;
+  /// The field on a uniform grid.
   typedef Regular_grid_flow_field_3<GeomTraits> Regular_grid;
+  /// The field on a rectilinear grid.
   typedef Rectilinear_grid_flow_field_3<GeomTraits> Rectilinear_grid;
+  /// The field on cells (also curvilinear grids, as hexahedra).
   typedef Unstructured_flow_field_3<GeomTraits> Unstructured_grid;
   /// the field held, one of the three
   typedef std::variant<Regular_grid, Rectilinear_grid, Unstructured_grid> Variant;
@@ -51,6 +58,7 @@ public:
 
   /// \name Creation
   /// @{
+
   /// holds `field`, one of `Regular_grid`, `Rectilinear_grid`, `Unstructured_grid`.
   template <typename Field>
   Sampled_flow_field_3(Field field) : field_(std::move(field))
@@ -60,6 +68,7 @@ public:
 
   /// \name Evaluation
   /// @{
+
   /// the velocity at `p` of the field held, or `std::nullopt` outside its domain.
   std::optional<Vector_3> operator()(const Point_3& p) const
   {
@@ -69,6 +78,7 @@ public:
 
   /// \name Access
   /// @{
+
   /// the bounding box of the field's domain
   Bbox_3 bbox() const
   {
