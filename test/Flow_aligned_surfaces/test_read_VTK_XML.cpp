@@ -594,10 +594,10 @@ TEST(ReadVTKXML, BadFilesGiveClearMessagesAndChangeNothing)
   expect_read_fails<Grid>(flat, {"2 x 2 x 1 points", "at least 2 points along each axis"});
 }
 
-// Headers whose structure VTK 9.1 trusts when it writes into its arrays (a fuzzed .vts whose
-// piece reached outside the whole extent, with 8-component points, crashed VTK): refused
-// before VTK reads any data.
-TEST(ReadVTKXML, PiecesOutsideTheWholeExtentAndPointsOfOtherThanThreeComponentsAreRefused)
+// Headers whose structure VTK 9.1 trusts (found by fuzzing: a .vts whose piece reached outside
+// the whole extent, with 8-component points, crashed VTK; an array of 10^100 components kept
+// it busy for minutes): refused before VTK reads any data.
+TEST(ReadVTKXML, PiecesOutsideTheWholeExtentAndImpossibleComponentCountsAreRefused)
 {
   auto vts = [](const std::string& whole, int point_components) {
     return "<?xml version=\"1.0\"?>\n<VTKFile type=\"StructuredGrid\" version=\"1.0\">\n"
@@ -616,6 +616,12 @@ TEST(ReadVTKXML, PiecesOutsideTheWholeExtentAndPointsOfOtherThanThreeComponentsA
   const std::string points = temporary("points.vts");
   write_bytes(points, vts("0 1 0 1 0 1", 8));
   expect_read_fails<Cells>(points, {"<DataArray> the points array has 8 components; points need 3"});
+  std::string huge = vts("0 1 0 1 0 1", 3);
+  huge.replace(huge.find("NumberOfComponents=\"3\""), 22,
+               "NumberOfComponents=\"1" + std::string(100, '0') + "\"");
+  write_bytes(points, huge);
+  expect_read_fails<Cells>(points,
+                           {"NumberOfComponents=\"1000", "is not a positive integer that the file can hold"});
   // The same grid with 3 components is read: the checks refuse only what they say.
   const std::string good = temporary("good.vts");
   write_bytes(good, vts("0 1 0 1 0 1", 3));

@@ -237,7 +237,9 @@ void check_announced_size(const VTK_XML_context& c, Reader* reader)
 // together with a points array of 8 components, crashes vtkXMLStructuredDataReader::
 // ReadSubExtent), so the header's elements are checked before VTK reads any data: every piece
 // of a structured data set (ImageData, StructuredGrid) lies inside its whole extent, and every
-// points array holds 3 components.
+// points array holds 3 components.  And VTK loops over the components of every array (for
+// their names): a NumberOfComponents of 10^100 (read as 2^31 - 1) takes minutes, so an array
+// needs a positive number of components that the file can hold (as check_announced_size()).
 inline void check_VTK_XML_structure(const VTK_XML_context& c, vtkXMLDataParser* parser)
 {
   vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
@@ -246,6 +248,23 @@ inline void check_VTK_XML_structure(const VTK_XML_context& c, vtkXMLDataParser* 
   auto where = [](vtkXMLDataElement* e) {
     return "byte " + std::to_string(e->GetXMLByteIndex()) + ": <" + (e->GetName() ? e->GetName() : "") + "> ";
   };
+  std::error_code ec;
+  const double bytes = static_cast<double>(std::filesystem::file_size(c.file, ec));
+  std::vector<vtkXMLDataElement*> todo{root};
+  while (!todo.empty() && !ec) {
+    vtkXMLDataElement* e = todo.back();
+    todo.pop_back();
+    for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
+      todo.push_back(e->GetNestedElement(i));
+    const char* components = e->GetAttribute("NumberOfComponents");
+    if (components == nullptr)
+      continue;
+    char* end = nullptr;
+    const double n = std::strtod(components, &end);
+    if (end == components || !(n >= 1.) || n != std::floor(n) || n > 2000. * bytes + 1e6)
+      c.fail(where(e) + "NumberOfComponents=\"" + Flow_aligned_surfaces::internal::printable(components) +
+             "\" is not a positive integer that the file can hold");
+  }
   auto extent_text = [](const int* e) {
     std::string r;
     for (int i = 0; i < 6; ++i)
