@@ -14,6 +14,7 @@ packages=(
   libopenblas-dev                       # an optimized BLAS for CHOLMOD (Debian defaults to the reference one)
   libtbb-dev                            # parallel loops
   libvtk9-dev                           # VTK XML readers (.vti, .vtu, .vts, .pvd), optional
+  zlib1g-dev                            # compressed AmiraMesh (HxZip) and NRRD (gzip) data, optional
   libgtest-dev libgmock-dev libbenchmark-dev
   doxygen graphviz                      # documentation, built in the tests
 )

@@ -594,6 +594,78 @@ TEST(ReadVTKXML, BadFilesGiveClearMessagesAndChangeNothing)
   expect_read_fails<Grid>(flat, {"2 x 2 x 1 points", "at least 2 points along each axis"});
 }
 
+// Headers whose structure VTK 9.1 trusts (found by fuzzing: a .vts whose piece reached outside
+// the whole extent, with 8-component points, crashed VTK; an array of 10^100 components kept
+// it busy for minutes): refused before VTK reads any data.
+TEST(ReadVTKXML, PiecesOutsideTheWholeExtentAndImpossibleComponentCountsAreRefused)
+{
+  auto vts = [](const std::string& whole, int point_components) {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"StructuredGrid\" version=\"1.0\">\n"
+           "<StructuredGrid WholeExtent=\"" +
+           whole + "\">\n<Piece Extent=\"0 1 0 1 0 1\">\n<PointData>\n" +
+           ascii_array("Float32", "velocity", 3, repeated("1 2 3", 8)) + "</PointData>\n<Points>\n" +
+           ascii_array("Float32", "Points", point_components,
+                       repeated("0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1", 1)) +
+           "</Points>\n</Piece>\n</StructuredGrid>\n</VTKFile>\n";
+  };
+  const std::string outside = temporary("outside.vts");
+  write_bytes(outside, vts("1 1 0 1 0 1", 3));
+  expect_read_fails<Cells>(outside, {"<Piece> the piece's Extent \"0 1 0 1 0 1\" reaches outside the "
+                                     "WholeExtent \"1 1 0 1 0 1\"",
+                                     "byte "});
+  const std::string points = temporary("points.vts");
+  write_bytes(points, vts("0 1 0 1 0 1", 8));
+  expect_read_fails<Cells>(points, {"<DataArray> the points array has 8 components; points need 3"});
+  std::string huge = vts("0 1 0 1 0 1", 3);
+  huge.replace(huge.find("NumberOfComponents=\"3\""), 22,
+               "NumberOfComponents=\"1" + std::string(100, '0') + "\"");
+  write_bytes(points, huge);
+  expect_read_fails<Cells>(points,
+                           {"NumberOfComponents=\"1000", "is not a positive integer that the file can hold"});
+  // The same grid with 3 components is read: the checks refuse only what they say.
+  const std::string good = temporary("good.vts");
+  write_bytes(good, vts("0 1 0 1 0 1", 3));
+  std::optional<Cells> field;
+  std::string error;
+  EXPECT_TRUE(FAS::IO::read_VTK_XML_flow_field(good, field, CGAL::parameters::default_values(), &error))
+      << error;
+}
+
+// The header of a compressed array, which VTK 9.1 allocates from (fuzzing found 13-point files
+// announcing a 2 GB block or 2.7e9 blocks): checked against the file's size before VTK reads.
+TEST(ReadVTKXML, LyingCompressionHeadersAreRefused)
+{
+  const std::string file = temporary("compressed.vtu");
+  write_with_VTK<vtkXMLUnstructuredGridWriter>(mixed_mesh().grid, file); // zlib, base64 appended
+  const std::string good = read_bytes(file);
+  ASSERT_NE(good.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
+  ASSERT_NE(good.find("header_type=\"UInt32\""), std::string::npos);
+  const std::size_t data = good.find('_', good.find("<AppendedData encoding=\"base64\">")) + 1;
+  ASSERT_NE(data, std::string::npos + 1);
+  // The first array's header: 4 little-endian 32-bit words (1 block, its size, the last
+  // block's size, its compressed size), 24 base64 characters.
+  auto header = [](std::uint32_t blocks, std::uint32_t size, std::uint32_t last, std::uint32_t compressed) {
+    const std::uint32_t w[4] = {blocks, size, last, compressed};
+    unsigned char b[18] = {};
+    for (int i = 0; i < 16; ++i)
+      b[i] = static_cast<unsigned char>(w[i / 4] >> (8 * (i % 4)));
+    const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string r;
+    for (int i = 0; i < 18; i += 3) {
+      const unsigned v = (unsigned(b[i]) << 16) | (unsigned(b[i + 1]) << 8) | b[i + 2];
+      for (int k = 3; k >= 0; --k)
+        r += alphabet[(v >> (6 * k)) & 63u];
+    }
+    return r.substr(0, 22) + "==";
+  };
+  ASSERT_EQ(good.substr(data, 4), header(1, 0, 0, 0).substr(0, 4)); // 1 block, as written by VTK
+  const std::string lying = temporary("lying_blocks.vtu");
+  write_bytes(lying, good.substr(0, data) + header(1, 32768, 2000000000u, 310) + good.substr(data + 24));
+  expect_read_fails<Cells>(lying, {"the compressed DataArray 'velocity' announces 1 blocks", "lying header"});
+  write_bytes(lying, good.substr(0, data) + header(3000000000u, 32768, 312, 310) + good.substr(data + 24));
+  expect_read_fails<Cells>(lying, {"announces 3e+09 blocks, whose sizes alone need more than the"});
+}
+
 TEST(ReadVTKXML, UnsupportedCellsAreNamed)
 {
   Mixed_mesh m = mixed_mesh();

@@ -4,20 +4,24 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Flow_aligned_surfaces/align_to_flow.h>
+#include <CGAL/Flow_aligned_surfaces/IO/read_NRRD.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <exception>
+#include <fstream>
 #include <iostream>
+#include <optional>
+#include <string>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 using Vector = K::Vector_3;
 namespace FAS = CGAL::Flow_aligned_surfaces;
 
-int main()
+int main(int argc, char** argv)
 {
   try {
     CGAL::Surface_mesh<Point> tm;
@@ -29,6 +33,25 @@ int main()
     std::cout << "sparse solver: CHOLMOD\n";
 #else
     std::cout << "sparse solver: Eigen SimplicialLDLT\n";
+#endif
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB
+    // A gzip NRRD file (made by Python's gzip module): velocity (i, j, k) at node (i, j, k) of a
+    // 2 x 2 x 2 grid; reading it needs the zlib that the exported target brings.
+    const std::string gz("\x1f\x8b\x08\x00\x00\x00\x00\x00\x02\x03\x63\x60\x40\x06\x0d\xf6\x0c\x58\xf9"
+                         "\x20\x1a\x9b\x1c\xb2\x3c\xb2\x18\x02\x03\x00\x09\x02\xe3\x8f\x60\x00\x00\x00",
+                         38);
+    const std::string file = (argc > 1 ? std::string(argv[1]) + "/" : std::string()) + "consumer_gzip.nrrd";
+    std::ofstream(file, std::ios::binary) << "NRRD0004\ntype: float\ndimension: 4\nsizes: 3 2 2 2\n"
+                                             "endian: little\nencoding: gzip\n\n"
+                                          << gz;
+    std::optional<FAS::Regular_grid_flow_field_3<K>> grid;
+    std::string error;
+    if (!FAS::IO::read_NRRD_flow_field(file, grid, CGAL::parameters::default_values(), &error) ||
+        grid->node_value(1, 0, 1) != Vector(1, 0, 1)) {
+      std::cerr << "consumer: the gzip NRRD file was not read right: " << error << "\n";
+      return 3;
+    }
+    std::cout << "zlib: gzip NRRD read\n";
 #endif
     std::cout << "faces: " << tm.number_of_faces() << "\n"
               << "normalized flux before: " << before << "\n"

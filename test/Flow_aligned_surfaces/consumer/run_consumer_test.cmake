@@ -5,7 +5,8 @@
 #   (4) run it (it returns nonzero when the alignment misses its flux)
 # Run as: cmake -DPROJECT_BINARY_DIR=... -DCONSUMER_SOURCE_DIR=... -DWORK_DIR=... -P run_consumer_test.cmake
 # Optional: -DCONSUMER_GENERATOR=..., -DCONSUMER_CXX_COMPILER=..., -DCONSUMER_BUILD_TYPE=...,
-#           -DEXPECT_CHOLMOD=ON|OFF (checks that the CHOLMOD usage requirement reached the consumer).
+#           -DEXPECT_CHOLMOD=ON|OFF (checks that the CHOLMOD usage requirement reached the consumer),
+#           -DEXPECT_ZLIB=ON|OFF (likewise for zlib: the consumer then reads a gzip NRRD file).
 cmake_minimum_required(VERSION 3.16)
 
 foreach(var IN ITEMS PROJECT_BINARY_DIR CONSUMER_SOURCE_DIR WORK_DIR)
@@ -87,7 +88,7 @@ set(executable "${build}/consumer")
 if(NOT EXISTS "${executable}" AND EXISTS "${build}/${CONSUMER_BUILD_TYPE}/consumer")
   set(executable "${build}/${CONSUMER_BUILD_TYPE}/consumer")
 endif()
-run_step("4/4 run" "${executable}")
+run_step("4/4 run" "${executable}" "${build}") # the consumer writes its scratch file there
 message(STATUS "consumer output:\n${step_output}")
 if(NOT step_output MATCHES "normalized flux after: ")
   message(FATAL_ERROR "consumer test: step '4/4 run' printed no flux:\n${step_output}")
@@ -99,5 +100,14 @@ if(DEFINED EXPECT_CHOLMOD AND NOT "${EXPECT_CHOLMOD}" STREQUAL "")
   endif()
   if(NOT EXPECT_CHOLMOD AND step_output MATCHES "sparse solver: CHOLMOD")
     message(FATAL_ERROR "consumer test: the package was built without CHOLMOD but the consumer uses it")
+  endif()
+endif()
+if(DEFINED EXPECT_ZLIB AND NOT "${EXPECT_ZLIB}" STREQUAL "")
+  if(EXPECT_ZLIB AND NOT step_output MATCHES "zlib: gzip NRRD read")
+    message(FATAL_ERROR "consumer test: the package was built with zlib but the consumer did not "
+                        "get CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB from the exported target:\n${step_output}")
+  endif()
+  if(NOT EXPECT_ZLIB AND step_output MATCHES "zlib: ")
+    message(FATAL_ERROR "consumer test: the package was built without zlib but the consumer uses it")
   endif()
 endif()

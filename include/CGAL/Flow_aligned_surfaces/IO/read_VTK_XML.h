@@ -21,6 +21,7 @@
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
@@ -50,6 +51,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -230,6 +232,185 @@ void check_announced_size(const VTK_XML_context& c, Reader* reader)
   }
 }
 
+// VTK's readers trust the structure that the header describes.  Two lies make VTK 9.1 write
+// outside its arrays (found by fuzzing: a piece extent reaching outside the whole extent,
+// together with a points array of 8 components, crashes vtkXMLStructuredDataReader::
+// ReadSubExtent), so the header's elements are checked before VTK reads any data: every piece
+// of a structured data set (ImageData, StructuredGrid) lies inside its whole extent, and every
+// points array holds 3 components.  And VTK loops over the components of every array (for
+// their names): a NumberOfComponents of 10^100 (read as 2^31 - 1) takes minutes, so an array
+// needs a positive number of components that the file can hold (as check_announced_size()).
+inline void check_VTK_XML_structure(const VTK_XML_context& c, vtkXMLDataParser* parser)
+{
+  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  if (root == nullptr)
+    return;
+  auto where = [](vtkXMLDataElement* e) {
+    return "byte " + std::to_string(e->GetXMLByteIndex()) + ": <" + (e->GetName() ? e->GetName() : "") + "> ";
+  };
+  std::error_code ec;
+  const double bytes = static_cast<double>(std::filesystem::file_size(c.file, ec));
+  std::vector<vtkXMLDataElement*> todo{root};
+  while (!todo.empty() && !ec) {
+    vtkXMLDataElement* e = todo.back();
+    todo.pop_back();
+    for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
+      todo.push_back(e->GetNestedElement(i));
+    const char* components = e->GetAttribute("NumberOfComponents");
+    if (components == nullptr)
+      continue;
+    char* end = nullptr;
+    const double n = std::strtod(components, &end);
+    if (end == components || !(n >= 1.) || n != std::floor(n) || n > 2000. * bytes + 1e6)
+      c.fail(where(e) + "NumberOfComponents=\"" + Flow_aligned_surfaces::internal::printable(components) +
+             "\" is not a positive integer that the file can hold");
+  }
+  auto extent_text = [](const int* e) {
+    std::string r;
+    for (int i = 0; i < 6; ++i)
+      r += (i ? " " : "") + std::to_string(e[i]);
+    return r;
+  };
+  for (int d = 0; d < root->GetNumberOfNestedElements(); ++d) {
+    vtkXMLDataElement* data = root->GetNestedElement(d);
+    int whole[6];
+    const bool structured = data->GetVectorAttribute("WholeExtent", 6, whole) == 6;
+    for (int p = 0; p < data->GetNumberOfNestedElements(); ++p) {
+      vtkXMLDataElement* piece = data->GetNestedElement(p);
+      if (std::string(piece->GetName() ? piece->GetName() : "") != "Piece")
+        continue;
+      int extent[6];
+      if (structured && piece->GetVectorAttribute("Extent", 6, extent) == 6)
+        for (int a = 0; a < 3; ++a)
+          if (extent[2 * a] < whole[2 * a] || extent[2 * a + 1] > whole[2 * a + 1])
+            c.fail(where(piece) + "the piece's Extent \"" + extent_text(extent) +
+                   "\" reaches outside the WholeExtent \"" + extent_text(whole) + "\" of the data set");
+      vtkXMLDataElement* points = piece->FindNestedElementWithName("Points");
+      for (int i = 0; points != nullptr && i < points->GetNumberOfNestedElements(); ++i) {
+        vtkXMLDataElement* array = points->GetNestedElement(i);
+        int components = 1;
+        array->GetScalarAttribute("NumberOfComponents", components);
+        if (components != 3)
+          c.fail(where(array) + "the points array has " + std::to_string(components) +
+                 " components; points need 3 coordinates");
+      }
+    }
+  }
+}
+
+// `n` bytes of an array's data at byte `position` of the file, raw or decoded from base64
+// (whitespace skipped); fewer if the file ends or the encoding stops first.
+inline std::string read_VTK_XML_bytes(std::istream& in, long long position, bool base64, std::size_t n)
+{
+  std::string r;
+  in.clear();
+  in.seekg(position);
+  if (!base64) {
+    r.resize(n);
+    in.read(&r[0], static_cast<std::streamsize>(n));
+    r.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+    return r;
+  }
+  unsigned bits = 0;
+  int count = 0;
+  for (char ch; r.size() < n && in.get(ch);) {
+    const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const char* digit = ch != '\0' ? std::strchr(alphabet, ch) : nullptr;
+    if (ch == ' ' || ch == '\n' || ch == '\r' || ch == '\t')
+      continue;
+    if (digit == nullptr)
+      break;
+    bits = (bits << 6) | static_cast<unsigned>(digit - alphabet);
+    count += 6;
+    if (count >= 8) {
+      count -= 8;
+      r += static_cast<char>((bits >> count) & 0xffu);
+    }
+  }
+  return r;
+}
+
+// The header of a compressed array (number of blocks, block size, last block size, compressed
+// size of each block) is trusted by VTK 9.1, which allocates from it (found by fuzzing: a
+// 13-point file announcing 2 GB blocks, or 10^9 blocks).  Checked here against the file's size
+// for the appended arrays (raw or base64) of a compressed file; inline binary arrays are not
+// checked (VTK does not give their position in the file).
+inline void check_VTK_XML_compression_headers(const VTK_XML_context& c, vtkXMLDataParser* parser)
+{
+  using Flow_aligned_surfaces::internal::Binary_type;
+  using Flow_aligned_surfaces::internal::Byte_order;
+  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  if (root == nullptr || root->GetAttribute("compressor") == nullptr)
+    return;
+  std::error_code ec;
+  const double file_bytes = static_cast<double>(std::filesystem::file_size(c.file, ec));
+  std::ifstream in(c.file, std::ios::binary);
+  if (ec || !in)
+    return; // VTK reports it
+  const char* header_type = root->GetAttribute("header_type");
+  const bool wide = header_type != nullptr && std::string(header_type) == "UInt64";
+  const std::size_t word = wide ? 8 : 4;
+  const char* byte_order = root->GetAttribute("byte_order");
+  const Byte_order order = byte_order != nullptr && std::string(byte_order) == "BigEndian"
+                               ? Byte_order::BIG_ENDIAN_ORDER
+                               : Byte_order::LITTLE_ENDIAN_ORDER;
+  auto number = [&](const std::string& bytes, std::size_t i) {
+    return Flow_aligned_surfaces::internal::decode_binary_number(
+        wide ? Binary_type::UINT64 : Binary_type::UINT32, order,
+        reinterpret_cast<const unsigned char*>(bytes.data()) + i * word);
+  };
+  vtkXMLDataElement* appended = root->FindNestedElementWithName("AppendedData");
+  const char* appended_encoding = appended ? appended->GetAttribute("encoding") : nullptr;
+  const bool appended_base64 = appended_encoding == nullptr || std::string(appended_encoding) != "raw";
+  std::vector<vtkXMLDataElement*> todo{root};
+  while (!todo.empty()) {
+    vtkXMLDataElement* e = todo.back();
+    todo.pop_back();
+    for (int i = 0; i < e->GetNumberOfNestedElements(); ++i)
+      todo.push_back(e->GetNestedElement(i));
+    const char* format = e->GetAttribute("format");
+    if (std::string(e->GetName() ? e->GetName() : "") != "DataArray" || format == nullptr)
+      continue;
+    const char* offset = e->GetAttribute("offset");
+    if (std::string(format) != "appended" || appended == nullptr || offset == nullptr)
+      continue; // VTK reports what is missing
+    const long long position =
+        static_cast<long long>(parser->GetAppendedDataPosition()) + std::strtoll(offset, nullptr, 10);
+    const bool base64 = appended_base64;
+    const std::string head = read_VTK_XML_bytes(in, position, base64, 3 * word);
+    if (head.size() < 3 * word)
+      continue; // VTK reports the short read
+    const double blocks = number(head, 0), block_size = number(head, 1), last_size = number(head, 2);
+    const std::string where = "byte " + std::to_string(e->GetXMLByteIndex()) +
+                              ": the compressed DataArray '" +
+                              (e->GetAttribute("Name") ? e->GetAttribute("Name") : "") + "' announces ";
+    std::ostringstream msg;
+    if (blocks * double(word) > file_bytes) {
+      msg << where << blocks << " blocks, whose sizes alone need more than the " << file_bytes
+          << " bytes of the file (corrupt or lying header)";
+      c.fail(msg.str());
+    }
+    const double uncompressed =
+        blocks == 0. ? 0. : block_size * (blocks - 1.) + (last_size ? last_size : block_size);
+    if (std::max(block_size, uncompressed) > 2000. * file_bytes + 1e6) {
+      msg << where << blocks << " blocks of " << block_size << " bytes (the last " << last_size
+          << "), far more than the " << file_bytes << " bytes of the file can hold even compressed "
+          << "(corrupt or lying header)";
+      c.fail(msg.str());
+    }
+    const std::string sizes =
+        read_VTK_XML_bytes(in, position, base64, (3 + static_cast<std::size_t>(blocks)) * word);
+    double compressed = 0.;
+    for (std::size_t b = 3; b * word + word <= sizes.size(); ++b)
+      compressed += number(sizes, b);
+    if (compressed > file_bytes) {
+      msg << where << "blocks of " << compressed << " compressed bytes in all, more than the " << file_bytes
+          << " bytes of the file (corrupt or lying header)";
+      c.fail(msg.str());
+    }
+  }
+}
+
 // Runs a VTK reader on the file; its errors become ours.
 template <class Reader>
 vtkSmartPointer<vtkDataSet> run_VTK_reader(const VTK_XML_context& c)
@@ -241,6 +422,8 @@ vtkSmartPointer<vtkDataSet> run_VTK_reader(const VTK_XML_context& c)
   reader->UpdateInformation();
   if (messages->has_errors())
     c.fail("VTK cannot read it: " + messages->errors());
+  check_VTK_XML_structure(c, reader->GetXMLParser());
+  check_VTK_XML_compression_headers(c, reader->GetXMLParser());
   check_announced_size(c, reader.Get());
   reader->Update();
   vtkSmartPointer<vtkDataSet> output = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));

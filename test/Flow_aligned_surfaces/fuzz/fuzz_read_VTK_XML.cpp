@@ -1,0 +1,80 @@
+// libFuzzer target for the VTK XML readers (needs VTK): `read_VTK_XML_flow_field` runs on
+// arbitrary bytes into an `Unstructured_flow_field_3` (the file may be a .vti, .vtu or .vts:
+// VTK tells them by their contents) and, when the bytes hold "ImageData", into a
+// `Regular_grid_flow_field_3`; when they hold a "\n--DATA--\n" line, the bytes before it are
+// also read by `read_PVD_flow_field` as a .pvd collection whose steps may name `data.raw`,
+// the bytes after it (see fuzz_input_file.h).  Each call must return (true, or false with a
+// message) without a sanitizer report.
+
+#include <CGAL/Flow_aligned_surfaces/IO/read_VTK_XML.h>
+
+#include <CGAL/Simple_cartesian.h>
+
+#include <vtkObject.h>
+
+#include "fuzz_input_file.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+typedef CGAL::Simple_cartesian<double> K;
+namespace FAS = CGAL::Flow_aligned_surfaces;
+typedef FAS::Unstructured_flow_field_3<K> Cells;
+
+namespace {
+
+// A failure must say why.
+void check(bool read, const std::string& error)
+{
+  if (!read && error.empty())
+    __builtin_trap();
+}
+
+} // namespace
+
+// VTK's warnings from objects the readers cannot watch (e.g. the point data of a data set
+// being read) would be printed for every input: not here.
+extern "C" int LLVMFuzzerInitialize(int*, char***)
+{
+  vtkObject::GlobalWarningDisplayOff();
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  const std::string file = fuzz_input_file(data, size, ".vti");
+  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+  std::string error;
+  std::optional<Cells> cells;
+  bool read = FAS::IO::read_VTK_XML_flow_field(file, cells, CGAL::parameters::default_values(), &error);
+  check(read, error);
+  if (read) // a field read must answer at one of its points
+    (void)(*cells)(K::Point_3(cells->points()[0], cells->points()[1], cells->points()[2]));
+  if (bytes.find("ImageData") != std::string_view::npos) {
+    std::optional<FAS::Regular_grid_flow_field_3<K>> grid;
+    error.clear();
+    read = FAS::IO::read_VTK_XML_flow_field(
+        file, grid, FAS::parameters::array_name("velocity", FAS::parameters::mask_array_name("inside")),
+        &error);
+    check(read, error);
+    if (read) {
+      const auto n = grid->dimensions();
+      (void)(*grid)(grid->node_point(n[0] / 2, n[1] / 2, n[2] / 2));
+    }
+  }
+  const std::size_t separator = bytes.find("\n--DATA--\n");
+  if (separator != std::string_view::npos) {
+    const std::string pvd = fuzz_folder() + "/input.pvd";
+    fuzz_write(pvd, bytes.substr(0, separator + 1));
+    std::optional<FAS::Unsteady_flow_field_3<Cells>> series;
+    error.clear();
+    read = FAS::IO::read_PVD_flow_field(pvd, series, CGAL::parameters::default_values(), &error);
+    check(read, error);
+    if (read)
+      (void)(*series)(K::Point_3(0., 0., 0.), series->start_time());
+  }
+  return 0;
+}
