@@ -20,7 +20,10 @@
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/internal/node_value_checks.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/internal/remove_masked_cells.h>
 #include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -368,9 +371,7 @@ public:
   {
     if (dataset == "UNSTRUCTURED_GRID")
       return "point " + std::to_string(node);
-    const std::size_t nx = dimensions[0], ny = dimensions[1];
-    return "node " + std::to_string(node) + " = (" + std::to_string(node % nx) + ", " +
-           std::to_string((node / nx) % ny) + ", " + std::to_string(node / (nx * ny)) + ")";
+    return "node " + Flow_aligned_surfaces::internal::grid_node_string(dimensions, node);
   }
 
   // The field types that read a dataset type, or null for the types no field reads.
@@ -823,29 +824,18 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
     d.mask_name = mask->name;
     d.flags.resize(nodes);
     parser.decode(*mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-      if (std::isnan(v))
-        parser.fail_at(offset, line, "the mask '" + mask->name + "' is NaN at node " + std::to_string(i));
-      d.flags[i] = v != 0. ? 1 : 0;
+      d.flags[i] = Flow_aligned_surfaces::internal::checked_mask_flag(
+          v, mask->name, [&] { return "node " + std::to_string(i); },
+          [&](const std::string& what) { parser.fail_at(offset, line, what); });
     });
   }
   d.values.resize(3 * nodes);
   parser.decode(*velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
     const std::size_t node = i / 3;
-    const bool representable =
-        std::isfinite(v) && std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)());
-    if (!d.flags.empty() && d.flags[node] == 0) {
-      d.values[i] = representable ? static_cast<float>(v) : std::numeric_limits<float>::quiet_NaN();
-      return;
-    }
-    if (!representable) {
-      std::ostringstream msg;
-      msg << "the velocity '" << velocity->name << "' at " << parser.node_name(node) << ", component "
-          << i % 3 << ", is " << v
-          << (std::isfinite(v) ? ", which does not fit in a 32-bit float" : "; expected a finite number")
-          << (d.flags.empty() ? "" : " at a fluid node");
-      parser.fail_at(offset, line, msg.str());
-    }
-    d.values[i] = static_cast<float>(v);
+    d.values[i] = Flow_aligned_surfaces::internal::checked_velocity_component(
+        v, i % 3, d.flags.empty() || d.flags[node] != 0, !d.flags.empty(), velocity->name, "node",
+        [&] { return parser.node_name(node); },
+        [&](const std::string& what) { parser.fail_at(offset, line, what); });
   });
   // A solid node's value is never interpolated: one with a non-finite component is stored as
   // zero, as the grid fields' constructors do (and the cells field, which refuses non-finite
@@ -1040,26 +1030,6 @@ read_unstructured_cells(VTK_legacy_parser& parser)
   return r;
 }
 
-// Removes every cell that touches a solid node (`fluid[p] == 0`).
-inline void remove_masked_cells(const VTK_legacy_parser& parser, const VTK_legacy_node_data& d,
-                                Flow_aligned_surfaces::internal::Structured_grid_cells& c)
-{
-  Flow_aligned_surfaces::internal::Structured_grid_cells kept;
-  kept.offsets.push_back(0);
-  for (std::size_t cell = 0; cell < c.cell_types.size(); ++cell) {
-    const auto b = c.connectivity.begin() + c.offsets[cell], e = c.connectivity.begin() + c.offsets[cell + 1];
-    if (std::any_of(b, e, [&](std::int64_t p) { return d.flags[static_cast<std::size_t>(p)] == 0; }))
-      continue;
-    kept.connectivity.insert(kept.connectivity.end(), b, e);
-    kept.offsets.push_back(static_cast<std::int64_t>(kept.connectivity.size()));
-    kept.cell_types.push_back(c.cell_types[cell]);
-  }
-  if (kept.cell_types.empty())
-    parser.fail_file("every one of the " + std::to_string(c.cell_types.size()) +
-                     " cells touches a solid node of the mask '" + d.mask_name + "'; no cell is left");
-  c = std::move(kept);
-}
-
 // Reads the file and builds the field; throw VTK_legacy_error with the message.
 template <class K>
 Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, const std::string* array_name,
@@ -1126,8 +1096,11 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
     }
     cells = Flow_aligned_surfaces::internal::structured_grid_cells(parser.dimensions);
   }
-  if (!d.flags.empty())
-    remove_masked_cells(parser, d, cells);
+  const std::size_t all_cells = cells.cell_types.size();
+  if (!d.flags.empty() && Flow_aligned_surfaces::internal::remove_masked_cells(
+                              d.flags, cells.connectivity, cells.offsets, cells.cell_types) == 0)
+    parser.fail_file("every one of the " + std::to_string(all_cells) +
+                     " cells touches a solid node of the mask '" + d.mask_name + "'; no cell is left");
   try {
     return Unstructured_flow_field_3<K>(points, std::move(cells.connectivity), std::move(cells.offsets),
                                         std::move(cells.cell_types), std::move(d.values));
@@ -1141,30 +1114,10 @@ template <class Field, class NamedParameters, class Read>
 bool read_VTK_legacy(const std::string& filename, std::optional<Field>& field, const NamedParameters& np,
                      std::string* error, const Read& read)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const std::string array_name =
-      choose_parameter(get_parameter(np, Flow_aligned_surfaces::internal_np::array_name_t()), std::string());
-  const std::string mask_name = choose_parameter(
-      get_parameter(np, Flow_aligned_surfaces::internal_np::mask_array_name_t()), std::string());
-  constexpr bool has_array_name =
-      !parameters::is_default_parameter<NamedParameters,
-                                        Flow_aligned_surfaces::internal_np::array_name_t>::value;
-  constexpr bool has_mask_name =
-      !parameters::is_default_parameter<NamedParameters,
-                                        Flow_aligned_surfaces::internal_np::mask_array_name_t>::value;
-  try {
-    field.emplace(
-        read(filename, has_array_name ? &array_name : nullptr, has_mask_name ? &mask_name : nullptr));
-    return true;
-  } catch (const VTK_legacy_error& e) {
-    if (error)
-      *error = e.what();
-  } catch (const std::bad_alloc&) {
-    if (error)
-      *error = "read_VTK_flow_field: " + filename + ": not enough memory for the field";
-  }
-  return false;
+  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
+  return Flow_aligned_surfaces::internal::read_into("read_VTK_flow_field", filename, field, error, [&] {
+    return read(filename, names.array_name(), names.mask_name());
+  });
 }
 
 // The same into an existing field, assigned only on success.
@@ -1172,11 +1125,9 @@ template <class Field, class NamedParameters, class Read>
 bool read_VTK_legacy(const std::string& filename, Field& field, const NamedParameters& np, std::string* error,
                      const Read& read)
 {
-  std::optional<Field> result;
-  if (!read_VTK_legacy(filename, result, np, error, read))
-    return false;
-  field = std::move(*result);
-  return true;
+  return Flow_aligned_surfaces::internal::read_and_assign<Field>(field, [&](std::optional<Field>& result) {
+    return read_VTK_legacy(filename, result, np, error, read);
+  });
 }
 
 } // namespace internal
