@@ -395,13 +395,9 @@ Regular_grid_flow_field_3<K> read_VTK_XML_grid(const VTK_XML_context& c, const s
   image->GetSpacing(spacing);
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
-  try {
-    return Regular_grid_flow_field_3<K>(Point_3(first[0], first[1], first[2]),
-                                        Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values),
-                                        std::move(flags));
-  } catch (const std::invalid_argument& e) {
-    c.fail(e.what());
-  }
+  return Flow_aligned_surfaces::internal::construct_field<Regular_grid_flow_field_3<K>>(
+      [&](const std::string& what) { c.fail(what); }, Point_3(first[0], first[1], first[2]),
+      Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values), std::move(flags));
 }
 
 // The cells of the data set as VTK arrays, with the velocity and the mask; cells touching a
@@ -492,12 +488,9 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
       Flow_aligned_surfaces::internal::remove_masked_cells(flags, connectivity, offsets, types) == 0)
     c.fail("every one of the " + std::to_string(cells) +
            " cells touches a solid point of the mask (no fluid cell is left)");
-  try {
-    return Unstructured_flow_field_3<K>(points, std::move(connectivity), std::move(offsets), std::move(types),
-                                        std::move(values));
-  } catch (const std::invalid_argument& e) {
-    c.fail(e.what());
-  }
+  return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
+      [&](const std::string& what) { c.fail(what); }, points, std::move(connectivity), std::move(offsets),
+      std::move(types), std::move(values));
 }
 
 template <class Field>

@@ -93,6 +93,11 @@ public:
   }
   [[noreturn]] void fail(const std::string& what) const { in_.fail(what); }
   [[noreturn]] void fail_file(const std::string& what) const { in_.fail_file(what); }
+  // `fail_file` as a function object.
+  auto file_failure() const
+  {
+    return [this](const std::string& what) { fail_file(what); };
+  }
 
   // Pass 1: the header, the geometry and the position of every array.  `target` names the
   // field type being read, for the message when `dataset` is not one it reads.
@@ -933,13 +938,10 @@ Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, c
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
-  try {
-    return Regular_grid_flow_field_3<K>(Point_3(parser.origin[0], parser.origin[1], parser.origin[2]),
-                                        Vector_3(parser.spacing[0], parser.spacing[1], parser.spacing[2]),
-                                        parser.dimensions, std::move(d.values), std::move(d.flags));
-  } catch (const std::invalid_argument& e) {
-    parser.fail_file(e.what());
-  }
+  return Flow_aligned_surfaces::internal::construct_field<Regular_grid_flow_field_3<K>>(
+      parser.file_failure(), Point_3(parser.origin[0], parser.origin[1], parser.origin[2]),
+      Vector_3(parser.spacing[0], parser.spacing[1], parser.spacing[2]), parser.dimensions,
+      std::move(d.values), std::move(d.flags));
 }
 
 template <class K>
@@ -952,11 +954,8 @@ Rectilinear_grid_flow_field_3<K> read_VTK_legacy_rectilinear(const std::string& 
   parser.parse({"STRUCTURED_POINTS", "RECTILINEAR_GRID"}, "Rectilinear_grid_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   std::array<std::vector<double>, 3> x = grid_coordinates(parser);
-  try {
-    return Rectilinear_grid_flow_field_3<K>(std::move(x), std::move(d.values), std::move(d.flags));
-  } catch (const std::invalid_argument& e) {
-    parser.fail_file(e.what());
-  }
+  return Flow_aligned_surfaces::internal::construct_field<Rectilinear_grid_flow_field_3<K>>(
+      parser.file_failure(), std::move(x), std::move(d.values), std::move(d.flags));
 }
 
 template <class K>
@@ -993,12 +992,9 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
                               d.flags, cells.connectivity, cells.offsets, cells.cell_types) == 0)
     parser.fail_file("every one of the " + std::to_string(all_cells) +
                      " cells touches a solid node of the mask '" + d.mask_name + "'; no cell is left");
-  try {
-    return Unstructured_flow_field_3<K>(points, std::move(cells.connectivity), std::move(cells.offsets),
-                                        std::move(cells.cell_types), std::move(d.values));
-  } catch (const std::invalid_argument& e) {
-    parser.fail_file(e.what());
-  }
+  return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
+      parser.file_failure(), points, std::move(cells.connectivity), std::move(cells.offsets),
+      std::move(cells.cell_types), std::move(d.values));
 }
 
 // The public functions' common part: the named parameters, and the errors made `false` + message.

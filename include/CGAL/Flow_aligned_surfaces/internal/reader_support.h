@@ -15,6 +15,7 @@
 
 #include <new>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -46,6 +47,20 @@ Array_names array_names(const NamedParameters& np)
 {
   return Array_names{string_parameter<internal_np::array_name_t>(np),
                      string_parameter<internal_np::mask_array_name_t>(np)};
+}
+
+/// `Field(args...)`; a `std::invalid_argument` by which the constructor refuses values that
+/// the reader did not check itself becomes `fail(its message)`, which throws a `Read_error`
+/// naming the file.
+template <class Field, class Fail, class... Args>
+Field construct_field(const Fail& fail, Args&&... args)
+{
+  try {
+    return Field(std::forward<Args>(args)...);
+  } catch (const std::invalid_argument& e) {
+    fail(std::string(e.what()));
+    throw;
+  }
 }
 
 /// Runs `read()` (which returns the field or throws `Read_error`) into `field`; on failure

@@ -111,13 +111,9 @@ Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const st
   });
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
-  try {
-    return Regular_grid_flow_field_3<K>(Point_3(origin[0], origin[1], origin[2]),
-                                        Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values),
-                                        std::move(flags));
-  } catch (const std::invalid_argument& e) {
-    cursor.fail_file(e.what());
-  }
+  return construct_field<Regular_grid_flow_field_3<K>>(
+      [&](const std::string& what) { cursor.fail_file(what); }, Point_3(origin[0], origin[1], origin[2]),
+      Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values), std::move(flags));
 }
 
 } // namespace internal
