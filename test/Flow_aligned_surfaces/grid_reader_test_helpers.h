@@ -6,9 +6,10 @@
 #ifndef FAS_TEST_GRID_READER_TEST_HELPERS_H
 #define FAS_TEST_GRID_READER_TEST_HELPERS_H
 
-#include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+#include "test_files.h"
+#include "test_kernel.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 
 #include <gtest/gtest.h>
 
@@ -18,7 +19,6 @@
 
 #include <cstddef>
 #include <cstring>
-#include <fstream>
 #include <initializer_list>
 #include <string>
 #include <utility>
@@ -26,15 +26,9 @@
 
 namespace fas_test {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Grid_kernel;
-typedef CGAL::Flow_aligned_surfaces::Regular_grid_flow_field_3<Grid_kernel> Grid;
+typedef CGAL::Flow_aligned_surfaces::Regular_grid_flow_field_3<K> Grid;
 
-inline void write_bytes(const std::string& filename, const std::string& bytes)
-{
-  std::ofstream os(filename, std::ios::binary | std::ios::trunc);
-  os.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  ASSERT_TRUE(bool(os)) << filename;
-}
+using ::write_bytes;
 
 /// Appends the bytes of `v` (an arithmetic value) in the given byte order.
 template <class T>
@@ -121,7 +115,7 @@ class Grid_reader_checks {
 public:
   explicit Grid_reader_checks(std::string prefix) : prefix_(std::move(prefix)) {}
 
-  std::string temporary(const std::string& name) const { return ::testing::TempDir() + prefix_ + name; }
+  std::string temporary(const std::string& name) const { return temporary_file(prefix_, name); }
 
   /// Writes `contents` to a file, reads it and expects success.
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>

@@ -9,7 +9,7 @@
 #include <CGAL/Flow_aligned_surfaces/Rectilinear_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "test_kernel.h"
 
 #include "expect_invalid_argument.h"
 
@@ -25,10 +25,7 @@
 
 namespace {
 
-namespace FAS = CGAL::Flow_aligned_surfaces;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef K::Vector_3 Vector_3;
+using namespace fas_test;
 typedef FAS::Rectilinear_grid_flow_field_3<K> Field;
 typedef Field::Coordinates Coordinates;
 

@@ -9,7 +9,7 @@
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "test_kernel.h"
 
 #include "expect_invalid_argument.h"
 
@@ -29,10 +29,7 @@
 
 namespace {
 
-namespace FAS = CGAL::Flow_aligned_surfaces;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef K::Vector_3 Vector_3;
+using namespace fas_test;
 typedef FAS::Unstructured_flow_field_3<K> Field;
 typedef Field::Index Index;
 

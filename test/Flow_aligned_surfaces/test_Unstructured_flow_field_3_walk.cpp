@@ -10,7 +10,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "test_kernel.h"
 
 #include <gtest/gtest.h>
 
@@ -23,10 +23,7 @@
 
 namespace {
 
-namespace FAS = CGAL::Flow_aligned_surfaces;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef K::Vector_3 Vector_3;
+using namespace fas_test;
 typedef FAS::Unstructured_flow_field_3<K> Field;
 typedef Field::Index Index;
 

@@ -24,6 +24,8 @@ TEST(ReadVTKXML, SkippedWithoutVTK)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include "test_files.h"
+
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
@@ -70,22 +72,7 @@ using Cells = FAS::Unstructured_flow_field_3<K>;
 
 std::string temporary(const std::string& name)
 {
-  return ::testing::TempDir() + "fas_read_VTK_XML_" + name;
-}
-
-void write_bytes(const std::string& filename, const std::string& bytes)
-{
-  std::ofstream os(filename, std::ios::binary | std::ios::trunc);
-  os.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  ASSERT_TRUE(bool(os)) << filename;
-}
-
-std::string read_bytes(const std::string& filename)
-{
-  std::ifstream is(filename, std::ios::binary);
-  std::ostringstream s;
-  s << is.rdbuf();
-  return s.str();
+  return temporary_file("fas_read_VTK_XML_", name);
 }
 
 // v(p, t) = A p + t b + c with integer coefficients: exact in float at half-integer points and

@@ -17,6 +17,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
 #include <CGAL/Flow_aligned_surfaces/internal/inflate_bytes.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
 #include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
 #include <CGAL/Flow_aligned_surfaces/internal/uniform_grid_reading.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
@@ -695,12 +696,9 @@ bool read_AmiraMesh_flow_field(const std::string& filename,
                                const NamedParameters& np = CGAL::parameters::default_values(),
                                std::string* error = nullptr)
 {
-  const std::optional<std::string> array_name =
-      Flow_aligned_surfaces::internal::string_parameter<Flow_aligned_surfaces::internal_np::array_name_t>(np);
-  const std::optional<std::string> mask_name = Flow_aligned_surfaces::internal::string_parameter<
-      Flow_aligned_surfaces::internal_np::mask_array_name_t>(np);
+  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
   return Flow_aligned_surfaces::internal::read_into("read_AmiraMesh_flow_field", filename, field, error, [&] {
-    return internal::read_AmiraMesh_grid<K>(filename, array_name, mask_name);
+    return internal::read_AmiraMesh_grid<K>(filename, names.array, names.mask);
   });
 }
 
@@ -763,10 +761,8 @@ bool read_AmiraMesh_flow_field(const std::string& filename, Regular_grid_flow_fi
                                const NamedParameters& np = CGAL::parameters::default_values(),
                                std::string* error = nullptr)
 {
-  return Flow_aligned_surfaces::internal::read_and_assign(
-      field, [&](std::optional<Regular_grid_flow_field_3<K>>& result) {
-        return read_AmiraMesh_flow_field(filename, result, np, error);
-      });
+  return Flow_aligned_surfaces::internal::read_and_assign<Regular_grid_flow_field_3<K>>(
+      field, [&](auto& result) { return read_AmiraMesh_flow_field(filename, result, np, error); });
 }
 
 } // namespace IO

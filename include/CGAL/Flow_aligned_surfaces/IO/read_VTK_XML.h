@@ -22,7 +22,10 @@
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/internal/node_value_checks.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/internal/remove_masked_cells.h>
 #include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -504,40 +507,25 @@ void read_VTK_point_arrays(const VTK_XML_context& c, vtkDataSet* ds, const std::
   std::vector<unsigned char> f;
   if (mask != nullptr) {
     f.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double m = mask->GetComponent(static_cast<vtkIdType>(i), 0);
-      if (std::isnan(m))
-        c.fail("the mask '" + mask_array + "' is NaN at point " + where(i));
-      f[i] = m != 0. ? 1 : 0;
-    }
+    for (std::size_t i = 0; i < n; ++i)
+      f[i] = Flow_aligned_surfaces::internal::checked_mask_flag(
+          mask->GetComponent(static_cast<vtkIdType>(i), 0), mask_array, [&] { return "point " + where(i); },
+          [&](const std::string& what) { c.fail(what); });
   }
   std::vector<float> v(3 * n);
   for (std::size_t i = 0; i < n; ++i) {
     double x[3];
     velocity->GetTuple(static_cast<vtkIdType>(i), x);
     for (int d = 0; d < 3; ++d) {
-      const bool representable =
-          std::isfinite(x[d]) && std::fabs(x[d]) <= static_cast<double>((std::numeric_limits<float>::max)());
-      if (!representable && (f.empty() || f[i] != 0)) {
-        std::ostringstream msg;
-        msg << "the velocity '" << velocity_name << "' at point " << where(i) << ", component " << d
-            << ", is " << x[d]
-            << (std::isfinite(x[d]) ? ", which does not fit in a 32-bit float" : "; expected a finite number")
-            << (f.empty() ? "" : " at a fluid point");
-        c.fail(msg.str());
-      }
+      const float s = Flow_aligned_surfaces::internal::checked_velocity_component(
+          x[d], d, f.empty() || f[i] != 0, !f.empty(), velocity_name, "point",
+          [&] { return "point " + where(i); }, [&](const std::string& what) { c.fail(what); });
       // Solid points' values are never interpolated; the fields' constructors want them finite.
-      v[3 * i + d] = representable ? static_cast<float>(x[d]) : 0.f;
+      v[3 * i + d] = std::isnan(s) ? 0.f : s;
     }
   }
   values = std::move(v);
   flags = std::move(f);
-}
-
-inline std::string describe_image_point(const std::array<std::size_t, 3>& n, std::size_t i)
-{
-  return std::to_string(i) + " = (" + std::to_string(i % n[0]) + ", " + std::to_string((i / n[0]) % n[1]) +
-         ", " + std::to_string(i / (n[0] * n[1])) + ")";
 }
 
 // The image's dimensions, checked to be a 3D grid without rotation.
@@ -582,21 +570,17 @@ Regular_grid_flow_field_3<K> read_VTK_XML_grid(const VTK_XML_context& c, const s
   std::vector<float> values;
   std::vector<unsigned char> flags;
   read_VTK_point_arrays(
-      c, ds, array_name, mask_name, [&n](std::size_t i) { return describe_image_point(n, i); }, values,
-      flags);
+      c, ds, array_name, mask_name,
+      [&n](std::size_t i) { return Flow_aligned_surfaces::internal::grid_node_string(n, i); }, values, flags);
   // The grid's origin is the image's first point, which the extent may move off VTK's origin.
   double first[3], spacing[3];
   image->GetPoint(0, first);
   image->GetSpacing(spacing);
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
-  try {
-    return Regular_grid_flow_field_3<K>(Point_3(first[0], first[1], first[2]),
-                                        Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values),
-                                        std::move(flags));
-  } catch (const std::invalid_argument& e) {
-    c.fail(e.what());
-  }
+  return Flow_aligned_surfaces::internal::construct_field<Regular_grid_flow_field_3<K>>(
+      [&](const std::string& what) { c.fail(what); }, Point_3(first[0], first[1], first[2]),
+      Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values), std::move(flags));
 }
 
 // The cells of the data set as VTK arrays, with the velocity and the mask; cells touching a
@@ -637,7 +621,8 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
   std::vector<unsigned char> flags;
   if (structured)
     read_VTK_point_arrays(
-        c, ds, array_name, mask_name, [&](std::size_t i) { return describe_image_point(*structured, i); },
+        c, ds, array_name, mask_name,
+        [&](std::size_t i) { return Flow_aligned_surfaces::internal::grid_node_string(*structured, i); },
         values, flags);
   else
     read_VTK_point_arrays(
@@ -681,33 +666,14 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
     }
   }
 
-  if (!flags.empty()) {
-    std::vector<Index> kept_connectivity, kept_offsets(1, 0);
-    std::vector<unsigned char> kept_types;
-    for (std::size_t cell = 0; cell < types.size(); ++cell) {
-      const Index* b = connectivity.data() + offsets[cell];
-      const Index* e = connectivity.data() + offsets[cell + 1];
-      // Indices out of range are left for the field's constructor to report.
-      if (std::any_of(b, e,
-                      [&](Index p) { return p >= 0 && std::size_t(p) < np && flags[std::size_t(p)] == 0; }))
-        continue;
-      kept_connectivity.insert(kept_connectivity.end(), b, e);
-      kept_offsets.push_back(static_cast<Index>(kept_connectivity.size()));
-      kept_types.push_back(types[cell]);
-    }
-    if (kept_types.empty())
-      c.fail("every one of the " + std::to_string(types.size()) +
-             " cells touches a solid point of the mask (no fluid cell is left)");
-    connectivity = std::move(kept_connectivity);
-    offsets = std::move(kept_offsets);
-    types = std::move(kept_types);
-  }
-  try {
-    return Unstructured_flow_field_3<K>(points, std::move(connectivity), std::move(offsets), std::move(types),
-                                        std::move(values));
-  } catch (const std::invalid_argument& e) {
-    c.fail(e.what());
-  }
+  const std::size_t cells = types.size();
+  if (!flags.empty() &&
+      Flow_aligned_surfaces::internal::remove_masked_cells(flags, connectivity, offsets, types) == 0)
+    c.fail("every one of the " + std::to_string(cells) +
+           " cells touches a solid point of the mask (no fluid cell is left)");
+  return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
+      [&](const std::string& what) { c.fail(what); }, points, std::move(connectivity), std::move(offsets),
+      std::move(types), std::move(values));
 }
 
 template <class Field>
@@ -730,51 +696,6 @@ struct VTK_XML_field_reader<Unstructured_flow_field_3<K>> {
     return read_VTK_XML_cells<K>(c, a, m);
   }
 };
-
-// The array names of the named parameters; null where not given.
-struct VTK_XML_array_names {
-  std::string array, mask;
-  bool has_array = false, has_mask = false;
-  const std::string* array_name() const { return has_array ? &array : nullptr; }
-  const std::string* mask_name() const { return has_mask ? &mask : nullptr; }
-};
-
-template <class NamedParameters>
-VTK_XML_array_names VTK_XML_names(const NamedParameters& np)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  VTK_XML_array_names r;
-  r.array =
-      choose_parameter(get_parameter(np, Flow_aligned_surfaces::internal_np::array_name_t()), std::string());
-  r.mask = choose_parameter(get_parameter(np, Flow_aligned_surfaces::internal_np::mask_array_name_t()),
-                            std::string());
-  r.has_array = !parameters::is_default_parameter<NamedParameters,
-                                                  Flow_aligned_surfaces::internal_np::array_name_t>::value;
-  r.has_mask =
-      !parameters::is_default_parameter<NamedParameters,
-                                        Flow_aligned_surfaces::internal_np::mask_array_name_t>::value;
-  return r;
-}
-
-// Calls `read()`, which returns the field or throws VTK_XML_error; `false` + message otherwise.
-template <class Field, class Read>
-bool read_or_report(const std::string& reader, const std::string& filename, std::optional<Field>& field,
-                    std::string* error, const Read& read)
-{
-  try {
-    Field result = read();
-    field.emplace(std::move(result));
-    return true;
-  } catch (const VTK_XML_error& e) {
-    if (error)
-      *error = e.what();
-  } catch (const std::bad_alloc&) {
-    if (error)
-      *error = reader + ": " + filename + ": not enough memory for the field";
-  }
-  return false;
-}
 
 // The steps of a .pvd file: (time, file, byte offset of the DataSet element), in file order.
 struct PVD_step {
@@ -846,9 +767,9 @@ bool read_VTK_XML_flow_field(const std::string& filename, std::optional<Regular_
                              const NamedParameters& np = CGAL::parameters::default_values(),
                              std::string* error = nullptr)
 {
-  const internal::VTK_XML_array_names names = internal::VTK_XML_names(np);
+  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
   const internal::VTK_XML_context c{"read_VTK_XML_flow_field", filename};
-  return internal::read_or_report(c.reader, filename, field, error, [&] {
+  return Flow_aligned_surfaces::internal::read_into(c.reader, filename, field, error, [&] {
     return internal::read_VTK_XML_grid<K>(c, names.array_name(), names.mask_name());
   });
 }
@@ -904,11 +825,8 @@ bool read_VTK_XML_flow_field(const std::string& filename, Regular_grid_flow_fiel
                              const NamedParameters& np = CGAL::parameters::default_values(),
                              std::string* error = nullptr)
 {
-  std::optional<Regular_grid_flow_field_3<K>> result;
-  if (!read_VTK_XML_flow_field(filename, result, np, error))
-    return false;
-  field = std::move(*result);
-  return true;
+  return Flow_aligned_surfaces::internal::read_and_assign<Regular_grid_flow_field_3<K>>(
+      field, [&](auto& result) { return read_VTK_XML_flow_field(filename, result, np, error); });
 }
 
 /*!
@@ -922,9 +840,9 @@ bool read_VTK_XML_flow_field(const std::string& filename, std::optional<Unstruct
                              const NamedParameters& np = CGAL::parameters::default_values(),
                              std::string* error = nullptr)
 {
-  const internal::VTK_XML_array_names names = internal::VTK_XML_names(np);
+  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
   const internal::VTK_XML_context c{"read_VTK_XML_flow_field", filename};
-  return internal::read_or_report(c.reader, filename, field, error, [&] {
+  return Flow_aligned_surfaces::internal::read_into(c.reader, filename, field, error, [&] {
     return internal::read_VTK_XML_cells<K>(c, names.array_name(), names.mask_name());
   });
 }
@@ -961,11 +879,8 @@ bool read_VTK_XML_flow_field(const std::string& filename, Unstructured_flow_fiel
                              const NamedParameters& np = CGAL::parameters::default_values(),
                              std::string* error = nullptr)
 {
-  std::optional<Unstructured_flow_field_3<K>> result;
-  if (!read_VTK_XML_flow_field(filename, result, np, error))
-    return false;
-  field = std::move(*result);
-  return true;
+  return Flow_aligned_surfaces::internal::read_and_assign<Unstructured_flow_field_3<K>>(
+      field, [&](auto& result) { return read_VTK_XML_flow_field(filename, result, np, error); });
 }
 
 /*!
@@ -979,9 +894,9 @@ bool read_PVD_flow_field(const std::string& filename, std::optional<Unsteady_flo
                          const NamedParameters& np = CGAL::parameters::default_values(),
                          std::string* error = nullptr)
 {
-  const internal::VTK_XML_array_names names = internal::VTK_XML_names(np);
+  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
   const internal::VTK_XML_context c{"read_PVD_flow_field", filename};
-  return internal::read_or_report(c.reader, filename, field, error, [&] {
+  return Flow_aligned_surfaces::internal::read_into(c.reader, filename, field, error, [&] {
     std::vector<internal::PVD_step> steps = internal::read_PVD_steps(c);
     std::stable_sort(
         steps.begin(), steps.end(),
@@ -1048,11 +963,8 @@ bool read_PVD_flow_field(const std::string& filename, Unsteady_flow_field_3<Fiel
                          const NamedParameters& np = CGAL::parameters::default_values(),
                          std::string* error = nullptr)
 {
-  std::optional<Unsteady_flow_field_3<Field>> result;
-  if (!read_PVD_flow_field(filename, result, np, error))
-    return false;
-  field = std::move(*result);
-  return true;
+  return Flow_aligned_surfaces::internal::read_and_assign<Unsteady_flow_field_3<Field>>(
+      field, [&](auto& result) { return read_PVD_flow_field(filename, result, np, error); });
 }
 
 } // namespace IO

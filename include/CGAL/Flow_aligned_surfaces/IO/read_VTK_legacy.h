@@ -20,8 +20,12 @@
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/internal/node_value_checks.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/internal/remove_masked_cells.h>
 #include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
+#include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <algorithm>
@@ -67,7 +71,7 @@ using Flow_aligned_surfaces::internal::printable;
 class VTK_legacy_parser {
 public:
   VTK_legacy_parser(const std::string& filename, std::string contents)
-      : file_(filename), buf_(std::move(contents))
+      : buf_(std::move(contents)), in_("read_VTK_flow_field", filename, buf_)
   {
   }
 
@@ -85,29 +89,26 @@ public:
 
   [[noreturn]] void fail_at(std::size_t offset, std::size_t line, const std::string& what) const
   {
-    std::ostringstream msg;
-    msg << "read_VTK_flow_field: " << file_ << ": ";
-    if (line != 0)
-      msg << "line " << line << ", ";
-    msg << "byte " << offset << ": " << what;
-    throw VTK_legacy_error(msg.str());
+    in_.fail_at(offset, line, what);
   }
-  [[noreturn]] void fail(const std::string& what) const { fail_at(pos_, line_, what); }
-  [[noreturn]] void fail_file(const std::string& what) const
+  [[noreturn]] void fail(const std::string& what) const { in_.fail(what); }
+  [[noreturn]] void fail_file(const std::string& what) const { in_.fail_file(what); }
+  // `fail_file` as a function object.
+  auto file_failure() const
   {
-    throw VTK_legacy_error("read_VTK_flow_field: " + file_ + ": " + what);
+    return [this](const std::string& what) { fail_file(what); };
   }
 
   // Pass 1: the header, the geometry and the position of every array.  `target` names the
   // field type being read, for the message when `dataset` is not one it reads.
   void parse(std::initializer_list<const char*> accepted, const char* target)
   {
-    const std::string_view first = read_line();
+    const std::string_view first = in_.read_line();
     if (lower(first).rfind("# vtk datafile version", 0) != 0)
       fail_at(0, 1,
               "not a legacy VTK file: the first line is '" + printable(first) +
                   "'; expected '# vtk DataFile Version x.x'");
-    read_line(); // the title, free text
+    in_.read_line(); // the title, free text
     const std::string format = upper(token("the format (ASCII or BINARY)"));
     if (format == "BINARY")
       binary = true;
@@ -134,11 +135,9 @@ public:
     bool have_dimensions = false;
     std::string key;
     for (;;) {
-      if (!next_token(key)) {
-        key.clear();
+      key = upper(in_.token());
+      if (key.empty())
         break;
-      }
-      key = upper(key);
       const int axis = key == "X_COORDINATES"   ? 0
                        : key == "Y_COORDINATES" ? 1
                        : key == "Z_COORDINATES" ? 2
@@ -166,13 +165,12 @@ public:
       }
       else if (key == "CELLS" && unstructured) {
         const std::size_t n = integer("CELLS"), size = integer("the CELLS size");
-        std::string next;
-        if (peek_token(next) && upper(next) == "OFFSETS") {
+        if (upper(in_.peek_token()) == "OFFSETS") {
           // VTK >= 9 (file version 5.1): n offsets (cells + 1) and `size` point indices.
           if (n == 0)
             fail("CELLS 0 " + std::to_string(size) +
                  ": the OFFSETS form needs the number of cells + 1 offsets");
-          next_token(next);
+          in_.token();
           offsets = geometry_array("OFFSETS", data_type("OFFSETS"), 1, n);
           expect_keyword("CONNECTIVITY");
           connectivity = geometry_array("CONNECTIVITY", data_type("CONNECTIVITY"), 1, size);
@@ -233,31 +231,30 @@ public:
         fail("unexpected keyword '" + key + "' before POINT_DATA or CELL_DATA");
       }
       else if (key == "SCALARS") {
-        const std::string name = token("the SCALARS name");
+        const std::string name(token("the SCALARS name"));
         const std::string type = data_type("SCALARS");
         std::size_t components = 1;
-        std::string next;
-        if (peek_token_on_line(next)) {
+        if (!in_.rest_of_line_blank() && !in_.peek_token().empty()) {
           components = integer("the SCALARS number of components");
           if (components < 1 || components > 4)
             fail("SCALARS '" + name + "' has " + std::to_string(components) + " components; expected 1 to 4");
         }
-        if (peek_token(next) && upper(next) == "LOOKUP_TABLE") {
-          next_token(next);
+        if (upper(in_.peek_token()) == "LOOKUP_TABLE") {
+          in_.token();
           token("the LOOKUP_TABLE name");
         }
         array("SCALARS", name, type, components, section_tuples_);
       }
       else if (key == "VECTORS" || key == "NORMALS") {
-        const std::string name = token(key + " name");
+        const std::string name(token(key + " name"));
         array(key, name, data_type(key.c_str()), 3, section_tuples_);
       }
       else if (key == "TENSORS" || key == "TENSORS6") {
-        const std::string name = token(key + " name");
+        const std::string name(token(key + " name"));
         array(key, name, data_type(key.c_str()), key == "TENSORS" ? 9 : 6, section_tuples_);
       }
       else if (key == "TEXTURE_COORDINATES") {
-        const std::string name = token("the TEXTURE_COORDINATES name");
+        const std::string name(token("the TEXTURE_COORDINATES name"));
         const std::size_t dim = integer("the TEXTURE_COORDINATES dimension");
         if (dim < 1 || dim > 3)
           fail("TEXTURE_COORDINATES '" + name + "' has dimension " + std::to_string(dim) +
@@ -265,14 +262,14 @@ public:
         array(key, name, data_type(key.c_str()), dim, section_tuples_);
       }
       else if (key == "COLOR_SCALARS") {
-        const std::string name = token("the COLOR_SCALARS name");
+        const std::string name(token("the COLOR_SCALARS name"));
         const std::size_t n = integer("the COLOR_SCALARS number of values");
         if (n < 1 || n > 4)
           fail("COLOR_SCALARS '" + name + "' has " + std::to_string(n) + " values; expected 1 to 4");
         array(key, name, binary ? "unsigned_char" : "float", n, section_tuples_);
       }
       else if (key == "LOOKUP_TABLE") {
-        const std::string name = token("the LOOKUP_TABLE name");
+        const std::string name(token("the LOOKUP_TABLE name"));
         const std::size_t n = integer("the LOOKUP_TABLE size");
         array(key, name, binary ? "unsigned_char" : "float", 4, n);
       }
@@ -284,10 +281,7 @@ public:
              "'; expected POINT_DATA, CELL_DATA, SCALARS, VECTORS, NORMALS, TENSORS, TEXTURE_COORDINATES, "
              "COLOR_SCALARS, LOOKUP_TABLE or FIELD");
       }
-      if (!next_token(key))
-        key.clear();
-      else
-        key = upper(key);
+      key = upper(in_.token());
     }
   }
 
@@ -368,9 +362,7 @@ public:
   {
     if (dataset == "UNSTRUCTURED_GRID")
       return "point " + std::to_string(node);
-    const std::size_t nx = dimensions[0], ny = dimensions[1];
-    return "node " + std::to_string(node) + " = (" + std::to_string(node % nx) + ", " +
-           std::to_string((node / nx) % ny) + ", " + std::to_string(node / (nx * ny)) + ")";
+    return "node " + Flow_aligned_surfaces::internal::grid_node_string(dimensions, node);
   }
 
   // The field types that read a dataset type, or null for the types no field reads.
@@ -403,29 +395,28 @@ public:
   decode(const VTK_legacy_array& a, const Out& out)
   {
     const std::size_t count = a.components * a.tuples;
-    pos_ = a.begin;
-    line_ = a.line;
+    in_.pos = a.begin;
+    in_.line = a.line;
     if (binary) {
       // Decoded in blocks that stay in the L1 cache, so that the block decoding is a tight loop.
       const std::size_t size = type_size(a.type);
       const Binary_type type = binary_type(a.type);
-      const unsigned char* data = reinterpret_cast<const unsigned char*>(buf_.data());
+      const unsigned char* data = reinterpret_cast<const unsigned char*>(in_.bytes().data());
       constexpr std::size_t block_size = 1024;
       double block[block_size];
       for (std::size_t i0 = 0; i0 < count; i0 += block_size) {
         const std::size_t m = count - i0 < block_size ? count - i0 : block_size;
         // Big-endian, as VTK's legacy writer writes, whatever the host.
         Flow_aligned_surfaces::internal::decode_binary_numbers(
-            type, Flow_aligned_surfaces::internal::Byte_order::BIG_ENDIAN_ORDER, data + pos_, m, block);
-        for (std::size_t j = 0; j < m; ++j, pos_ += size)
-          out(i0 + j, block[j], pos_, 0);
+            type, Flow_aligned_surfaces::internal::Byte_order::BIG_ENDIAN_ORDER, data + in_.pos, m, block);
+        for (std::size_t j = 0; j < m; ++j, in_.pos += size)
+          out(i0 + j, block[j], in_.pos, 0);
       }
     }
     else {
-      std::string_view t;
       for (std::size_t i = 0; i < count; ++i) {
-        next_view(t, a);
-        out(i, ascii_value(t, a), pos_ - t.size(), line_);
+        const std::string_view t = value_token(a);
+        out(i, ascii_value(t, a), in_.pos - t.size(), in_.line);
       }
     }
   }
@@ -436,100 +427,30 @@ public:
            std::to_string(dimensions[2]);
   }
 
+private:
+  typedef Flow_aligned_surfaces::internal::Text_cursor Text_cursor;
   static std::string upper(std::string_view s)
   {
-    std::string r(s);
-    for (char& c : r)
-      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return r;
+    return Text_cursor::upper(s);
   }
-
   static std::string lower(std::string_view s)
   {
-    std::string r(s);
-    for (char& c : r)
-      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return r;
+    return Text_cursor::lower(s);
   }
 
-private:
-  static bool is_space(char c)
+  // The next token of the values of `a`.
+  std::string_view value_token(const VTK_legacy_array& a)
   {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
-  }
-
-  std::string_view read_line()
-  {
-    const std::size_t start = pos_;
-    while (pos_ < buf_.size() && buf_[pos_] != '\n')
-      ++pos_;
-    std::string_view l(buf_.data() + start, pos_ - start);
-    if (pos_ < buf_.size()) {
-      ++pos_;
-      ++line_;
-    }
-    if (!l.empty() && l.back() == '\r')
-      l.remove_suffix(1);
-    return l;
-  }
-
-  void skip_space()
-  {
-    while (pos_ < buf_.size() && is_space(buf_[pos_])) {
-      if (buf_[pos_] == '\n')
-        ++line_;
-      ++pos_;
-    }
-  }
-
-  bool next_view(std::string_view& t)
-  {
-    skip_space();
-    const std::size_t start = pos_;
-    while (pos_ < buf_.size() && !is_space(buf_[pos_]))
-      ++pos_;
-    t = std::string_view(buf_.data() + start, pos_ - start);
-    return !t.empty();
-  }
-
-  void next_view(std::string_view& t, const VTK_legacy_array& a)
-  {
-    if (!next_view(t))
+    const std::string_view t = in_.token();
+    if (t.empty())
       fail("the file ends inside the values of " + label(a.kind, a.name));
+    return t;
   }
 
-  bool next_token(std::string& t)
+  std::string_view token(const std::string& what)
   {
-    std::string_view v;
-    if (!next_view(v))
-      return false;
-    t.assign(v);
-    return true;
-  }
-
-  bool peek_token(std::string& t)
-  {
-    const std::size_t p = pos_, l = line_;
-    const bool r = next_token(t);
-    pos_ = p;
-    line_ = l;
-    return r;
-  }
-
-  bool peek_token_on_line(std::string& t)
-  {
-    std::size_t p = pos_;
-    while (p < buf_.size() && (buf_[p] == ' ' || buf_[p] == '\t' || buf_[p] == '\r'))
-      ++p;
-    if (p >= buf_.size() || buf_[p] == '\n')
-      return false;
-    return peek_token(t);
-  }
-
-  std::string token(const std::string& what)
-  {
-    std::string t;
-    if (!next_token(t))
+    const std::string_view t = in_.token();
+    if (t.empty())
       fail("the file ends where " + what + " was expected (truncated file?)");
     return t;
   }
@@ -543,22 +464,12 @@ private:
 
   std::size_t integer(const char* what)
   {
-    const std::string t = token(std::string("a number of ") + what);
-    std::size_t v = 0;
-    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-    if (r.ec != std::errc() || r.ptr != t.data() + t.size())
-      fail("'" + printable(t) + "' is not a non-negative integer (" + what + ")");
-    return v;
+    return in_.count(token(std::string("a number of ") + what), what);
   }
 
   double real(const char* what)
   {
-    const std::string t = token(std::string("a number of ") + what);
-    double v = 0;
-    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-    if (r.ec != std::errc() || r.ptr != t.data() + t.size() || !std::isfinite(v))
-      fail("'" + printable(t) + "' is not a finite number (" + what + ")");
-    return v;
+    return in_.finite_number(token(std::string("a number of ") + what), what);
   }
 
   // Bytes per value in BINARY files (as VTK's legacy writer writes them), 0 if unknown.
@@ -597,7 +508,7 @@ private:
     token("the FIELD name");
     const std::size_t n = integer("FIELD arrays");
     for (std::size_t i = 0; i < n; ++i) {
-      const std::string name = token("a FIELD array name");
+      const std::string name(token("a FIELD array name"));
       if (upper(name) == "NULL_ARRAY")
         continue;
       const std::size_t components = integer("FIELD array components");
@@ -634,7 +545,7 @@ private:
   VTK_legacy_array skip_values(const std::string& kind, const std::string& name, const std::string& type,
                                std::size_t components, std::size_t tuples)
   {
-    const std::size_t left = buf_.size() - pos_;
+    const std::size_t left = in_.left();
     if (components != 0 && tuples > left / components)
       fail(label(kind, name) + " needs " + std::to_string(tuples) + " x " + std::to_string(components) +
            " values but only " + std::to_string(left) + " bytes are left (truncated file or wrong count)");
@@ -645,39 +556,36 @@ private:
     a.type = type;
     a.components = components;
     a.tuples = tuples;
-    a.header = pos_;
-    a.header_line = line_;
+    a.header = in_.pos;
+    a.header_line = in_.line;
     if (binary) {
       // The values start right after the end of the header line.
-      while (pos_ < buf_.size() && buf_[pos_] != '\n') {
-        if (!is_space(buf_[pos_]))
+      const std::string_view b = in_.bytes();
+      while (in_.pos < b.size() && b[in_.pos] != '\n') {
+        if (!Text_cursor::is_space(b[in_.pos]))
           fail("unexpected text after the header of " + label(kind, name));
-        ++pos_;
+        ++in_.pos;
       }
-      if (pos_ < buf_.size()) {
-        ++pos_;
-        ++line_;
-      }
+      in_.read_line(); // the end of the header line
       const std::size_t bytes = type == "bit" ? (count + 7) / 8 : count * type_size(type);
-      const std::size_t remaining = buf_.size() - pos_;
+      const std::size_t remaining = in_.left();
       if (bytes > remaining)
         fail(label(kind, name) + " (" + type + ") needs " + std::to_string(bytes) +
              " bytes of binary data but only " + std::to_string(remaining) +
              " are left (truncated file or wrong count)");
-      a.begin = pos_;
+      a.begin = in_.pos;
       a.line = 0;
-      pos_ += bytes;
+      in_.pos += bytes;
     }
     else {
       if (count > (left + 1) / 2)
         fail(label(kind, name) + " needs " + std::to_string(count) + " values but only " +
              std::to_string(left) + " bytes are left (truncated file or wrong count)");
-      skip_space();
-      a.begin = pos_;
-      a.line = line_;
-      std::string_view t;
+      in_.skip_space();
+      a.begin = in_.pos;
+      a.line = in_.line;
       for (std::size_t i = 0; i < count; ++i) {
-        next_view(t, a);
+        const std::string_view t = value_token(a);
         if (a.type != "bit")
           ascii_value(t, a);
       }
@@ -688,13 +596,12 @@ private:
   // VTK ≥ 8 may follow an array with METADATA and INFORMATION lines, ended by an empty line.
   void skip_metadata()
   {
-    std::string next;
-    if (!peek_token(next) || upper(next) != "METADATA")
+    if (upper(in_.peek_token()) != "METADATA")
       return;
-    next_token(next);
-    read_line();
-    while (pos_ < buf_.size()) {
-      const std::string_view l = read_line();
+    in_.token();
+    in_.read_line();
+    while (!in_.at_end()) {
+      const std::string_view l = in_.read_line();
       if (l.find_first_not_of(" \t\r") == std::string_view::npos)
         return;
     }
@@ -703,16 +610,8 @@ private:
   double ascii_value(std::string_view t, const VTK_legacy_array& a) const
   {
     double v = 0;
-    const char* b = t.data();
-    const char* e = b + t.size();
-    if (b != e && *b == '+')
-      ++b;
-    auto r = std::from_chars(b, e, v);
-    if (r.ec == std::errc::result_out_of_range)
-      v = (b != e && *b == '-') ? -std::numeric_limits<double>::infinity()
-                                : std::numeric_limits<double>::infinity();
-    else if (r.ec != std::errc() || r.ptr != e)
-      fail_at(pos_ - t.size(), line_,
+    if (!Text_cursor::parse_number(t, v))
+      fail_at(in_.pos - t.size(), in_.line,
               "'" + printable(t) + "' is not a number (in the values of " + label(a.kind, a.name) + ")");
     return v;
   }
@@ -743,9 +642,8 @@ private:
     return Binary_type::INT64;
   }
 
-  std::string file_;
   std::string buf_;
-  std::size_t pos_ = 0, line_ = 1;
+  Text_cursor in_; // reads `buf_`
   std::size_t section_tuples_ = 0;
   bool in_point_data_ = false, in_section_ = false;
 };
@@ -823,29 +721,18 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
     d.mask_name = mask->name;
     d.flags.resize(nodes);
     parser.decode(*mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-      if (std::isnan(v))
-        parser.fail_at(offset, line, "the mask '" + mask->name + "' is NaN at node " + std::to_string(i));
-      d.flags[i] = v != 0. ? 1 : 0;
+      d.flags[i] = Flow_aligned_surfaces::internal::checked_mask_flag(
+          v, mask->name, [&] { return "node " + std::to_string(i); },
+          [&](const std::string& what) { parser.fail_at(offset, line, what); });
     });
   }
   d.values.resize(3 * nodes);
   parser.decode(*velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
     const std::size_t node = i / 3;
-    const bool representable =
-        std::isfinite(v) && std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)());
-    if (!d.flags.empty() && d.flags[node] == 0) {
-      d.values[i] = representable ? static_cast<float>(v) : std::numeric_limits<float>::quiet_NaN();
-      return;
-    }
-    if (!representable) {
-      std::ostringstream msg;
-      msg << "the velocity '" << velocity->name << "' at " << parser.node_name(node) << ", component "
-          << i % 3 << ", is " << v
-          << (std::isfinite(v) ? ", which does not fit in a 32-bit float" : "; expected a finite number")
-          << (d.flags.empty() ? "" : " at a fluid node");
-      parser.fail_at(offset, line, msg.str());
-    }
-    d.values[i] = static_cast<float>(v);
+    d.values[i] = Flow_aligned_surfaces::internal::checked_velocity_component(
+        v, i % 3, d.flags.empty() || d.flags[node] != 0, !d.flags.empty(), velocity->name, "node",
+        [&] { return parser.node_name(node); },
+        [&](const std::string& what) { parser.fail_at(offset, line, what); });
   });
   // A solid node's value is never interpolated: one with a non-finite component is stored as
   // zero, as the grid fields' constructors do (and the cells field, which refuses non-finite
@@ -1040,26 +927,6 @@ read_unstructured_cells(VTK_legacy_parser& parser)
   return r;
 }
 
-// Removes every cell that touches a solid node (`fluid[p] == 0`).
-inline void remove_masked_cells(const VTK_legacy_parser& parser, const VTK_legacy_node_data& d,
-                                Flow_aligned_surfaces::internal::Structured_grid_cells& c)
-{
-  Flow_aligned_surfaces::internal::Structured_grid_cells kept;
-  kept.offsets.push_back(0);
-  for (std::size_t cell = 0; cell < c.cell_types.size(); ++cell) {
-    const auto b = c.connectivity.begin() + c.offsets[cell], e = c.connectivity.begin() + c.offsets[cell + 1];
-    if (std::any_of(b, e, [&](std::int64_t p) { return d.flags[static_cast<std::size_t>(p)] == 0; }))
-      continue;
-    kept.connectivity.insert(kept.connectivity.end(), b, e);
-    kept.offsets.push_back(static_cast<std::int64_t>(kept.connectivity.size()));
-    kept.cell_types.push_back(c.cell_types[cell]);
-  }
-  if (kept.cell_types.empty())
-    parser.fail_file("every one of the " + std::to_string(c.cell_types.size()) +
-                     " cells touches a solid node of the mask '" + d.mask_name + "'; no cell is left");
-  c = std::move(kept);
-}
-
 // Reads the file and builds the field; throw VTK_legacy_error with the message.
 template <class K>
 Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, const std::string* array_name,
@@ -1071,13 +938,10 @@ Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, c
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
-  try {
-    return Regular_grid_flow_field_3<K>(Point_3(parser.origin[0], parser.origin[1], parser.origin[2]),
-                                        Vector_3(parser.spacing[0], parser.spacing[1], parser.spacing[2]),
-                                        parser.dimensions, std::move(d.values), std::move(d.flags));
-  } catch (const std::invalid_argument& e) {
-    parser.fail_file(e.what());
-  }
+  return Flow_aligned_surfaces::internal::construct_field<Regular_grid_flow_field_3<K>>(
+      parser.file_failure(), Point_3(parser.origin[0], parser.origin[1], parser.origin[2]),
+      Vector_3(parser.spacing[0], parser.spacing[1], parser.spacing[2]), parser.dimensions,
+      std::move(d.values), std::move(d.flags));
 }
 
 template <class K>
@@ -1090,11 +954,8 @@ Rectilinear_grid_flow_field_3<K> read_VTK_legacy_rectilinear(const std::string& 
   parser.parse({"STRUCTURED_POINTS", "RECTILINEAR_GRID"}, "Rectilinear_grid_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   std::array<std::vector<double>, 3> x = grid_coordinates(parser);
-  try {
-    return Rectilinear_grid_flow_field_3<K>(std::move(x), std::move(d.values), std::move(d.flags));
-  } catch (const std::invalid_argument& e) {
-    parser.fail_file(e.what());
-  }
+  return Flow_aligned_surfaces::internal::construct_field<Rectilinear_grid_flow_field_3<K>>(
+      parser.file_failure(), std::move(x), std::move(d.values), std::move(d.flags));
 }
 
 template <class K>
@@ -1126,14 +987,14 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
     }
     cells = Flow_aligned_surfaces::internal::structured_grid_cells(parser.dimensions);
   }
-  if (!d.flags.empty())
-    remove_masked_cells(parser, d, cells);
-  try {
-    return Unstructured_flow_field_3<K>(points, std::move(cells.connectivity), std::move(cells.offsets),
-                                        std::move(cells.cell_types), std::move(d.values));
-  } catch (const std::invalid_argument& e) {
-    parser.fail_file(e.what());
-  }
+  const std::size_t all_cells = cells.cell_types.size();
+  if (!d.flags.empty() && Flow_aligned_surfaces::internal::remove_masked_cells(
+                              d.flags, cells.connectivity, cells.offsets, cells.cell_types) == 0)
+    parser.fail_file("every one of the " + std::to_string(all_cells) +
+                     " cells touches a solid node of the mask '" + d.mask_name + "'; no cell is left");
+  return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
+      parser.file_failure(), points, std::move(cells.connectivity), std::move(cells.offsets),
+      std::move(cells.cell_types), std::move(d.values));
 }
 
 // The public functions' common part: the named parameters, and the errors made `false` + message.
@@ -1141,30 +1002,10 @@ template <class Field, class NamedParameters, class Read>
 bool read_VTK_legacy(const std::string& filename, std::optional<Field>& field, const NamedParameters& np,
                      std::string* error, const Read& read)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const std::string array_name =
-      choose_parameter(get_parameter(np, Flow_aligned_surfaces::internal_np::array_name_t()), std::string());
-  const std::string mask_name = choose_parameter(
-      get_parameter(np, Flow_aligned_surfaces::internal_np::mask_array_name_t()), std::string());
-  constexpr bool has_array_name =
-      !parameters::is_default_parameter<NamedParameters,
-                                        Flow_aligned_surfaces::internal_np::array_name_t>::value;
-  constexpr bool has_mask_name =
-      !parameters::is_default_parameter<NamedParameters,
-                                        Flow_aligned_surfaces::internal_np::mask_array_name_t>::value;
-  try {
-    field.emplace(
-        read(filename, has_array_name ? &array_name : nullptr, has_mask_name ? &mask_name : nullptr));
-    return true;
-  } catch (const VTK_legacy_error& e) {
-    if (error)
-      *error = e.what();
-  } catch (const std::bad_alloc&) {
-    if (error)
-      *error = "read_VTK_flow_field: " + filename + ": not enough memory for the field";
-  }
-  return false;
+  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
+  return Flow_aligned_surfaces::internal::read_into("read_VTK_flow_field", filename, field, error, [&] {
+    return read(filename, names.array_name(), names.mask_name());
+  });
 }
 
 // The same into an existing field, assigned only on success.
@@ -1172,11 +1013,9 @@ template <class Field, class NamedParameters, class Read>
 bool read_VTK_legacy(const std::string& filename, Field& field, const NamedParameters& np, std::string* error,
                      const Read& read)
 {
-  std::optional<Field> result;
-  if (!read_VTK_legacy(filename, result, np, error, read))
-    return false;
-  field = std::move(*result);
-  return true;
+  return Flow_aligned_surfaces::internal::read_and_assign<Field>(field, [&](std::optional<Field>& result) {
+    return read_VTK_legacy(filename, result, np, error, read);
+  });
 }
 
 } // namespace internal

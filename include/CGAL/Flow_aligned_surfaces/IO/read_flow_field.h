@@ -17,6 +17,7 @@
 #endif
 #include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <cctype>
@@ -88,17 +89,6 @@ inline Flow_field_file_kind flow_field_file_kind(const std::string& filename, st
   return Flow_field_file_kind::UNKNOWN;
 }
 
-// Reads with `read(std::optional<Field>&)` and moves the result into the sampled field.
-template <class K, class Field, class Read>
-bool read_sampled(std::optional<Sampled_flow_field_3<K>>& field, const Read& read)
-{
-  std::optional<Field> result;
-  if (!read(result))
-    return false;
-  field.emplace(std::move(*result));
-  return true;
-}
-
 } // namespace internal
 /// \endcond
 
@@ -151,26 +141,26 @@ bool read_flow_field(const std::string& filename, std::optional<Sampled_flow_fie
   std::string head;
   switch (internal::flow_field_file_kind(filename, head)) {
   case internal::Flow_field_file_kind::LEGACY_UNIFORM_GRID:
-    return internal::read_sampled<K, Regular>(
+    return Flow_aligned_surfaces::internal::read_and_assign<Regular>(
         field, [&](std::optional<Regular>& f) { return read_VTK_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::LEGACY_RECTILINEAR_GRID:
-    return internal::read_sampled<K, Rectilinear>(
+    return Flow_aligned_surfaces::internal::read_and_assign<Rectilinear>(
         field, [&](std::optional<Rectilinear>& f) { return read_VTK_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::LEGACY_CELLS:
-    return internal::read_sampled<K, Cells>(
+    return Flow_aligned_surfaces::internal::read_and_assign<Cells>(
         field, [&](std::optional<Cells>& f) { return read_VTK_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::AMIRA_MESH:
-    return internal::read_sampled<K, Regular>(
+    return Flow_aligned_surfaces::internal::read_and_assign<Regular>(
         field, [&](std::optional<Regular>& f) { return read_AmiraMesh_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::NRRD_FILE:
-    return internal::read_sampled<K, Regular>(
+    return Flow_aligned_surfaces::internal::read_and_assign<Regular>(
         field, [&](std::optional<Regular>& f) { return read_NRRD_flow_field(filename, f, np, error); });
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_VTK
   case internal::Flow_field_file_kind::XML_IMAGE_DATA:
-    return internal::read_sampled<K, Regular>(
+    return Flow_aligned_surfaces::internal::read_and_assign<Regular>(
         field, [&](std::optional<Regular>& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::XML_CELLS:
-    return internal::read_sampled<K, Cells>(
+    return Flow_aligned_surfaces::internal::read_and_assign<Cells>(
         field, [&](std::optional<Cells>& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
 #else
   case internal::Flow_field_file_kind::XML_IMAGE_DATA:
@@ -208,9 +198,8 @@ bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field
                      const NamedParameters& np = CGAL::parameters::default_values(),
                      std::string* error = nullptr)
 {
-  return Flow_aligned_surfaces::internal::read_and_assign(
-      field,
-      [&](std::optional<Sampled_flow_field_3<K>>& f) { return read_flow_field(filename, f, np, error); });
+  return Flow_aligned_surfaces::internal::read_and_assign<Sampled_flow_field_3<K>>(
+      field, [&](auto& f) { return read_flow_field(filename, f, np, error); });
 }
 
 } // namespace IO

@@ -104,6 +104,25 @@ public:
     return buf_.substr(start, pos - start);
   }
 
+  /// The next token as `token()` would return it, without moving.
+  std::string_view peek_token()
+  {
+    const std::size_t p = pos, l = line;
+    const std::string_view t = token();
+    pos = p;
+    line = l;
+    return t;
+  }
+
+  /// Whether only spaces and tabs (and `\r`) are left on the current line; does not move.
+  bool rest_of_line_blank() const
+  {
+    std::size_t p = pos;
+    while (p < buf_.size() && (buf_[p] == ' ' || buf_[p] == '\t' || buf_[p] == '\r'))
+      ++p;
+    return p >= buf_.size() || buf_[p] == '\n';
+  }
+
   /// Parses `t` as a number; a value out of the range of `double` becomes an infinity.
   static bool parse_number(std::string_view t, double& v)
   {
@@ -148,6 +167,14 @@ public:
     std::string r(s);
     for (char& c : r)
       c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return r;
+  }
+
+  static std::string upper(std::string_view s)
+  {
+    std::string r(s);
+    for (char& c : r)
+      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return r;
   }
 

@@ -6,17 +6,17 @@
 // known byte) is decoded into the velocities v(i, j, k) ∈ R³ (32-bit floats) and the node mask
 // m(i, j, k) ∈ {0, 1} of a `Regular_grid_flow_field_3`, every value checked (a non-finite or
 // out-of-float-range velocity at a fluid node, a NaN mask value and a non-numeric token fail
-// with the node and the byte).  Also the public functions' common frame: the named array
-// parameters and the translation of the internal `Read_error` into `false` + message.
+// with the node and the byte).
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_UNIFORM_GRID_READING_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_UNIFORM_GRID_READING_H
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/internal/node_value_checks.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
 #include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
-#include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <array>
 #include <cmath>
@@ -95,81 +95,25 @@ Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const st
   if (mask != nullptr) {
     flags.resize(nodes);
     decode_grid_array(cursor, *mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-      if (std::isnan(v))
-        cursor.fail_at(offset, line, "the mask '" + mask->name + "' is NaN at node " + std::to_string(i));
-      flags[i] = v != 0. ? 1 : 0;
+      flags[i] = checked_mask_flag(
+          v, mask->name, [&] { return "node " + std::to_string(i); },
+          [&](const std::string& what) { cursor.fail_at(offset, line, what); });
     });
   }
   std::vector<float> values(3 * nodes);
   decode_grid_array(cursor, velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
     const std::size_t node = i / 3;
-    const bool representable =
-        std::isfinite(v) && std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)());
-    if (!flags.empty() && flags[node] == 0) {
-      // The constructor replaces a solid node's non-finite values by zeros.
-      values[i] = representable ? static_cast<float>(v) : std::numeric_limits<float>::quiet_NaN();
-      return;
-    }
-    if (!representable) {
-      std::ostringstream msg;
-      msg << "the velocity '" << velocity.name << "' at node " << node << " = (" << node % n[0] << ", "
-          << (node / n[0]) % n[1] << ", " << node / (n[0] * n[1]) << "), component " << i % 3 << ", is " << v
-          << (std::isfinite(v) ? ", which does not fit in a 32-bit float" : "; expected a finite number")
-          << (flags.empty() ? "" : " at a fluid node");
-      cursor.fail_at(offset, line, msg.str());
-    }
-    values[i] = static_cast<float>(v);
+    // The constructor replaces a solid node's non-finite values by zeros.
+    values[i] = checked_velocity_component(
+        v, i % 3, flags.empty() || flags[node] != 0, !flags.empty(), velocity.name, "node",
+        [&] { return "node " + grid_node_string(n, node); },
+        [&](const std::string& what) { cursor.fail_at(offset, line, what); });
   });
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
-  try {
-    return Regular_grid_flow_field_3<K>(Point_3(origin[0], origin[1], origin[2]),
-                                        Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values),
-                                        std::move(flags));
-  } catch (const std::invalid_argument& e) {
-    cursor.fail_file(e.what());
-  }
-}
-
-/// The value of the string parameter `Tag` of `np`, or nothing if `np` does not set it.
-template <class Tag, class NamedParameters>
-std::optional<std::string> string_parameter(const NamedParameters& np)
-{
-  if constexpr (parameters::is_default_parameter<NamedParameters, Tag>::value)
-    return std::nullopt;
-  else
-    return std::string(parameters::get_parameter(np, Tag()));
-}
-
-/// Runs `read()` (which returns the field or throws `Read_error`) into `field`; on failure
-/// leaves `field` untouched, writes the reason to `*error` (if not null) and returns `false`.
-template <class Field, class Read>
-bool read_into(const std::string& reader, const std::string& filename, std::optional<Field>& field,
-               std::string* error, const Read& read)
-{
-  try {
-    field.emplace(read());
-    return true;
-  } catch (const Read_error& e) {
-    if (error)
-      *error = e.what();
-  } catch (const std::bad_alloc&) {
-    if (error)
-      *error = reader + ": " + filename + ": not enough memory for the field";
-  }
-  return false;
-}
-
-/// The `Field&` overload of a reader from its `std::optional<Field>&` one, called as
-/// `read(result)`: `field` is assigned only on success.
-template <class Field, class Read_optional>
-bool read_and_assign(Field& field, const Read_optional& read)
-{
-  std::optional<Field> result;
-  if (!read(result))
-    return false;
-  field = std::move(*result);
-  return true;
+  return construct_field<Regular_grid_flow_field_3<K>>(
+      [&](const std::string& what) { cursor.fail_file(what); }, Point_3(origin[0], origin[1], origin[2]),
+      Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values), std::move(flags));
 }
 
 } // namespace internal

@@ -1,0 +1,103 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The frame that every public flow-field reader puts around its parser: the array names of
+// the named parameters (`array_name`, `mask_array_name`, each either given or not), the
+// translation of the internal `Read_error` (and of `std::bad_alloc`) into `false` + message
+// with the output untouched, and the `Field&` overload built on the `std::optional<Field>&`
+// one.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READER_SUPPORT_H
+#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READER_SUPPORT_H
+
+#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#include <new>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace internal {
+
+/// The value of the string parameter `Tag` of `np`, or nothing if `np` does not set it.
+template <class Tag, class NamedParameters>
+std::optional<std::string> string_parameter(const NamedParameters& np)
+{
+  if constexpr (parameters::is_default_parameter<NamedParameters, Tag>::value)
+    return std::nullopt;
+  else
+    return std::string(parameters::get_parameter(np, Tag()));
+}
+
+/// The velocity and mask array names that the named parameters give; unset where not given.
+struct Array_names {
+  std::optional<std::string> array, mask;
+  /// the velocity array's name, or null if not given
+  const std::string* array_name() const { return array ? &*array : nullptr; }
+  /// the mask array's name, or null if not given
+  const std::string* mask_name() const { return mask ? &*mask : nullptr; }
+};
+
+template <class NamedParameters>
+Array_names array_names(const NamedParameters& np)
+{
+  return Array_names{string_parameter<internal_np::array_name_t>(np),
+                     string_parameter<internal_np::mask_array_name_t>(np)};
+}
+
+/// `Field(args...)`; a `std::invalid_argument` by which the constructor refuses values that
+/// the reader did not check itself becomes `fail(its message)`, which throws a `Read_error`
+/// naming the file.
+template <class Field, class Fail, class... Args>
+Field construct_field(const Fail& fail, Args&&... args)
+{
+  try {
+    return Field(std::forward<Args>(args)...);
+  } catch (const std::invalid_argument& e) {
+    fail(std::string(e.what()));
+    throw;
+  }
+}
+
+/// Runs `read()` (which returns the field or throws `Read_error`) into `field`; on failure
+/// leaves `field` untouched, writes the reason to `*error` (if not null) and returns `false`.
+/// `reader` and `filename` name the message about a lack of memory.
+template <class Field, class Read>
+bool read_into(const std::string& reader, const std::string& filename, std::optional<Field>& field,
+               std::string* error, const Read& read)
+{
+  try {
+    field.emplace(read());
+    return true;
+  } catch (const Read_error& e) {
+    if (error)
+      *error = e.what();
+  } catch (const std::bad_alloc&) {
+    if (error)
+      *error = reader + ": " + filename + ": not enough memory for the field";
+  }
+  return false;
+}
+
+/// The `Field&` overload of a reader from its `std::optional<Field>&` one, called as
+/// `read(result)` with a `std::optional<Field>`: `target` (a `Field`, or anything assignable
+/// from one) is assigned only on success.
+template <class Field, class Target, class Read_optional>
+bool read_and_assign(Target& target, const Read_optional& read)
+{
+  std::optional<Field> result;
+  if (!read(result))
+    return false;
+  target = std::move(*result);
+  return true;
+}
+
+} // namespace internal
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READER_SUPPORT_H
