@@ -21,6 +21,7 @@
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/reserve_huge_pages.h>
 #include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -66,10 +67,12 @@ using Flow_aligned_surfaces::internal::printable;
 
 class VTK_legacy_parser {
 public:
-  VTK_legacy_parser(const std::string& filename, std::string contents)
-      : file_(filename), buf_(std::move(contents))
+  VTK_legacy_parser(const std::string& filename, Flow_aligned_surfaces::internal::File_contents contents)
+      : file_(filename), contents_(std::move(contents)), buf_(contents_.view())
   {
   }
+  VTK_legacy_parser(const VTK_legacy_parser&) = delete; // buf_ views contents_
+  VTK_legacy_parser& operator=(const VTK_legacy_parser&) = delete;
 
   std::array<std::size_t, 3> dimensions = {{0, 0, 0}};
   std::array<double, 3> origin = {{0., 0., 0.}}, spacing = {{1., 1., 1.}};
@@ -412,14 +415,18 @@ public:
       const unsigned char* data = reinterpret_cast<const unsigned char*>(buf_.data());
       constexpr std::size_t block_size = 1024;
       double block[block_size];
+      // A local offset, not the member: `out` storing bytes (the mask) could alias `pos_`, which
+      // would then be stored and reloaded per value.
+      std::size_t pos = pos_;
       for (std::size_t i0 = 0; i0 < count; i0 += block_size) {
         const std::size_t m = count - i0 < block_size ? count - i0 : block_size;
         // Big-endian, as VTK's legacy writer writes, whatever the host.
         Flow_aligned_surfaces::internal::decode_binary_numbers(
-            type, Flow_aligned_surfaces::internal::Byte_order::BIG_ENDIAN_ORDER, data + pos_, m, block);
-        for (std::size_t j = 0; j < m; ++j, pos_ += size)
-          out(i0 + j, block[j], pos_, 0);
+            type, Flow_aligned_surfaces::internal::Byte_order::BIG_ENDIAN_ORDER, data + pos, m, block);
+        for (std::size_t j = 0; j < m; ++j, pos += size)
+          out(i0 + j, block[j], pos, 0);
       }
+      pos_ = pos;
     }
     else {
       std::string_view t;
@@ -744,7 +751,8 @@ private:
   }
 
   std::string file_;
-  std::string buf_;
+  Flow_aligned_surfaces::internal::File_contents contents_;
+  std::string_view buf_; // contents_.view()
   std::size_t pos_ = 0, line_ = 1;
   std::size_t section_tuples_ = 0;
   bool in_point_data_ = false, in_section_ = false;
@@ -821,31 +829,35 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
   const std::size_t nodes = parser.nodes;
   if (mask != nullptr) {
     d.mask_name = mask->name;
+    Flow_aligned_surfaces::internal::reserve_huge_pages(d.flags, nodes);
     d.flags.resize(nodes);
+    unsigned char* flags = d.flags.data(); // a byte store through d.flags[i] could alias d.flags
     parser.decode(*mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
       if (std::isnan(v))
         parser.fail_at(offset, line, "the mask '" + mask->name + "' is NaN at node " + std::to_string(i));
-      d.flags[i] = v != 0. ? 1 : 0;
+      flags[i] = v != 0. ? 1 : 0;
     });
   }
+  Flow_aligned_surfaces::internal::reserve_huge_pages(d.values, 3 * nodes);
   d.values.resize(3 * nodes);
+  float* values = d.values.data();
   parser.decode(*velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-    const std::size_t node = i / 3;
-    const bool representable =
-        std::isfinite(v) && std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)());
-    if (!d.flags.empty() && d.flags[node] == 0) {
-      d.values[i] = representable ? static_cast<float>(v) : std::numeric_limits<float>::quiet_NaN();
+    // The common case first, without looking at the node or its mask.
+    if (std::isfinite(v) && std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)())) {
+      values[i] = static_cast<float>(v);
       return;
     }
-    if (!representable) {
-      std::ostringstream msg;
-      msg << "the velocity '" << velocity->name << "' at " << parser.node_name(node) << ", component "
-          << i % 3 << ", is " << v
-          << (std::isfinite(v) ? ", which does not fit in a 32-bit float" : "; expected a finite number")
-          << (d.flags.empty() ? "" : " at a fluid node");
-      parser.fail_at(offset, line, msg.str());
+    const std::size_t node = i / 3;
+    if (!d.flags.empty() && d.flags[node] == 0) {
+      values[i] = std::numeric_limits<float>::quiet_NaN();
+      return;
     }
-    d.values[i] = static_cast<float>(v);
+    std::ostringstream msg;
+    msg << "the velocity '" << velocity->name << "' at " << parser.node_name(node) << ", component " << i % 3
+        << ", is " << v
+        << (std::isfinite(v) ? ", which does not fit in a 32-bit float" : "; expected a finite number")
+        << (d.flags.empty() ? "" : " at a fluid node");
+    parser.fail_at(offset, line, msg.str());
   });
   // A solid node's value is never interpolated: one with a non-finite component is stored as
   // zero, as the grid fields' constructors do (and the cells field, which refuses non-finite
@@ -1065,8 +1077,8 @@ template <class K>
 Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, const std::string* array_name,
                                                   const std::string* mask_name)
 {
-  VTK_legacy_parser parser(
-      filename, Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field"));
+  VTK_legacy_parser parser(filename,
+                           Flow_aligned_surfaces::internal::File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"STRUCTURED_POINTS"}, "Regular_grid_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   typedef typename K::Point_3 Point_3;
@@ -1085,8 +1097,8 @@ Rectilinear_grid_flow_field_3<K> read_VTK_legacy_rectilinear(const std::string& 
                                                              const std::string* array_name,
                                                              const std::string* mask_name)
 {
-  VTK_legacy_parser parser(
-      filename, Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field"));
+  VTK_legacy_parser parser(filename,
+                           Flow_aligned_surfaces::internal::File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"STRUCTURED_POINTS", "RECTILINEAR_GRID"}, "Rectilinear_grid_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   std::array<std::vector<double>, 3> x = grid_coordinates(parser);
@@ -1101,8 +1113,8 @@ template <class K>
 Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, const std::string* array_name,
                                                    const std::string* mask_name)
 {
-  VTK_legacy_parser parser(
-      filename, Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field"));
+  VTK_legacy_parser parser(filename,
+                           Flow_aligned_surfaces::internal::File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"UNSTRUCTURED_GRID", "STRUCTURED_GRID", "RECTILINEAR_GRID", "STRUCTURED_POINTS"},
                "Unstructured_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
