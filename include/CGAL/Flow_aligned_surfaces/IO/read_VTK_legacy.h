@@ -831,8 +831,10 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
     d.mask_name = mask->name;
     Flow_aligned_surfaces::internal::reserve_huge_pages(d.flags, nodes);
     d.flags.resize(nodes);
-    unsigned char* flags = d.flags.data(); // a byte store through d.flags[i] could alias d.flags
-    parser.decode(*mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
+    // By value: a byte store through d.flags[i], or through a captured reference, could alias
+    // the pointer, which would then be reloaded per value.
+    unsigned char* flags = d.flags.data();
+    parser.decode(*mask, [&, flags](std::size_t i, double v, std::size_t offset, std::size_t line) {
       if (std::isnan(v))
         parser.fail_at(offset, line, "the mask '" + mask->name + "' is NaN at node " + std::to_string(i));
       flags[i] = v != 0. ? 1 : 0;
@@ -842,8 +844,8 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
   d.values.resize(3 * nodes);
   float* values = d.values.data();
   parser.decode(*velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-    // The common case first, without looking at the node or its mask.
-    if (std::isfinite(v) && std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)())) {
+    // The common case first, without looking at the node or its mask (false for NaN and infinities).
+    if (std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)())) {
       values[i] = static_cast<float>(v);
       return;
     }
