@@ -15,6 +15,7 @@
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/reserve_huge_pages.h>
 #include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -93,6 +94,7 @@ Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const st
   const std::size_t nodes = n[0] * n[1] * n[2];
   std::vector<unsigned char> flags;
   if (mask != nullptr) {
+    reserve_huge_pages(flags, nodes);
     flags.resize(nodes);
     decode_grid_array(cursor, *mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
       if (std::isnan(v))
@@ -100,25 +102,27 @@ Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const st
       flags[i] = v != 0. ? 1 : 0;
     });
   }
-  std::vector<float> values(3 * nodes);
+  std::vector<float> values;
+  reserve_huge_pages(values, 3 * nodes);
+  values.resize(3 * nodes);
   decode_grid_array(cursor, velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-    const std::size_t node = i / 3;
-    const bool representable =
-        std::isfinite(v) && std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)());
-    if (!flags.empty() && flags[node] == 0) {
-      // The constructor replaces a solid node's non-finite values by zeros.
-      values[i] = representable ? static_cast<float>(v) : std::numeric_limits<float>::quiet_NaN();
+    // The common case first, without looking at the node or its mask (false for NaN and infinities).
+    if (std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)())) {
+      values[i] = static_cast<float>(v);
       return;
     }
-    if (!representable) {
-      std::ostringstream msg;
-      msg << "the velocity '" << velocity.name << "' at node " << node << " = (" << node % n[0] << ", "
-          << (node / n[0]) % n[1] << ", " << node / (n[0] * n[1]) << "), component " << i % 3 << ", is " << v
-          << (std::isfinite(v) ? ", which does not fit in a 32-bit float" : "; expected a finite number")
-          << (flags.empty() ? "" : " at a fluid node");
-      cursor.fail_at(offset, line, msg.str());
+    const std::size_t node = i / 3;
+    if (!flags.empty() && flags[node] == 0) {
+      // The constructor replaces a solid node's non-finite values by zeros.
+      values[i] = std::numeric_limits<float>::quiet_NaN();
+      return;
     }
-    values[i] = static_cast<float>(v);
+    std::ostringstream msg;
+    msg << "the velocity '" << velocity.name << "' at node " << node << " = (" << node % n[0] << ", "
+        << (node / n[0]) % n[1] << ", " << node / (n[0] * n[1]) << "), component " << i % 3 << ", is " << v
+        << (std::isfinite(v) ? ", which does not fit in a 32-bit float" : "; expected a finite number")
+        << (flags.empty() ? "" : " at a fluid node");
+    cursor.fail_at(offset, line, msg.str());
   });
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
