@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -85,7 +86,8 @@ public:
 #if defined(CGAL_FLOW_ALIGNED_SURFACES_HAS_MMAP)
     const int fd = ::open(filename.c_str(), O_RDONLY | O_CLOEXEC);
     struct stat st;
-    if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+    if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 &&
+        static_cast<unsigned long long>(st.st_size) <= (std::numeric_limits<std::size_t>::max)()) {
       const std::size_t size = static_cast<std::size_t>(st.st_size);
       void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
       if (p != MAP_FAILED) {
