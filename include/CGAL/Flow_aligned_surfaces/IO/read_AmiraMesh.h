@@ -602,9 +602,8 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
                                                  const std::optional<std::string>& array_name,
                                                  const std::optional<std::string>& mask_name)
 {
-  const std::string contents =
-      Flow_aligned_surfaces::internal::read_file_contents(filename, "read_AmiraMesh_flow_field");
-  AmiraMesh_parser parser(filename, contents);
+  const Flow_aligned_surfaces::internal::File_contents contents(filename, "read_AmiraMesh_flow_field");
+  AmiraMesh_parser parser(filename, contents.view());
   parser.parse();
   const Flow_aligned_surfaces::internal::Text_cursor& in = parser.in;
 

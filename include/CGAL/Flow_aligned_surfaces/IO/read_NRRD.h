@@ -379,7 +379,8 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
                                             const std::optional<std::string>& mask_name)
 {
   namespace I = Flow_aligned_surfaces::internal;
-  const std::string contents = I::read_file_contents(filename, "read_NRRD_flow_field");
+  const I::File_contents file(filename, "read_NRRD_flow_field");
+  const std::string_view contents = file.view();
   NRRD_header header(filename, contents);
   header.parse();
   if (mask_name && !mask_name->empty())
@@ -390,19 +391,18 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
                         "' (its content field), not '" + *array_name + "'");
 
   // The data: attached after the header, or in the data file (relative to the header's folder).
-  std::string detached;
+  std::optional<I::File_contents> detached;
   std::string data_name = filename;
   std::size_t pos = header.data_start, line = header.data_line;
   if (!header.data_file.empty()) {
     data_name = header.data_file[0] == '/' ? header.data_file : NRRD_folder(filename) + header.data_file;
-    detached = I::read_file_contents(data_name, "read_NRRD_flow_field: " + filename + ": data file");
+    detached.emplace(data_name, "read_NRRD_flow_field: " + filename + ": data file");
     pos = 0;
     line = 1;
   }
   else if (header.data_start >= contents.size())
     header.in.fail_file("the file ends after the header: no data attached (and no 'data file' field)");
-  const std::string_view bytes =
-      header.data_file.empty() ? std::string_view(contents) : std::string_view(detached);
+  const std::string_view bytes = detached ? detached->view() : contents;
   // Messages about the data name both files.
   I::Text_cursor data("read_NRRD_flow_field",
                       header.data_file.empty() ? filename : filename + ": data file " + data_name, bytes);

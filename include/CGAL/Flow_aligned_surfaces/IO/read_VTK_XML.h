@@ -518,7 +518,7 @@ void read_VTK_point_arrays(const VTK_XML_context& c, vtkDataSet* ds, const std::
     velocity->GetTuple(static_cast<vtkIdType>(i), x);
     for (int d = 0; d < 3; ++d) {
       const float s = Flow_aligned_surfaces::internal::checked_velocity_component(
-          x[d], d, f.empty() || f[i] != 0, !f.empty(), velocity_name, "point",
+          x[d], std::size_t(d), [&] { return f.empty() || f[i] != 0; }, !f.empty(), velocity_name, "point",
           [&] { return "point " + where(i); }, [&](const std::string& what) { c.fail(what); });
       // Solid points' values are never interpolated; the fields' constructors want them finite.
       v[3 * i + d] = std::isnan(s) ? 0.f : s;

@@ -24,6 +24,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
 #include <CGAL/Flow_aligned_surfaces/internal/remove_masked_cells.h>
+#include <CGAL/Flow_aligned_surfaces/internal/reserve_huge_pages.h>
 #include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
 #include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
@@ -70,10 +71,12 @@ using Flow_aligned_surfaces::internal::printable;
 
 class VTK_legacy_parser {
 public:
-  VTK_legacy_parser(const std::string& filename, std::string contents)
-      : buf_(std::move(contents)), in_("read_VTK_flow_field", filename, buf_)
+  VTK_legacy_parser(const std::string& filename, Flow_aligned_surfaces::internal::File_contents contents)
+      : contents_(std::move(contents)), in_("read_VTK_flow_field", filename, contents_.view())
   {
   }
+  VTK_legacy_parser(const VTK_legacy_parser&) = delete; // in_ views contents_
+  VTK_legacy_parser& operator=(const VTK_legacy_parser&) = delete;
 
   std::array<std::size_t, 3> dimensions = {{0, 0, 0}};
   std::array<double, 3> origin = {{0., 0., 0.}}, spacing = {{1., 1., 1.}};
@@ -404,14 +407,18 @@ public:
       const unsigned char* data = reinterpret_cast<const unsigned char*>(in_.bytes().data());
       constexpr std::size_t block_size = 1024;
       double block[block_size];
+      // A local offset, not the cursor's: `out` storing bytes (the mask) could alias `in_.pos`,
+      // which would then be stored and reloaded per value.
+      std::size_t pos = in_.pos;
       for (std::size_t i0 = 0; i0 < count; i0 += block_size) {
         const std::size_t m = count - i0 < block_size ? count - i0 : block_size;
         // Big-endian, as VTK's legacy writer writes, whatever the host.
         Flow_aligned_surfaces::internal::decode_binary_numbers(
-            type, Flow_aligned_surfaces::internal::Byte_order::BIG_ENDIAN_ORDER, data + in_.pos, m, block);
-        for (std::size_t j = 0; j < m; ++j, in_.pos += size)
-          out(i0 + j, block[j], in_.pos, 0);
+            type, Flow_aligned_surfaces::internal::Byte_order::BIG_ENDIAN_ORDER, data + pos, m, block);
+        for (std::size_t j = 0; j < m; ++j, pos += size)
+          out(i0 + j, block[j], pos, 0);
       }
+      in_.pos = pos;
     }
     else {
       for (std::size_t i = 0; i < count; ++i) {
@@ -642,8 +649,8 @@ private:
     return Binary_type::INT64;
   }
 
-  std::string buf_;
-  Text_cursor in_; // reads `buf_`
+  Flow_aligned_surfaces::internal::File_contents contents_;
+  Text_cursor in_; // reads contents_.view()
   std::size_t section_tuples_ = 0;
   bool in_point_data_ = false, in_section_ = false;
 };
@@ -719,19 +726,24 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
   const std::size_t nodes = parser.nodes;
   if (mask != nullptr) {
     d.mask_name = mask->name;
+    Flow_aligned_surfaces::internal::reserve_huge_pages(d.flags, nodes);
     d.flags.resize(nodes);
-    parser.decode(*mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-      d.flags[i] = Flow_aligned_surfaces::internal::checked_mask_flag(
+    // By value: a byte store through d.flags[i], or through a captured reference, could alias
+    // the pointer, which would then be reloaded per value.
+    unsigned char* flags = d.flags.data();
+    parser.decode(*mask, [&, flags](std::size_t i, double v, std::size_t offset, std::size_t line) {
+      flags[i] = Flow_aligned_surfaces::internal::checked_mask_flag(
           v, mask->name, [&] { return "node " + std::to_string(i); },
           [&](const std::string& what) { parser.fail_at(offset, line, what); });
     });
   }
+  Flow_aligned_surfaces::internal::reserve_huge_pages(d.values, 3 * nodes);
   d.values.resize(3 * nodes);
+  float* values = d.values.data();
   parser.decode(*velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-    const std::size_t node = i / 3;
-    d.values[i] = Flow_aligned_surfaces::internal::checked_velocity_component(
-        v, i % 3, d.flags.empty() || d.flags[node] != 0, !d.flags.empty(), velocity->name, "node",
-        [&] { return parser.node_name(node); },
+    values[i] = Flow_aligned_surfaces::internal::checked_velocity_component(
+        v, i, [&] { return d.flags.empty() || d.flags[i / 3] != 0; }, !d.flags.empty(), velocity->name,
+        "node", [&] { return parser.node_name(i / 3); },
         [&](const std::string& what) { parser.fail_at(offset, line, what); });
   });
   // A solid node's value is never interpolated: one with a non-finite component is stored as
@@ -932,8 +944,8 @@ template <class K>
 Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, const std::string* array_name,
                                                   const std::string* mask_name)
 {
-  VTK_legacy_parser parser(
-      filename, Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field"));
+  VTK_legacy_parser parser(filename,
+                           Flow_aligned_surfaces::internal::File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"STRUCTURED_POINTS"}, "Regular_grid_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   typedef typename K::Point_3 Point_3;
@@ -949,8 +961,8 @@ Rectilinear_grid_flow_field_3<K> read_VTK_legacy_rectilinear(const std::string& 
                                                              const std::string* array_name,
                                                              const std::string* mask_name)
 {
-  VTK_legacy_parser parser(
-      filename, Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field"));
+  VTK_legacy_parser parser(filename,
+                           Flow_aligned_surfaces::internal::File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"STRUCTURED_POINTS", "RECTILINEAR_GRID"}, "Rectilinear_grid_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   std::array<std::vector<double>, 3> x = grid_coordinates(parser);
@@ -962,8 +974,8 @@ template <class K>
 Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, const std::string* array_name,
                                                    const std::string* mask_name)
 {
-  VTK_legacy_parser parser(
-      filename, Flow_aligned_surfaces::internal::read_file_contents(filename, "read_VTK_flow_field"));
+  VTK_legacy_parser parser(filename,
+                           Flow_aligned_surfaces::internal::File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"UNSTRUCTURED_GRID", "STRUCTURED_GRID", "RECTILINEAR_GRID", "STRUCTURED_POINTS"},
                "Unstructured_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);

@@ -38,20 +38,23 @@ unsigned char checked_mask_flag(double m, const std::string& name, const Where& 
   return m != 0. ? 1 : 0;
 }
 
-/// The float stored for `v`, component `c` of the velocity `name` at a node that is `fluid` or
-/// not: `v` if it is finite and fits in a float; else NaN at a solid node (the caller decides
-/// what a solid node holds) and `fail(message)` (which does not return) at a fluid node, with
-/// `where()` naming the node ("node 5 = (2, 1, 0)") and, if the grid has a mask (`masked`),
-/// the words "at a fluid `kind`".
-template <class Where, class Fail>
-float checked_velocity_component(double v, std::size_t c, bool fluid, bool masked, const std::string& name,
-                                 const char* kind, const Where& where, const Fail& fail)
+/// The float stored for `v`, the value `i` of the velocity `name` (component `i % 3` of its
+/// node), at a node that is fluid or not (`fluid()`): `v` if it is finite and fits in a float;
+/// else NaN at a solid node (the caller decides what a solid node holds) and `fail(message)`
+/// (which does not return) at a fluid node, with `where()` naming the node ("node 5 = (2, 1, 0)")
+/// and, if the grid has a mask (`masked`), the words "at a fluid `kind`".  The common case costs
+/// one comparison: the node, its mask and the component are looked at only for a bad value.
+template <class Is_fluid, class Where, class Fail>
+float checked_velocity_component(double v, std::size_t i, const Is_fluid& fluid, bool masked,
+                                 const std::string& name, const char* kind, const Where& where,
+                                 const Fail& fail)
 {
-  if (std::isfinite(v) && std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)()))
+  // False for NaN and infinities too.
+  if (std::fabs(v) <= static_cast<double>((std::numeric_limits<float>::max)()))
     return static_cast<float>(v);
-  if (fluid) {
+  if (fluid()) {
     std::ostringstream msg;
-    msg << "the velocity '" << name << "' at " << where() << ", component " << c << ", is " << v
+    msg << "the velocity '" << name << "' at " << where() << ", component " << i % 3 << ", is " << v
         << (std::isfinite(v) ? ", which does not fit in a 32-bit float" : "; expected a finite number");
     if (masked)
       msg << " at a fluid " << kind;

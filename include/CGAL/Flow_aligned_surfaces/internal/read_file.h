@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What every flow-field reader needs before it parses: the error it throws internally (turned
-// into `false` + message by its public function), the whole file as bytes, and tokens shown in
-// messages without control characters.
+// into `false` + message by its public function), the whole file as bytes (mapped into memory
+// where the system can, else read into a string), and tokens shown in messages without control
+// characters.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READ_FILE_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READ_FILE_H
@@ -12,9 +13,32 @@
 #include <cstddef>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
+
+// POSIX systems map the file instead of copying it (see File_contents).  Under AddressSanitizer
+// the file is copied into the heap, so that a parser reading past its end is reported (the tail
+// of a mapping's last page is readable and not checked).
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CGAL_FLOW_ALIGNED_SURFACES_NO_MMAP
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__)
+#define CGAL_FLOW_ALIGNED_SURFACES_NO_MMAP
+#endif
+#if !defined(CGAL_FLOW_ALIGNED_SURFACES_NO_MMAP) && (defined(__unix__) || defined(__APPLE__))
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#if defined(_POSIX_MAPPED_FILES) && _POSIX_MAPPED_FILES > 0
+#define CGAL_FLOW_ALIGNED_SURFACES_HAS_MMAP 1
+#endif
+#endif
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
@@ -36,7 +60,8 @@ inline std::string read_file_contents(const std::string& filename, const std::st
   is.seekg(0, std::ios::end);
   const std::streamoff size = is.tellg();
   if (size < 0)
-    throw Read_error(reader + ": " + filename + ": cannot determine the size of the file (not a regular file?)");
+    throw Read_error(reader + ": " + filename +
+                     ": cannot determine the size of the file (not a regular file?)");
   std::string contents;
   contents.resize(static_cast<std::size_t>(size));
   is.seekg(0, std::ios::beg);
@@ -45,6 +70,90 @@ inline std::string read_file_contents(const std::string& filename, const std::st
     throw Read_error(reader + ": " + filename + ": reading the file failed");
   return contents;
 }
+
+/// The bytes of a file, held for as long as the object lives: on POSIX systems a read-only
+/// private mapping of the file (no copy: the parsers decode straight from the page cache), else,
+/// or when the file cannot be mapped (not a regular file, empty, `mmap()` refused), its contents
+/// read by `read_file_contents()`, which then gives the same messages for files that cannot be
+/// read.  A file that another process shortens while it is mapped makes the reader's access past
+/// the new end fail with `SIGBUS`, and one changed in place is seen changing; the readers do not
+/// guard against either (nor does copying guard against a file changed while it is read).
+class File_contents {
+public:
+  /// Maps or reads `filename`; throws `Read_error` naming `reader` and the file if it cannot be read.
+  File_contents(const std::string& filename, const std::string& reader)
+  {
+#if defined(CGAL_FLOW_ALIGNED_SURFACES_HAS_MMAP)
+    const int fd = ::open(filename.c_str(), O_RDONLY | O_CLOEXEC);
+    struct stat st;
+    if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 &&
+        static_cast<unsigned long long>(st.st_size) <= (std::numeric_limits<std::size_t>::max)()) {
+      const std::size_t size = static_cast<std::size_t>(st.st_size);
+      void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+      if (p != MAP_FAILED) {
+        // The parsers read the file front to back: ask for read-ahead of all of it now.
+        ::madvise(p, size, MADV_SEQUENTIAL);
+        ::madvise(p, size, MADV_WILLNEED);
+        map_ = p;
+        size_ = size;
+      }
+    }
+    if (fd >= 0)
+      ::close(fd); // the mapping keeps the file
+    if (map_ != nullptr)
+      return;
+#endif
+    copy_ = read_file_contents(filename, reader);
+  }
+  File_contents(File_contents&& other) noexcept
+      : map_(std::exchange(other.map_, nullptr)), size_(std::exchange(other.size_, 0)),
+        copy_(std::move(other.copy_))
+  {
+  }
+  File_contents& operator=(File_contents&& other) noexcept
+  {
+    if (this != &other) {
+      release();
+      map_ = std::exchange(other.map_, nullptr);
+      size_ = std::exchange(other.size_, 0);
+      copy_ = std::move(other.copy_);
+    }
+    return *this;
+  }
+  File_contents(const File_contents&) = delete;
+  File_contents& operator=(const File_contents&) = delete;
+  ~File_contents()
+  {
+    release();
+  }
+
+  /// All the bytes of the file; valid while `*this` lives (and is not moved from).
+  std::string_view view() const
+  {
+    return map_ != nullptr ? std::string_view(static_cast<const char*>(map_), size_)
+                           : std::string_view(copy_);
+  }
+  /// Whether the bytes are a mapping of the file rather than a copy.
+  bool is_mapped() const
+  {
+    return map_ != nullptr;
+  }
+
+private:
+  void release()
+  {
+#if defined(CGAL_FLOW_ALIGNED_SURFACES_HAS_MMAP)
+    if (map_ != nullptr)
+      ::munmap(map_, size_);
+#endif
+    map_ = nullptr;
+    size_ = 0;
+  }
+
+  void* map_ = nullptr;
+  std::size_t size_ = 0;
+  std::string copy_;
+};
 
 /// A token shown in a message: at most 40 characters, non-printable bytes escaped as `\xNN`.
 inline std::string printable(std::string_view s)

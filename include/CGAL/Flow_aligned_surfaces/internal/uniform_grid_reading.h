@@ -16,6 +16,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/node_value_checks.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/internal/reserve_huge_pages.h>
 #include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
 
 #include <array>
@@ -93,6 +94,7 @@ Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const st
   const std::size_t nodes = n[0] * n[1] * n[2];
   std::vector<unsigned char> flags;
   if (mask != nullptr) {
+    reserve_huge_pages(flags, nodes);
     flags.resize(nodes);
     decode_grid_array(cursor, *mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
       flags[i] = checked_mask_flag(
@@ -100,13 +102,14 @@ Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const st
           [&](const std::string& what) { cursor.fail_at(offset, line, what); });
     });
   }
-  std::vector<float> values(3 * nodes);
+  std::vector<float> values;
+  reserve_huge_pages(values, 3 * nodes);
+  values.resize(3 * nodes);
   decode_grid_array(cursor, velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-    const std::size_t node = i / 3;
     // The constructor replaces a solid node's non-finite values by zeros.
     values[i] = checked_velocity_component(
-        v, i % 3, flags.empty() || flags[node] != 0, !flags.empty(), velocity.name, "node",
-        [&] { return "node " + grid_node_string(n, node); },
+        v, i, [&] { return flags.empty() || flags[i / 3] != 0; }, !flags.empty(), velocity.name, "node",
+        [&] { return "node " + grid_node_string(n, i / 3); },
         [&](const std::string& what) { cursor.fail_at(offset, line, what); });
   });
   typedef typename K::Point_3 Point_3;
