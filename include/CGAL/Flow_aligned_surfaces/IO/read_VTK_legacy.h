@@ -1129,8 +1129,15 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
   if (!d.flags.empty())
     remove_masked_cells(parser, d, cells);
   try {
-    return Unstructured_flow_field_3<K>(points, std::move(cells.connectivity), std::move(cells.offsets),
-                                        std::move(cells.cell_types), std::move(d.values));
+    // Float points stay float in the field (they were decoded as doubles, exactly).
+    if ((parser.dataset == "UNSTRUCTURED_GRID" || parser.dataset == "STRUCTURED_GRID") && parser.points &&
+        parser.points->type == "float")
+      return Unstructured_flow_field_3<K>(std::vector<float>(points.begin(), points.end()),
+                                          std::move(cells.connectivity), std::move(cells.offsets),
+                                          std::move(cells.cell_types), std::move(d.values));
+    return Unstructured_flow_field_3<K>(std::move(points), std::move(cells.connectivity),
+                                        std::move(cells.offsets), std::move(cells.cell_types),
+                                        std::move(d.values));
   } catch (const std::invalid_argument& e) {
     parser.fail_file(e.what());
   }
