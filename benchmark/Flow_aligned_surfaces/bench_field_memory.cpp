@@ -44,8 +44,8 @@ double heap_bytes()
   return double(m.uordblks) + double(m.hblkhd);
 }
 
-// `arrays`: the bytes of the arrays the field returns by reference (points(), vectors(),
-// connectivity(), offsets(), cell_types(), values(), mask()); the rest is the acceleration.
+// `arrays`: the bytes of the arrays the field returns (points(), vectors(), connectivity(),
+// offsets(), cell_types(), values(), mask()); the rest is the acceleration.
 void report(const char* name, double field, double arrays, double raw_legacy, double raw_51)
 {
   std::printf("| %s | %.1f | %.1f | %.1f | %.1f | %.2f | %s | %.1f | %.2f | %s |\n", name, field / 1e6,
@@ -64,12 +64,16 @@ void unstructured(bool tetrahedra)
     np = double(m.points.size() / 3);
     nc = double(m.types.size());
     refs = double(m.connectivity.size());
-    field.emplace(m.points, std::move(m.connectivity), std::move(m.offsets), std::move(m.types),
-                  std::move(m.vectors));
+    // Float points, as read from a legacy file with POINTS float; 64-bit indices as a reader
+    // that builds vtkIdType arrays passes them (the field narrows them to 32 bits).
+    field.emplace(std::vector<float>(m.points.begin(), m.points.end()), std::move(m.connectivity),
+                  std::move(m.offsets), std::move(m.types), std::move(m.vectors));
   }
   const double bytes = heap_bytes() - before;
-  const double arrays = 8. * double(field->points().capacity()) + 4. * double(field->vectors().capacity()) +
-                        8. * double(field->connectivity().capacity() + field->offsets().capacity()) +
+  const double point_bytes = field->points().float_data() != nullptr ? 4. : 8.;
+  const double arrays = point_bytes * double(field->points().size()) +
+                        4. * double(field->vectors().capacity()) +
+                        4. * double(field->connectivity().capacity() + field->offsets().capacity()) +
                         double(field->cell_types().capacity());
   const double raw_legacy = 24. * np + 4. * (nc + refs) + 4. * nc;
   const double raw_51 = 24. * np + 8. * (nc + 1) + 8. * refs + 4. * nc;

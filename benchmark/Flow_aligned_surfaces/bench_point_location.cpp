@@ -94,7 +94,7 @@ struct Peer {
 
   explicit Peer(const Field& f) : field(&f)
   {
-    const std::vector<double>& x = f.points();
+    const Field::Point_coordinates x = f.points();
     std::vector<Box_input> boxes;
     boxes.reserve(f.number_of_cells());
     neighbour_begin.push_back(0);
@@ -102,8 +102,8 @@ struct Peer {
       double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
       for (auto k = f.offsets()[c]; k < f.offsets()[c + 1]; ++k)
         for (int a = 0; a < 3; ++a) {
-          lo[a] = (std::min)(lo[a], x[3 * f.connectivity()[k] + a]);
-          hi[a] = (std::max)(hi[a], x[3 * f.connectivity()[k] + a]);
+          lo[a] = (std::min)(lo[a], x[3 * std::size_t(f.connectivity()[k]) + a]);
+          hi[a] = (std::max)(hi[a], x[3 * std::size_t(f.connectivity()[k]) + a]);
         }
       boxes.push_back(Box_input{std::uint32_t(c), Iso_cuboid_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2])});
       for (std::size_t n : f.face_neighbours(c))
@@ -144,8 +144,9 @@ Setup make_setup(bool tetrahedra)
 {
   Setup s;
   s.mesh = fas_bench::make_block_mesh(tetrahedra ? 55 : 100, tetrahedra);
-  s.field = std::make_unique<Field>(s.mesh.points, s.mesh.connectivity, s.mesh.offsets, s.mesh.types,
-                                    s.mesh.vectors);
+  // Float points, as a field read from a legacy file with POINTS float (the CFD data's layout).
+  s.field = std::make_unique<Field>(std::vector<float>(s.mesh.points.begin(), s.mesh.points.end()),
+                                    s.mesh.connectivity, s.mesh.offsets, s.mesh.types, s.mesh.vectors);
   s.peer = std::make_unique<Peer>(*s.field);
   for (const auto& x : fas_bench::coherent_queries(s.mesh, 4096, 256))
     s.coherent.emplace_back(x[0], x[1], x[2]);

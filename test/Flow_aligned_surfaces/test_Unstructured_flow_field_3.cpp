@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -127,8 +128,12 @@ struct Block {
     return v;
   }
 
-  Field field(std::vector<float> v) const
+  // With float_points, the points are given (and kept) as float.
+  Field field(std::vector<float> v, bool float_points = false) const
   {
+    if (float_points)
+      return Field(std::vector<float>(points.begin(), points.end()), connectivity, offsets, types,
+                   std::move(v));
     return Field(points, connectivity, offsets, types, std::move(v));
   }
 };
@@ -228,13 +233,14 @@ void expect_near(const Vector_3& v, const std::array<double, 3>& e, double tol, 
 // flat where the hexahedra's are bilinear): every point farther than the largest node move
 // from the undistorted block's boundary is inside, and every value returned, there or
 // anywhere in a box around the block, is exact.
-void check_linear_field_is_reproduced(int kind)
+void check_linear_field_is_reproduced(int kind, bool float_points = false)
 {
   std::mt19937 rng{static_cast<unsigned>(kind)};
   Block b({3, 4, 2}, distorted_grid(unsigned(kind)));
   b.fill(kind);
   const Linear_field f(rng);
-  const Field field = b.field(b.values(f));
+  const Field field = b.field(b.values(f), float_points);
+  ASSERT_EQ(field.points().float_data() != nullptr, float_points);
   const double lo[3] = {1., -2., 0.}, hi[3] = {2.5, 0., 1.};
   const double margin = 0.15; // > the largest node move, 1/8
   int found = 0;
@@ -265,6 +271,13 @@ TEST(UnstructuredFlowField3, LinearFieldIsReproducedOnTetrahedra)
 TEST(UnstructuredFlowField3, LinearFieldIsReproducedOnHexahedra)
 {
   check_linear_field_is_reproduced(12);
+}
+// The block's coordinates are multiples of 1/64, exact in float: float points give the same
+// exact answers.
+TEST(UnstructuredFlowField3, LinearFieldIsReproducedWithFloatPoints)
+{
+  for (int kind : {10, 12, 13, 14})
+    check_linear_field_is_reproduced(kind, true);
 }
 TEST(UnstructuredFlowField3, LinearFieldIsReproducedOnWedges)
 {
@@ -466,6 +479,12 @@ TEST(UnstructuredFlowField3, BadInputThrowsWithTheArgumentsName)
   const std::vector<float> vec(15, 1.f);
   EXPECT_NO_THROW(Field(pts, conn, offs, types, vec));
   EXPECT_NO_THROW(Field(std::vector<float>(pts.begin(), pts.end()), conn, {4, 8}, types, vec));
+  // 64-bit indices (VTK's vtkIdType) are accepted and narrowed; those beyond 32 bits refused.
+  std::vector<std::int64_t> conn64(conn.begin(), conn.end()), offs64(offs.begin(), offs.end());
+  EXPECT_EQ(Field(pts, conn64, offs64, types, vec).connectivity(), conn);
+  conn64[5] = std::int64_t(1) << 31;
+  expect_invalid_argument([&] { Field(pts, conn64, offs64, types, vec); },
+                          {"connectivity[5]", "2147483648", "2^31"});
 
   std::vector<double> p7(pts.begin(), pts.begin() + 7);
   expect_invalid_argument([&] { Field(p7, conn, offs, types, vec); }, {"points.size()", "7"});
@@ -503,7 +522,7 @@ TEST(UnstructuredFlowField3, CopiesShareStorage)
   EXPECT_EQ(field.vectors().data(), data);
   const Field copy = field;
   EXPECT_EQ(copy.vectors().data(), data);
-  EXPECT_EQ(copy.points().data(), field.points().data());
+  EXPECT_EQ(copy.points().double_data(), field.points().double_data());
   EXPECT_EQ(copy.connectivity().data(), field.connectivity().data());
   EXPECT_EQ(copy.number_of_cells(), 48u);
   EXPECT_EQ(*copy(Point_3(0.5, 1.5, 0.25)), Vector_3(1, 2, 3));

@@ -46,11 +46,12 @@ namespace Flow_aligned_surfaces {
 /// - `13` wedge: triangle `0 1 2`, triangle `3 4 5`, edges `0-3`, `1-4`, `2-5`;
 /// - `14` pyramid: quadrilateral base `0 1 2 3` in order, apex `4`.
 ///
-/// A point is located in two steps: first a walk from the cell that answered the previous
-/// query of the same thread on the same field (the hint), each step crossing the face through
-/// which the cell's inverted map says the point lies outside, then the hint's face neighbours,
-/// then the cells whose bounding boxes cover the point's bucket in a uniform grid of buckets
-/// over the mesh.  A cell
+/// A point is located with a bounding volume hierarchy: a complete binary tree of float boxes
+/// (rounded outwards) whose leaves hold 8 cells each, built top down by splitting the cells at
+/// the median of their bounding boxes' centres along the longest axis.  A query first tries the cell that answered the previous query of
+/// the same thread on the same field (the hint, with its parametric position as Newton's
+/// start), then the hint's leaf, then the sibling subtrees on the way from the hint's leaf to
+/// the root, nearest first, so that a coherent query stays near the bottom of the tree.  A cell
 /// contains `p` when the Newton inversion of its isoparametric map converges and the parametric
 /// coordinates lie in the reference cell up to `1e-10` (so that points on shared faces and on
 /// the mesh boundary are inside; points outside the bounding box of the points never are).
@@ -61,10 +62,12 @@ namespace Flow_aligned_surfaces {
 /// The hint is kept in a `thread_local` cache, one entry per thread, keyed by the field's
 /// shared storage: `operator()` is `const` and safe to call from several threads at once, a
 /// copy shares the hint of its original, and a thread alternating between two fields only
-/// loses the hint.  A stale hint costs one rejected candidate, never a wrong answer.
+/// loses the hint.  A stale hint costs one rejected box, never a wrong answer.
 ///
-/// Copies share the arrays and the acceleration structures (through `std::shared_ptr`), so
-/// copying a field is cheap.  A query performs no allocation.
+/// Memory: the arrays as given (points in the precision given, 32-bit indices), plus 4 bytes
+/// per cell for the cells' order in the leaves and 2 float boxes (48 bytes) per leaf, about 10 bytes per cell
+/// in all.  Copies share the arrays and the hierarchy (through `std::shared_ptr`), so copying a
+/// field is cheap.  A query performs no allocation.
 ///
 /// \tparam GeomTraits a model of `Kernel`; the coordinates are converted to `double` with
 ///         `CGAL::to_double()`.
@@ -84,8 +87,9 @@ public:
   typedef typename GeomTraits::Point_3 Point_3;
   /// The vector type.
   typedef typename GeomTraits::Vector_3 Vector_3;
-  /// The type of point indices in `connectivity` and of positions in `offsets` (VTK's `vtkIdType`).
-  typedef std::int64_t Index;
+  /// The type of point indices in `connectivity` and of positions in `offsets`: meshes have
+  /// fewer than 2^31 points and connectivity entries.
+  typedef std::int32_t Index;
 
   /// The supported VTK cell types.
   enum Cell_type : unsigned char {
@@ -94,6 +98,26 @@ public:
     WEDGE = 13,      ///< VTK_WEDGE, 6 points
     PYRAMID = 14     ///< VTK_PYRAMID, 5 points
   };
+
+  /// A read-only view of the point coordinates, `x, y, z` per point, in the precision they were
+  /// given in (exactly one of `float_data()` and `double_data()` is not null).
+  class Point_coordinates {
+  public:
+    /// three times the number of points
+    std::size_t size() const { return f_ != nullptr ? f_->size() : d_->size(); }
+    /// coordinate `i % 3` of point `i / 3`, converted to `double`
+    double operator[](std::size_t i) const { return f_ != nullptr ? double((*f_)[i]) : (*d_)[i]; }
+    /// the coordinates if they were given as `float`, else null
+    const float* float_data() const { return f_ != nullptr ? f_->data() : nullptr; }
+    /// the coordinates if they were given as `double`, else null
+    const double* double_data() const { return f_ != nullptr ? nullptr : d_->data(); }
+
+  private:
+    friend class Unstructured_flow_field_3;
+    Point_coordinates(const std::vector<float>* f, const std::vector<double>* d) : f_(f), d_(d) {}
+    const std::vector<float>* f_;
+    const std::vector<double>* d_;
+  };
   /// @}
 
   /// \name Creation
@@ -101,7 +125,8 @@ public:
 
   /// creates the field from the arrays of a VTK unstructured grid.
   ///
-  /// \tparam Real `float` or `double`
+  /// \tparam Real `float` or `double`: the points are kept in this precision (the
+  ///         interpolation computes in `double`)
   ///
   /// \param points the coordinates, `x, y, z` per point
   /// \param connectivity the point indices of all cells, cell after cell
@@ -110,30 +135,44 @@ public:
   ///        `vtkCellArray` and legacy `OFFSETS`), or `number_of_cells` entries giving where
   ///        each cell ends (the `offsets` array of `.vtu` files)
   /// \param cell_types one VTK cell type per cell, each one of `Cell_type`
+  /// \param vectors the velocities, `x, y, z` per point
   ///
-  /// `connectivity`, `offsets`, `cell_types` and `vectors` are kept as given (moved into
-  /// the shared storage): pass them with `std::move()` to avoid copies.  `points` is converted
-  /// to `double`.
-  /// \param vectors the velocities, `x, y, z` per point; pass it with `std::move()` to avoid
-  ///        a copy
+  /// All the arrays are kept as given (moved into the shared storage): pass them with
+  /// `std::move()` to avoid copies.
   ///
   /// \throws std::invalid_argument naming the faulty argument and index, with the expected and
-  ///         actual values, if there is no cell, a size is wrong, an offset decreases, a cell
-  ///         has the wrong number of points for its type, a point index is out of range, a cell
-  ///         type is not supported, or a coordinate or velocity is not finite.
+  ///         actual values, if there is no cell, a size is wrong, there are 2^31 points or
+  ///         connectivity entries or more, an offset decreases, a cell has the wrong number of
+  ///         points for its type, a point index is out of range, a cell type is not supported,
+  ///         or a coordinate or velocity is not finite.
   template <typename Real>
-  Unstructured_flow_field_3(const std::vector<Real>& points, std::vector<Index> connectivity,
+  Unstructured_flow_field_3(std::vector<Real> points, std::vector<Index> connectivity,
                             std::vector<Index> offsets, std::vector<unsigned char> cell_types,
                             std::vector<float> vectors)
   {
-    static_assert(std::is_floating_point<Real>::value, "points must hold float or double coordinates");
+    static_assert(std::is_same<Real, float>::value || std::is_same<Real, double>::value,
+                  "points must hold float or double coordinates");
     auto s = std::make_shared<Storage>();
-    validate_and_store(*s, points, std::move(connectivity), std::move(offsets), std::move(cell_types),
-                       std::move(vectors));
-    build_bounding_boxes(*s);
-    build_buckets(*s);
-    build_neighbours(*s);
+    validate_and_store(*s, std::move(points), std::move(connectivity), std::move(offsets),
+                       std::move(cell_types), std::move(vectors));
+    build_hierarchy(*s);
     storage_ = std::move(s);
+  }
+
+  /// creates the field from 64-bit `connectivity` and `offsets` (VTK's `vtkIdType`), converted
+  /// to `Index`; otherwise as the constructor above.
+  /// \tparam Real `float` or `double`
+  /// \tparam Int `std::int64_t` (a template parameter only so that braced lists of indices
+  ///         choose the constructor above)
+  /// \throws std::invalid_argument as above, and if an entry does not fit in `Index`.
+  template <typename Real, typename Int,
+            typename std::enable_if<std::is_same<Int, std::int64_t>::value, int>::type = 0>
+  Unstructured_flow_field_3(std::vector<Real> points, const std::vector<Int>& connectivity,
+                            const std::vector<Int>& offsets, std::vector<unsigned char> cell_types,
+                            std::vector<float> vectors)
+      : Unstructured_flow_field_3(std::move(points), narrow(connectivity, "connectivity"),
+                                  narrow(offsets, "offsets"), std::move(cell_types), std::move(vectors))
+  {
   }
 
   /// @}
@@ -171,7 +210,7 @@ public:
     CGAL_precondition(cell < number_of_cells());
     const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     Hit hit;
-    if (!try_cell(cell, x, hit))
+    if (!try_cell(*storage_, cell, x, hit))
       return std::nullopt;
     return interpolate(hit);
   }
@@ -182,7 +221,7 @@ public:
   /// @{
 
   /// the number of points
-  std::size_t number_of_points() const { return storage_->points.size() / 3; }
+  std::size_t number_of_points() const { return storage_->vectors.size() / 3; }
   /// the number of cells
   std::size_t number_of_cells() const { return storage_->cell_types.size(); }
   /// the bounding box of the points
@@ -191,8 +230,11 @@ public:
     const double* b = storage_->bbox;
     return Bbox_3(b[0], b[1], b[2], b[3], b[4], b[5]);
   }
-  /// the point coordinates, `x, y, z` per point, converted to `double`
-  const std::vector<double>& points() const { return storage_->points; }
+  /// the point coordinates, `x, y, z` per point, in the precision given to the constructor
+  Point_coordinates points() const
+  {
+    return Point_coordinates(float_points(*storage_), &storage_->double_points);
+  }
   /// the velocities, `x, y, z` per point
   const std::vector<float>& vectors() const { return storage_->vectors; }
   /// the point indices of all cells, cell after cell
@@ -202,67 +244,86 @@ public:
   const std::vector<Index>& offsets() const { return storage_->offsets; }
   /// the VTK cell types
   const std::vector<unsigned char>& cell_types() const { return storage_->cell_types; }
-  /// the cells sharing a face with cell `cell` (conforming faces with exactly the same points)
+  /// the cells sharing a face with cell `cell` (conforming faces with exactly the same points),
+  /// in the order of the cell's faces; computed on each call (from the hierarchy).
   /// \pre `cell < number_of_cells()`
   std::vector<std::size_t> face_neighbours(std::size_t cell) const
   {
     CGAL_precondition(cell < number_of_cells());
+    const Storage& s = *storage_;
+    double box[6];
+    cell_box(s, cell, box);
+    std::vector<std::size_t> candidates;
+    visit_leaves(s, box, [&](std::size_t leaf) {
+      for (std::size_t k = leaf_begin(s, leaf); k < leaf_end(s, leaf); ++k)
+        if (std::size_t(s.order[k]) != cell)
+          candidates.push_back(std::size_t(s.order[k]));
+    });
     std::vector<std::size_t> r;
-    const std::uint32_t* n = storage_->neighbour.data() + storage_->face_stride * cell;
-    for (std::size_t f = 0; f < storage_->face_stride; ++f)
-      if (n[f] != no_cell)
-        r.push_back(n[f]);
+    const int nf = number_of_faces(s.cell_types[cell]);
+    for (int f = 0; f < nf; ++f) {
+      const std::array<Index, 4> key = face_key(s, cell, f);
+      for (std::size_t c : candidates) {
+        bool shared = false;
+        for (int g = 0; g < number_of_faces(s.cell_types[c]) && !shared; ++g)
+          shared = face_key(s, c, g) == key;
+        if (shared) {
+          r.push_back(c);
+          break;
+        }
+      }
+    }
     return r;
   }
 
   /// @}
 
 private:
-  // The neighbour across a boundary face; cell indices are below it (checked on creation).
-  static constexpr std::uint32_t no_cell = (std::numeric_limits<std::uint32_t>::max)();
   // Parametric tolerance of the inside test: dimensionless, far above the rounding of a Newton
   // solution (~1e-15 for well-shaped cells) so that a point on a shared face is inside both
   // cells, and far below any distance that matters for sampling a flow.
   static constexpr double inside_tolerance = 1e-10;
-  // The longest walk from the hint before the bucket grid is asked; coherent queries move by a
-  // fraction of a cell, so they need one or two steps.
-  static constexpr int max_walk_steps = 8;
+  // Cells per leaf of the hierarchy: 8 is ~10 bytes per cell in all (order + boxes) and a
+  // leaf's cells are about a 2 x 2 x 2 block, which usually holds the next cell of a coherent
+  // query.
+  static constexpr std::size_t leaf_size = 8;
 
   struct Storage {
-    std::vector<double> points;
+    // The points: exactly one of the two is not empty (float_points also when there is none).
+    std::vector<float> float_points;
+    std::vector<double> double_points;
     std::vector<float> vectors;
     std::vector<Index> connectivity, offsets;
     std::vector<unsigned char> cell_types;
-    // Per cell: xmin, ymin, zmin, xmax, ymax, zmax, rounded outwards to float.
-    std::vector<float> cell_bbox;
     double bbox[6];
-    // Bucket grid: cell lists per bucket in CSR form.
-    double bucket_lo[3], bucket_inv_h[3];
-    std::size_t bucket_n[3];
-    std::vector<std::uint32_t> bucket_begin, bucket_cells;
-    // Per cell face, the cell across it (or no_cell): face f of cell c (in the numbering of
-    // faces_of()) at neighbour[face_stride * c + f]; face_stride is the largest number of faces
-    // of the mesh's cell types (unused slots are no_cell).
-    std::size_t face_stride = 0;
-    std::vector<std::uint32_t> neighbour;
+    // The hierarchy.  order: the cells in the order of the leaves; leaf l (in
+    // left-to-right order) holds order[leaf_size l, leaf_size (l + 1)).  The 2 L - 1 nodes of
+    // the tree over the L leaves are a complete binary tree in heap order (children of i at
+    // 2 i + 1 and 2 i + 2; the leaves are the nodes L - 1 ... 2 L - 2; those on the deepest
+    // level, from first_deepest on, are the leftmost); node_box: 6 floats per node, xmin,
+    // ymin, zmin, xmax, ymax, zmax, rounded outwards.
+    std::vector<Index> order;
+    std::size_t leaves = 0, first_deepest = 0;
+    std::vector<float> node_box;
   };
 
   struct Hit {
-    std::size_t cell = 0;
+    std::size_t cell = 0, leaf = 0; // leaf: the tree node holding the cell
     int n = 0;
     double N[8];
-    // The parametric coordinates of the last inversion: where the point is when it was found,
-    // else where Newton ended outside the reference cell if finite (xi_valid; the walk's
-    // direction).
-    bool xi_valid = false;
-    double xi[3];
+    double xi[3]; // the parametric coordinates of the point in the cell
   };
 
   struct Hint {
     const Storage* owner = nullptr;
-    std::size_t cell = 0;
+    std::size_t cell = 0, leaf = 0;
     double xi[3]; // where the last query was found in `cell`: Newton's start for the next one
   };
+
+  static const std::vector<float>* float_points(const Storage& s)
+  {
+    return s.double_points.empty() ? &s.float_points : nullptr;
+  }
 
   static const char* type_name(unsigned char t)
   {
@@ -296,8 +357,11 @@ private:
     }
   }
 
-  // Faces in VTK's local numbering; triangles end with -1.
-  static int faces_of(unsigned char t, const std::array<int, 4>*& f)
+  static int number_of_faces(unsigned char t) { return t == TETRA ? 4 : t == HEXAHEDRON ? 6 : 5; }
+
+  // The point indices of face f of cell c (VTK's local numbering), sorted, a triangle padded
+  // with -1 in front: the same for the two cells sharing the face.
+  static std::array<Index, 4> face_key(const Storage& s, std::size_t c, int f)
   {
     static const std::array<int, 4> tet[4] = {{0, 1, 3, -1}, {1, 2, 3, -1}, {2, 0, 3, -1}, {0, 2, 1, -1}};
     static const std::array<int, 4> hex[6] = {{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4},
@@ -306,20 +370,17 @@ private:
         {0, 1, 2, -1}, {3, 5, 4, -1}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}};
     static const std::array<int, 4> pyramid[5] = {
         {0, 3, 2, 1}, {0, 1, 4, -1}, {1, 2, 4, -1}, {2, 3, 4, -1}, {3, 0, 4, -1}};
-    switch (t) {
-    case TETRA:
-      f = tet;
-      return 4;
-    case HEXAHEDRON:
-      f = hex;
-      return 6;
-    case WEDGE:
-      f = wedge;
-      return 5;
-    default:
-      f = pyramid;
-      return 5;
-    }
+    const unsigned char t = s.cell_types[c];
+    const std::array<int, 4>& local = (t == TETRA        ? tet
+                                       : t == HEXAHEDRON ? hex
+                                       : t == WEDGE      ? wedge
+                                                         : pyramid)[f];
+    const Index* v = s.connectivity.data() + s.offsets[c];
+    std::array<Index, 4> key;
+    for (int k = 0; k < 4; ++k)
+      key[k] = local[k] < 0 ? Index(-1) : v[local[k]];
+    std::sort(key.begin(), key.end());
+    return key;
   }
 
   [[noreturn]] static void fail(const std::string& what)
@@ -327,8 +388,28 @@ private:
     throw std::invalid_argument("Unstructured_flow_field_3: " + what);
   }
 
+  static constexpr std::size_t max_entries = std::size_t((std::numeric_limits<Index>::max)());
+
+  static std::vector<Index> narrow(const std::vector<std::int64_t>& a, const char* name)
+  {
+    std::ostringstream msg;
+    if (a.size() > max_entries) {
+      msg << name << ".size() is " << a.size() << "; at most " << max_entries << " entries are supported";
+      fail(msg.str());
+    }
+    std::vector<Index> r(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      if (a[i] < (std::numeric_limits<Index>::min)() || a[i] > (std::numeric_limits<Index>::max)()) {
+        msg << name << "[" << i << "] is " << a[i] << "; expected a value below 2^31 (32-bit indices)";
+        fail(msg.str());
+      }
+      r[i] = static_cast<Index>(a[i]);
+    }
+    return r;
+  }
+
   template <typename Real>
-  static void validate_and_store(Storage& s, const std::vector<Real>& points, std::vector<Index> connectivity,
+  static void validate_and_store(Storage& s, std::vector<Real> points, std::vector<Index> connectivity,
                                  std::vector<Index> offsets, std::vector<unsigned char> cell_types,
                                  std::vector<float> vectors)
   {
@@ -338,6 +419,15 @@ private:
       fail(msg.str());
     }
     const std::size_t np = points.size() / 3;
+    if (np > max_entries) {
+      msg << "there are " << np << " points; at most " << max_entries << " are supported (32-bit indices)";
+      fail(msg.str());
+    }
+    if (connectivity.size() > max_entries) {
+      msg << "connectivity.size() is " << connectivity.size() << "; at most " << max_entries
+          << " entries are supported (32-bit offsets)";
+      fail(msg.str());
+    }
     if (vectors.size() != points.size()) {
       msg << "vectors.size() is " << vectors.size() << " but there are " << np << " points; expected "
           << points.size() << " (x, y, z per point)";
@@ -346,11 +436,6 @@ private:
     const std::size_t nc = cell_types.size();
     if (nc == 0)
       fail("cell_types is empty; expected at least one cell");
-    if (nc > (std::numeric_limits<std::uint32_t>::max)() - 1) {
-      msg << "cell_types.size() is " << nc << "; at most " << (std::numeric_limits<std::uint32_t>::max)() - 1
-          << " cells are supported";
-      fail(msg.str());
-    }
     if (offsets.size() == nc) {
       offsets.insert(offsets.begin(), Index(0)); // .vtu form: the ends of the cells
     }
@@ -375,10 +460,10 @@ private:
             << "; expected 10 (tetrahedron), 12 (hexahedron), 13 (wedge) or 14 (pyramid)";
         fail(msg.str());
       }
-      if (offsets[c + 1] - offsets[c] != n) {
+      if (std::int64_t(offsets[c + 1]) - std::int64_t(offsets[c]) != n) {
         msg << "cell " << c << " (a " << type_name(cell_types[c]) << ") has offsets[" << c
             << "] = " << offsets[c] << " and offsets[" << c + 1 << "] = " << offsets[c + 1] << ", so "
-            << offsets[c + 1] - offsets[c] << " points; expected " << n;
+            << std::int64_t(offsets[c + 1]) - std::int64_t(offsets[c]) << " points; expected " << n;
         fail(msg.str());
       }
     }
@@ -389,10 +474,8 @@ private:
         fail(msg.str());
       }
     }
-    s.points.resize(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
-      s.points[i] = static_cast<double>(points[i]);
-      if (!std::isfinite(s.points[i])) {
+      if (!std::isfinite(points[i])) {
         msg << "points[" << i << "] (coordinate " << i % 3 << " of point " << i / 3 << ") is " << points[i]
             << "; expected a finite number";
         fail(msg.str());
@@ -405,13 +488,109 @@ private:
         fail(msg.str());
       }
     }
+    store_points(s, std::move(points));
     s.vectors = std::move(vectors);
     s.connectivity = std::move(connectivity);
     s.offsets = std::move(offsets);
     s.cell_types = std::move(cell_types);
   }
 
-  static void build_bounding_boxes(Storage& s)
+  static void store_points(Storage& s, std::vector<float> points) { s.float_points = std::move(points); }
+  static void store_points(Storage& s, std::vector<double> points)
+  {
+    if (points.empty())
+      return; // no point (so no cell either: refused before)
+    s.double_points = std::move(points);
+  }
+
+  // The points of cell c as doubles, X[i] = point i of the cell; returns their number.  The
+  // precision of the storage is chosen once per cell visit.
+  template <typename T>
+  static void gather(const std::vector<T>& points, const Index* v, int n, double (*X)[3])
+  {
+    for (int i = 0; i < n; ++i) {
+      const T* x = points.data() + 3 * static_cast<std::size_t>(v[i]);
+      X[i][0] = static_cast<double>(x[0]);
+      X[i][1] = static_cast<double>(x[1]);
+      X[i][2] = static_cast<double>(x[2]);
+    }
+  }
+
+  static int gather(const Storage& s, std::size_t c, double (*X)[3])
+  {
+    const int n = points_of(s.cell_types[c]);
+    const Index* v = s.connectivity.data() + s.offsets[c];
+    if (s.double_points.empty())
+      gather(s.float_points, v, n, X);
+    else
+      gather(s.double_points, v, n, X);
+    return n;
+  }
+
+  // The bounding box of the n points X, enlarged by the inside tolerance (relative to the cell
+  // size), so that the box never rejects a point the exact test accepts.
+  static void points_box(const double (*X)[3], int n, double* b)
+  {
+    for (int a = 0; a < 3; ++a) {
+      double lo = X[0][a], hi = X[0][a];
+      for (int i = 1; i < n; ++i) {
+        lo = (std::min)(lo, X[i][a]);
+        hi = (std::max)(hi, X[i][a]);
+      }
+      const double pad = 1e-8 * (hi - lo) + 1e-300;
+      b[a] = lo - pad;
+      b[a + 3] = hi + pad;
+    }
+  }
+
+  static void cell_box(const Storage& s, std::size_t c, double* b)
+  {
+    double X[8][3];
+    points_box(X, gather(s, c, X), b);
+  }
+
+  static bool in_box(const double* b, const double* x)
+  {
+    return x[0] >= b[0] && x[0] <= b[3] && x[1] >= b[1] && x[1] <= b[4] && x[2] >= b[2] && x[2] <= b[5];
+  }
+
+  static bool in_node_box(const Storage& s, std::size_t node, const double* x)
+  {
+    const float* b = s.node_box.data() + 6 * node;
+    return x[0] >= b[0] && x[0] <= b[3] && x[1] >= b[1] && x[1] <= b[4] && x[2] >= b[2] && x[2] <= b[5];
+  }
+
+  // Tree node of leaf l (left to right), and back; the cells of a leaf (positions in order).
+  static std::size_t leaf_node(const Storage& s, std::size_t l)
+  {
+    const std::size_t deepest = 2 * s.leaves - 1 - s.first_deepest;
+    return l < deepest ? s.first_deepest + l : s.leaves - 1 + (l - deepest);
+  }
+  static std::size_t leaf_rank(const Storage& s, std::size_t node)
+  {
+    const std::size_t deepest = 2 * s.leaves - 1 - s.first_deepest;
+    return node >= s.first_deepest ? node - s.first_deepest : deepest + (node - (s.leaves - 1));
+  }
+  static std::size_t leaf_begin(const Storage& s, std::size_t node) { return leaf_size * leaf_rank(s, node); }
+  static std::size_t leaf_end(const Storage& s, std::size_t node)
+  {
+    return (std::min)(leaf_begin(s, node) + leaf_size, s.order.size());
+  }
+
+  static std::size_t leftmost_leaf(const Storage& s, std::size_t node)
+  {
+    while (node < s.leaves - 1)
+      node = 2 * node + 1;
+    return node;
+  }
+  static std::size_t rightmost_leaf(const Storage& s, std::size_t node)
+  {
+    while (node < s.leaves - 1)
+      node = 2 * node + 2;
+    return node;
+  }
+
+  static void build_hierarchy(Storage& s)
   {
     const std::size_t nc = s.cell_types.size();
     const double inf = std::numeric_limits<double>::infinity();
@@ -419,159 +598,133 @@ private:
       s.bbox[a] = inf;
       s.bbox[a + 3] = -inf;
     }
-    for (std::size_t i = 0; i < s.points.size(); ++i) {
-      s.bbox[i % 3] = (std::min)(s.bbox[i % 3], s.points[i]);
-      s.bbox[i % 3 + 3] = (std::max)(s.bbox[i % 3 + 3], s.points[i]);
+    const Point_coordinates x(float_points(s), &s.double_points);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      s.bbox[i % 3] = (std::min)(s.bbox[i % 3], x[i]);
+      s.bbox[i % 3 + 3] = (std::max)(s.bbox[i % 3 + 3], x[i]);
     }
-    s.cell_bbox.resize(6 * nc);
-    const float finf = std::numeric_limits<float>::infinity();
+    // The cells' box centres, then the tree top down: each node's cells split at the median
+    // of the longest axis of their centres, the left part holding as many leaves as the left
+    // subtree of the complete tree has (a kd-tree of boxes in the implicit layout).
+    std::vector<float> centre(3 * nc);
     for (std::size_t c = 0; c < nc; ++c) {
-      double b[6] = {inf, inf, inf, -inf, -inf, -inf};
-      for (Index k = s.offsets[c]; k < s.offsets[c + 1]; ++k) {
-        const double* x = s.points.data() + 3 * static_cast<std::size_t>(s.connectivity[k]);
-        for (int a = 0; a < 3; ++a) {
-          b[a] = (std::min)(b[a], x[a]);
-          b[a + 3] = (std::max)(b[a + 3], x[a]);
-        }
-      }
-      // Enlarged by the inside tolerance (relative to the cell size) and rounded outwards, so
-      // that the box never rejects a point the exact test accepts.
-      for (int a = 0; a < 3; ++a) {
-        const double pad = 1e-8 * (b[a + 3] - b[a]) + 1e-300;
-        s.cell_bbox[6 * c + a] = std::nextafter(static_cast<float>(b[a] - pad), -finf);
-        s.cell_bbox[6 * c + a + 3] = std::nextafter(static_cast<float>(b[a + 3] + pad), finf);
-      }
+      double b[6];
+      cell_box(s, c, b);
+      for (int a = 0; a < 3; ++a)
+        centre[3 * c + a] = static_cast<float>(0.5 * (b[a] + b[a + 3]));
     }
-  }
-
-  static void build_buckets(Storage& s)
-  {
-    const std::size_t nc = s.cell_types.size();
-    // About one bucket per cell, shaped like the mesh's bounding box.
-    double ext[3];
-    double volume = 1.;
-    int flat = 0;
-    for (int a = 0; a < 3; ++a) {
-      ext[a] = s.bbox[a + 3] - s.bbox[a];
-      if (ext[a] > 0.)
-        volume *= ext[a];
-      else
-        ++flat;
-    }
-    // The bucket edge: that of about one bucket per cell, but at least the mean edge of the
-    // cells' boxes, so that a cell's box (6 times a tetrahedron's volume for the tetrahedra of
-    // a cube) does not cover dozens of buckets (1 M tetrahedra: -21 % memory, random queries
-    // ~5 % slower).
-    const double dimension = double(3 - (std::min)(flat, 2));
-    double box_edge = 1.;
-    for (int a = 0; a < 3; ++a) {
-      if (!(ext[a] > 0.))
+    s.order.resize(nc);
+    for (std::size_t c = 0; c < nc; ++c)
+      s.order[c] = static_cast<Index>(c);
+    s.leaves = (nc + leaf_size - 1) / leaf_size;
+    const std::size_t nodes = 2 * s.leaves - 1;
+    s.first_deepest = 0;
+    while (2 * s.first_deepest + 1 < nodes)
+      s.first_deepest = 2 * s.first_deepest + 1;
+    std::vector<std::size_t> todo(1, 0);
+    while (!todo.empty()) {
+      const std::size_t node = todo.back();
+      todo.pop_back();
+      if (node >= s.leaves - 1)
         continue;
-      double mean = 0.;
-      for (std::size_t c = 0; c < nc; ++c)
-        mean += double(s.cell_bbox[6 * c + a + 3]) - double(s.cell_bbox[6 * c + a]);
-      box_edge *= mean / static_cast<double>(nc);
-    }
-    box_edge = std::pow(box_edge, 1. / dimension);
-    const double per_bucket =
-        (std::max)(std::pow(volume / static_cast<double>(nc), 1. / dimension), box_edge);
-    for (int a = 0; a < 3; ++a) {
-      std::size_t n = 1;
-      if (ext[a] > 0. && per_bucket > 0.)
-        n = static_cast<std::size_t>((std::max)(1., (std::min)(ext[a] / per_bucket, 1024.)));
-      s.bucket_n[a] = n;
-      s.bucket_lo[a] = s.bbox[a];
-      s.bucket_inv_h[a] = ext[a] > 0. ? static_cast<double>(n) / ext[a] : 0.;
-    }
-    const std::size_t nb = s.bucket_n[0] * s.bucket_n[1] * s.bucket_n[2];
-    // 32-bit counts and positions: the counting pass checks that the total fits.
-    std::vector<std::size_t> count(nb + 1, 0);
-    // Two passes over the cells: count, then fill.
-    for (int pass = 0; pass < 2; ++pass) {
-      std::vector<std::uint32_t> fill;
-      if (pass == 1) {
-        for (std::size_t b = 0; b < nb; ++b)
-          count[b + 1] += count[b];
-        if (count[nb] > (std::numeric_limits<std::uint32_t>::max)()) {
-          std::ostringstream msg;
-          msg << "the cells' bounding boxes cover " << count[nb] << " buckets in all; at most "
-              << (std::numeric_limits<std::uint32_t>::max)() << " are supported (too many cells)";
-          fail(msg.str());
-        }
-        s.bucket_begin.assign(count.begin(), count.end());
-        count = std::vector<std::size_t>();
-        s.bucket_cells.resize(s.bucket_begin[nb]);
-        fill.assign(s.bucket_begin.begin(), s.bucket_begin.end() - 1);
-      }
-      for (std::size_t c = 0; c < nc; ++c) {
-        std::size_t lo[3], hi[3];
+      const std::size_t first = leaf_size * leaf_rank(s, leftmost_leaf(s, node));
+      const std::size_t middle = leaf_size * leaf_rank(s, leftmost_leaf(s, 2 * node + 2));
+      const std::size_t last = (std::min)(leaf_size * (leaf_rank(s, rightmost_leaf(s, node)) + 1), nc);
+      float lo[3], hi[3];
+      for (int a = 0; a < 3; ++a)
+        lo[a] = hi[a] = centre[3 * std::size_t(s.order[first]) + a];
+      for (std::size_t k = first; k < last; ++k)
         for (int a = 0; a < 3; ++a) {
-          lo[a] = bucket_coordinate(s, a, s.cell_bbox[6 * c + a]);
-          hi[a] = bucket_coordinate(s, a, s.cell_bbox[6 * c + a + 3]);
+          lo[a] = (std::min)(lo[a], centre[3 * std::size_t(s.order[k]) + a]);
+          hi[a] = (std::max)(hi[a], centre[3 * std::size_t(s.order[k]) + a]);
         }
-        for (std::size_t k = lo[2]; k <= hi[2]; ++k)
-          for (std::size_t j = lo[1]; j <= hi[1]; ++j)
-            for (std::size_t i = lo[0]; i <= hi[0]; ++i) {
-              const std::size_t b = i + s.bucket_n[0] * (j + s.bucket_n[1] * k);
-              if (pass == 0)
-                ++count[b + 1];
-              else
-                s.bucket_cells[fill[b]++] = static_cast<std::uint32_t>(c);
-            }
+      int axis = 0;
+      for (int a = 1; a < 3; ++a)
+        if (hi[a] - lo[a] > hi[axis] - lo[axis])
+          axis = a;
+      std::nth_element(s.order.begin() + std::ptrdiff_t(first), s.order.begin() + std::ptrdiff_t(middle),
+                       s.order.begin() + std::ptrdiff_t(last), [&](Index u, Index v) {
+                         return centre[3 * std::size_t(u) + axis] < centre[3 * std::size_t(v) + axis];
+                       });
+      todo.push_back(2 * node + 1);
+      todo.push_back(2 * node + 2);
+    }
+    centre = std::vector<float>();
+    s.node_box.assign(6 * nodes, 0.f);
+    const float finf = std::numeric_limits<float>::infinity();
+    for (std::size_t node = s.leaves - 1; node < nodes; ++node) {
+      double u[6] = {inf, inf, inf, -inf, -inf, -inf};
+      for (std::size_t k = leaf_begin(s, node); k < leaf_end(s, node); ++k) {
+        double b[6];
+        cell_box(s, std::size_t(s.order[k]), b);
+        for (int a = 0; a < 3; ++a) {
+          u[a] = (std::min)(u[a], b[a]);
+          u[a + 3] = (std::max)(u[a + 3], b[a + 3]);
+        }
+      }
+      for (int a = 0; a < 3; ++a) { // rounded outwards: the float box holds the double one
+        s.node_box[6 * node + a] = std::nextafter(static_cast<float>(u[a]), -finf);
+        s.node_box[6 * node + a + 3] = std::nextafter(static_cast<float>(u[a + 3]), finf);
+      }
+    }
+    for (std::size_t node = s.leaves - 1; node-- > 0;) {
+      float* b = s.node_box.data() + 6 * node;
+      const float* l = s.node_box.data() + 6 * (2 * node + 1); // the children, l and r
+      const float* r = l + 6;
+      for (int a = 0; a < 3; ++a) {
+        b[a] = (std::min)(l[a], r[a]);
+        b[a + 3] = (std::max)(l[a + 3], r[a + 3]);
       }
     }
   }
 
-  static std::size_t bucket_coordinate(const Storage& s, int a, double x)
+  // Calls visit(leaf node) for every leaf whose box meets the box b.
+  template <typename Visit>
+  static void visit_leaves(const Storage& s, const double* b, Visit visit)
   {
-    const double t = (x - s.bucket_lo[a]) * s.bucket_inv_h[a];
-    if (!(t > 0.))
-      return 0;
-    return (std::min)(static_cast<std::size_t>(t), s.bucket_n[a] - 1);
+    std::size_t stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const std::size_t node = stack[--top];
+      const float* nb = s.node_box.data() + 6 * node;
+      if (nb[0] > b[3] || nb[1] > b[4] || nb[2] > b[5] || nb[3] < b[0] || nb[4] < b[1] || nb[5] < b[2])
+        continue;
+      if (node >= s.leaves - 1) {
+        visit(node);
+        continue;
+      }
+      stack[top++] = 2 * node + 2;
+      stack[top++] = 2 * node + 1;
+    }
   }
 
-  static void build_neighbours(Storage& s)
+  // Searches the subtree of `root` for a cell containing x, other than `skip`.
+  static bool search(const Storage& s, std::size_t root, const double* x, Hit& hit, std::size_t skip)
   {
-    const std::size_t nc = s.cell_types.size();
-    const std::array<int, 4>* f = nullptr;
-    std::size_t number_of_faces = 0;
-    s.face_stride = 0;
-    for (std::size_t c = 0; c < nc; ++c) {
-      const std::size_t nf = static_cast<std::size_t>(faces_of(s.cell_types[c], f));
-      number_of_faces += nf;
-      s.face_stride = (std::max)(s.face_stride, nf);
-    }
-    // A face is identified by its sorted point indices (a triangle padded with -1); sorting all
-    // faces brings the two sides of every shared face together.
-    struct Face {
-      std::array<Index, 4> key;
-      std::uint32_t cell;
-      std::uint8_t local; // the face's number in its cell
-      bool operator<(const Face& o) const { return key < o.key; }
-    };
-    std::vector<Face> faces;
-    faces.reserve(number_of_faces);
-    for (std::size_t c = 0; c < nc; ++c) {
-      const int nf = faces_of(s.cell_types[c], f);
-      const Index* v = s.connectivity.data() + s.offsets[c];
-      for (int i = 0; i < nf; ++i) {
-        Face face;
-        for (int k = 0; k < 4; ++k)
-          face.key[k] = f[i][k] < 0 ? Index(-1) : v[f[i][k]];
-        std::sort(face.key.begin(), face.key.end());
-        face.cell = static_cast<std::uint32_t>(c);
-        face.local = static_cast<std::uint8_t>(i);
-        faces.push_back(face);
+    // The tree is complete, so its depth is below 64 for any size_t number of cells, and the
+    // stack holds at most one pending sibling per level.
+    std::size_t stack[64];
+    int top = 0;
+    stack[top++] = root;
+    while (top > 0) {
+      const std::size_t node = stack[--top];
+      if (!in_node_box(s, node, x))
+        continue;
+      if (node >= s.leaves - 1) {
+        for (std::size_t k = leaf_begin(s, node); k < leaf_end(s, node); ++k) {
+          const std::size_t c = std::size_t(s.order[k]);
+          if (c != skip && try_cell(s, c, x, hit)) {
+            hit.leaf = node;
+            return true;
+          }
+        }
+        continue;
       }
+      stack[top++] = 2 * node + 2;
+      stack[top++] = 2 * node + 1;
     }
-    std::sort(faces.begin(), faces.end());
-    s.neighbour.assign(s.face_stride * nc, no_cell);
-    for (std::size_t i = 0; i + 1 < faces.size(); ++i) {
-      if (faces[i].key == faces[i + 1].key) {
-        s.neighbour[s.face_stride * faces[i].cell + faces[i].local] = faces[i + 1].cell;
-        s.neighbour[s.face_stride * faces[i + 1].cell + faces[i + 1].local] = faces[i].cell;
-      }
-    }
+    return false;
   }
 
   // Shape functions N and their derivatives dN/d(r, s, t) at xi, in VTK's conventions.
@@ -653,24 +806,16 @@ private:
     }
   }
 
-  // Inverts the cell's map x(xi) = p by Newton's method from `start` (in the reference cell)
-  // or else from the cell's parametric center.  Returns whether it converged and xi is in the
-  // reference cell, with the shape function values and xi in hit; otherwise hit.xi is the last
-  // xi when it is finite.
-  static bool invert(const Storage& s, std::size_t cell, const double* p, Hit& hit,
+  // Inverts the map x(xi) = p of the cell of type `type` with points X by Newton's method from
+  // `start` (in the reference cell) or else from the cell's parametric center.  Returns whether
+  // it converged and xi is in the reference cell, with the shape function values and xi in hit.
+  static bool invert(unsigned char type, const double (*X)[3], int n, const double* p, Hit& hit,
                      const double* start = nullptr)
   {
-    hit.xi_valid = false;
-    const unsigned char type = s.cell_types[cell];
-    const Index* v = s.connectivity.data() + s.offsets[cell];
-    double X[8][3];
-    const int n = points_of(type);
     double size = 0.;
     for (int i = 0; i < n; ++i)
-      for (int a = 0; a < 3; ++a) {
-        X[i][a] = s.points[3 * static_cast<std::size_t>(v[i]) + a];
+      for (int a = 0; a < 3; ++a)
         size = (std::max)(size, std::abs(X[i][a] - X[0][a]));
-      }
     double xi[3];
     switch (type) {
     case TETRA:
@@ -739,7 +884,7 @@ private:
         for (int a = 0; a < 3; ++a)
           far = far || xi[a] < -0.5 || xi[a] > 1.5;
         if (far)
-          return keep_xi(xi, hit);
+          return false;
       }
     }
     if (!converged) {
@@ -754,7 +899,7 @@ private:
         err = (std::max)(err, std::abs(x - p[a]));
       }
       if (!(err <= 1e-12 * size))
-        return keep_xi(xi, hit);
+        return false;
     }
     if (type == PYRAMID && xi[2] >= 1. - 1e-8) {
       // At the apex r and s are undetermined and irrelevant.
@@ -762,70 +907,24 @@ private:
       xi[1] = (std::min)((std::max)(xi[1], 0.), 1.);
     }
     if (!in_reference_cell(type, xi))
-      return keep_xi(xi, hit);
-    hit.cell = cell;
+      return false;
     hit.n = shape(type, xi, hit.N, dN);
     for (int a = 0; a < 3; ++a)
       hit.xi[a] = xi[a];
     return true;
   }
 
-  // Keeps xi in hit for the walk when it is finite; returns false (no hit).
-  static bool keep_xi(const double* xi, Hit& hit)
+  // Whether cell c contains x (its box first), with the hit.
+  static bool try_cell(const Storage& s, std::size_t c, const double* x, Hit& hit,
+                       const double* start = nullptr)
   {
-    hit.xi_valid = std::isfinite(xi[0]) && std::isfinite(xi[1]) && std::isfinite(xi[2]);
-    for (int a = 0; a < 3; ++a)
-      hit.xi[a] = xi[a];
-    return false;
-  }
-
-  // The face (in the numbering of faces_of()) through which the parametric point xi lies
-  // farthest outside the reference cell, or -1 if xi is inside it.
-  static int exit_face(unsigned char type, const double* xi)
-  {
-    const double r = xi[0], s = xi[1], t = xi[2];
-    double m[6];
-    int nf;
-    switch (type) {
-    case TETRA: // faces without point 2, 0, 1, 3
-      m[0] = s, m[1] = 1. - r - s - t, m[2] = r, m[3] = t, nf = 4;
-      break;
-    case HEXAHEDRON:
-      m[0] = r, m[1] = 1. - r, m[2] = s, m[3] = 1. - s, m[4] = t, m[5] = 1. - t, nf = 6;
-      break;
-    case WEDGE:
-      m[0] = t, m[1] = 1. - t, m[2] = s, m[3] = 1. - r - s, m[4] = r, nf = 5;
-      break;
-    default: // PYRAMID
-      m[0] = t, m[1] = s, m[2] = 1. - r, m[3] = 1. - s, m[4] = r, nf = 5;
-    }
-    int best = -1;
-    double worst = 0.;
-    for (int f = 0; f < nf; ++f)
-      if (m[f] < worst) {
-        worst = m[f];
-        best = f;
-      }
-    return best;
-  }
-
-  // Whether x is in the cell's bounding box enlarged by its own extent on every side: the
-  // walk starts only from such cells (farther points go to the bucket grid directly).
-  static bool near_cell_bbox(const Storage& s, std::size_t c, const double* x)
-  {
-    const float* b = s.cell_bbox.data() + 6 * c;
-    for (int a = 0; a < 3; ++a) {
-      const double e = double(b[a + 3]) - double(b[a]);
-      if (!(x[a] >= b[a] - e && x[a] <= b[a + 3] + e))
-        return false;
-    }
+    double X[8][3], b[6];
+    const int n = gather(s, c, X);
+    points_box(X, n, b);
+    if (!in_box(b, x) || !invert(s.cell_types[c], X, n, x, hit, start))
+      return false;
+    hit.cell = c;
     return true;
-  }
-
-  static bool in_cell_bbox(const Storage& s, std::size_t c, const double* x)
-  {
-    const float* b = s.cell_bbox.data() + 6 * c;
-    return x[0] >= b[0] && x[0] <= b[3] && x[1] >= b[1] && x[1] <= b[4] && x[2] >= b[2] && x[2] <= b[5];
   }
 
   Vector_3 interpolate(const Hit& hit) const
@@ -841,18 +940,6 @@ private:
     return Vector_3(FT(r[0]), FT(r[1]), FT(r[2]));
   }
 
-  bool try_cell(std::size_t c, const double* x, Hit& hit) const
-  {
-    return in_cell_bbox(*storage_, c, x) && invert(*storage_, c, x, hit);
-  }
-
-  static void remember(Hint& hint, const Hit& hit)
-  {
-    hint.cell = hit.cell;
-    for (int a = 0; a < 3; ++a)
-      hint.xi[a] = hit.xi[a];
-  }
-
   bool find(const double* x, Hit& hit) const
   {
     const Storage& s = *storage_;
@@ -861,49 +948,29 @@ private:
           x[2] >= s.bbox[2] && x[2] <= s.bbox[5]))
       return false;
     static thread_local Hint hint;
-    const std::size_t nc = s.cell_types.size();
-    if (hint.owner == &s && hint.cell < nc && near_cell_bbox(s, hint.cell, x)) {
-      // The walk: invert in the current cell (without the box test, whose rejection would not
-      // tell a direction) and cross the face the point lies beyond, a few steps at most.
-      const std::size_t h = hint.cell;
-      std::size_t c = h, previous = no_cell;
-      for (int step = 0; step < max_walk_steps; ++step) {
-        if (invert(s, c, x, hit, c == h ? hint.xi : nullptr)) {
-          remember(hint, hit);
-          return true;
-        }
-        if (!hit.xi_valid)
-          break;
-        const int f = exit_face(s.cell_types[c], hit.xi);
-        const std::uint32_t next = f < 0 ? no_cell : s.neighbour[s.face_stride * c + std::size_t(f)];
-        if (next == no_cell || next == previous)
-          break;
-        previous = c;
-        c = next;
-      }
-      // Then the hint's other face neighbours (the walk's first step may have chosen a wrong
-      // face in a strongly distorted cell).
-      const std::uint32_t* n = s.neighbour.data() + s.face_stride * h;
-      for (std::size_t f = 0; f < s.face_stride; ++f) {
-        const std::uint32_t c2 = n[f];
-        if (c2 != no_cell && c2 != c && try_cell(c2, x, hit)) {
-          remember(hint, hit);
-          return true;
-        }
-      }
+    bool found = false;
+    if (hint.owner == &s && hint.cell < s.cell_types.size() && hint.leaf + 1 >= s.leaves &&
+        hint.leaf < 2 * s.leaves - 1) { // (a field built where a destroyed one was: any valid hint)
+      // The hint's cell, its leaf, then the siblings' subtrees on the way up: every cell once.
+      std::size_t node = hint.leaf;
+      found = (in_node_box(s, node, x) && try_cell(s, hint.cell, x, hit, hint.xi)) ||
+              search(s, node, x, hit, hint.cell);
+      for (; !found && node != 0; node = (node - 1) / 2)
+        found = search(s, node % 2 == 1 ? node + 1 : node - 1, x, hit, hint.cell);
+      if (found && hit.cell == hint.cell)
+        hit.leaf = hint.leaf;
     }
-    std::size_t b = 0;
-    for (int a = 2; a >= 0; --a)
-      b = b * s.bucket_n[a] + bucket_coordinate(s, a, x[a]);
-    for (std::size_t k = s.bucket_begin[b]; k < s.bucket_begin[b + 1]; ++k) {
-      const std::size_t c = s.bucket_cells[k];
-      if (try_cell(c, x, hit)) {
-        hint.owner = &s;
-        remember(hint, hit);
-        return true;
-      }
+    else {
+      found = search(s, 0, x, hit, std::size_t(-1));
     }
-    return false;
+    if (found) {
+      hint.owner = &s;
+      hint.cell = hit.cell;
+      hint.leaf = hit.leaf;
+      for (int a = 0; a < 3; ++a)
+        hint.xi[a] = hit.xi[a];
+    }
+    return found;
   }
 
   std::shared_ptr<const Storage> storage_;

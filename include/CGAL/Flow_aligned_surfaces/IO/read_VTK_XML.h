@@ -37,6 +37,8 @@
 #include <vtkCommand.h>
 #include <vtkExecutive.h>
 #include <vtkPointData.h>
+#include <vtkPointSet.h>
+#include <vtkPoints.h>
 #include <vtkSmartPointer.h>
 #include <vtkInformation.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
@@ -585,11 +587,26 @@ Regular_grid_flow_field_3<K> read_VTK_XML_grid(const VTK_XML_context& c, const s
 
 // The cells of the data set as VTK arrays, with the velocity and the mask; cells touching a
 // solid point are dropped.
+// The coordinates of the np points of ds, x, y, z per point, as Real.
+template <class Real>
+std::vector<Real> VTK_point_coordinates(vtkDataSet* ds, std::size_t np)
+{
+  std::vector<Real> r(3 * np);
+  double x[3];
+  for (std::size_t i = 0; i < np; ++i) {
+    ds->GetPoint(static_cast<vtkIdType>(i), x);
+    for (int a = 0; a < 3; ++a)
+      r[3 * i + a] = static_cast<Real>(x[a]);
+  }
+  return r;
+}
+
 template <class K>
 Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const std::string* array_name,
                                                 const std::string* mask_name)
 {
-  typedef typename Unstructured_flow_field_3<K>::Index Index;
+  // vtkIdType here; the field's constructor narrows to its 32-bit Index (and says so if it cannot).
+  typedef std::int64_t Index;
   check_readable(c);
   vtkSmartPointer<vtkDataSet> ds;
   std::optional<std::array<std::size_t, 3>> structured;
@@ -627,10 +644,6 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
   else
     read_VTK_point_arrays(
         c, ds, array_name, mask_name, [](std::size_t i) { return std::to_string(i); }, values, flags);
-
-  std::vector<double> points(3 * np);
-  for (std::size_t i = 0; i < np; ++i)
-    ds->GetPoint(static_cast<vtkIdType>(i), points.data() + 3 * i);
 
   std::vector<Index> connectivity, offsets;
   std::vector<unsigned char> types;
@@ -671,8 +684,16 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
       Flow_aligned_surfaces::internal::remove_masked_cells(flags, connectivity, offsets, types) == 0)
     c.fail("every one of the " + std::to_string(cells) +
            " cells touches a solid point of the mask (no fluid cell is left)");
+  const auto refused = [&](const std::string& what) { c.fail(what); };
+  // The points in the file's precision (float points stay float in the field).
+  vtkPointSet* point_set = vtkPointSet::SafeDownCast(ds);
+  if (point_set != nullptr && point_set->GetPoints() != nullptr &&
+      point_set->GetPoints()->GetDataType() == VTK_FLOAT)
+    return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
+        refused, VTK_point_coordinates<float>(ds, np), std::move(connectivity), std::move(offsets),
+        std::move(types), std::move(values));
   return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
-      [&](const std::string& what) { c.fail(what); }, points, std::move(connectivity), std::move(offsets),
+      refused, VTK_point_coordinates<double>(ds, np), std::move(connectivity), std::move(offsets),
       std::move(types), std::move(values));
 }
 

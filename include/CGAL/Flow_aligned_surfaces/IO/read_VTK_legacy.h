@@ -1004,8 +1004,14 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
                               d.flags, cells.connectivity, cells.offsets, cells.cell_types) == 0)
     parser.fail_file("every one of the " + std::to_string(all_cells) +
                      " cells touches a solid node of the mask '" + d.mask_name + "'; no cell is left");
+  // Float points stay float in the field (they were decoded as doubles, exactly).
+  if ((parser.dataset == "UNSTRUCTURED_GRID" || parser.dataset == "STRUCTURED_GRID") && parser.points &&
+      parser.points->type == "float")
+    return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
+        parser.file_failure(), std::vector<float>(points.begin(), points.end()), std::move(cells.connectivity),
+        std::move(cells.offsets), std::move(cells.cell_types), std::move(d.values));
   return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
-      parser.file_failure(), points, std::move(cells.connectivity), std::move(cells.offsets),
+      parser.file_failure(), std::move(points), std::move(cells.connectivity), std::move(cells.offsets),
       std::move(cells.cell_types), std::move(d.values));
 }
 
