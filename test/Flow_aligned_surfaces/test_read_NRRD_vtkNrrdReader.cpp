@@ -124,14 +124,9 @@ TEST(ReadNRRDAgainstVTK, DetachedHeaderAndRawFile)
       header("double", "endian: big\nencoding: raw\ndata file: fas_read_NRRD_vtk_detached.raw\n"));
 }
 
-#if defined(CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB)
-TEST(ReadNRRDAgainstVTK, GzipData)
-{
-  expect_same_as_vtk("gzip.nrrd", header("float", "endian: little\nencoding: gzip\n\n") +
-                                      fas_test::zlib_compress(
-                                          fas_test::node_values_binary<float>(n, velocity, false), true));
-}
-#endif
+// No gzip case: under AddressSanitizer VTK 9.1's vtkNrrdReader returns wrong values for gzip
+// data (-0.37 where the file holds -1.23), so it is no reliable peer there; gzip NRRD files are
+// tested against data compressed by zlib itself in test_read_NRRD.cpp.
 
 } // namespace
 
