@@ -17,7 +17,9 @@ cmake --build "$build" -j"$jobs"
 
 if [ "${FAS_SKIP_SANITIZERS:-0}" != 1 ]; then
   sanitized="$root/build/sanitize"
-  cmake -S "$root" -B "$sanitized" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFAS_SANITIZE=ON \
+  # -O1 -g1: the sanitizers need no more, and it compiles in half the time of -O2 -g.
+  cmake -S "$root" -B "$sanitized" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DFAS_SANITIZE=ON \
     -DFAS_BUILD_EXAMPLES=OFF -DFAS_BUILD_BENCHMARKS=OFF -DFAS_BUILD_DOC_TEST=OFF
   cmake --build "$sanitized" --target test_flow_aligned_surfaces -j"$jobs"
   (cd "$sanitized" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
