@@ -95,6 +95,25 @@ public:
   ///         nonempty `mask` has the wrong size, or a fluid node has a non-finite value.
   Rectilinear_grid_flow_field_3(Coordinates coordinates, std::vector<float> values,
                                 std::vector<unsigned char> mask = std::vector<unsigned char>())
+      : Rectilinear_grid_flow_field_3(std::move(coordinates), std::move(values), std::move(mask), false)
+  {
+  }
+
+  /// \cond SKIP_IN_MANUAL
+  // For the package's readers, which checked the values while decoding them (see
+  // `internal::Node_values_checked`): the sizes and the coordinates are still checked.
+  Rectilinear_grid_flow_field_3(internal::Node_values_checked, Coordinates coordinates,
+                                std::vector<float> values, std::vector<unsigned char> mask)
+      : Rectilinear_grid_flow_field_3(std::move(coordinates), std::move(values), std::move(mask), true)
+  {
+  }
+  /// \endcond
+
+  /// @}
+
+private:
+  Rectilinear_grid_flow_field_3(Coordinates coordinates, std::vector<float> values,
+                                std::vector<unsigned char> mask, bool values_checked)
   {
     static const char* const who = "Rectilinear_grid_flow_field_3";
     static const char* const axis[3] = {"x", "y", "z"};
@@ -121,7 +140,7 @@ public:
       }
     }
     const std::size_t nodes = internal::grid_node_count(who, n_);
-    internal::check_grid_node_values(who, n_, nodes, values, mask);
+    internal::check_grid_node_values(who, n_, nodes, values, mask, values_checked);
 
     auto s = std::make_shared<Storage>();
     s->coordinates = std::move(coordinates);
@@ -136,8 +155,7 @@ public:
     stride_z_ = n_[0] * n_[1];
   }
 
-  /// @}
-
+public:
   /// \name Evaluation
   /// @{
 

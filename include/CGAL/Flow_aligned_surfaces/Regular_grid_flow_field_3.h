@@ -105,10 +105,31 @@ public:
   Regular_grid_flow_field_3(const Point_3& origin, const Vector_3& spacing, const Dimensions& dimensions,
                             std::vector<float> values,
                             std::vector<unsigned char> mask = std::vector<unsigned char>())
+      : Regular_grid_flow_field_3(origin, spacing, dimensions, std::move(values), std::move(mask), false)
+  {
+  }
+
+  /// \cond SKIP_IN_MANUAL
+  // For the package's readers, which checked the values while decoding them (see
+  // `internal::Node_values_checked`): the sizes and the geometry are still checked.
+  Regular_grid_flow_field_3(internal::Node_values_checked, const Point_3& origin, const Vector_3& spacing,
+                            const Dimensions& dimensions, std::vector<float> values,
+                            std::vector<unsigned char> mask)
+      : Regular_grid_flow_field_3(origin, spacing, dimensions, std::move(values), std::move(mask), true)
+  {
+  }
+  /// \endcond
+
+  /// @}
+
+private:
+  Regular_grid_flow_field_3(const Point_3& origin, const Vector_3& spacing, const Dimensions& dimensions,
+                            std::vector<float> values, std::vector<unsigned char> mask, bool values_checked)
       : origin_(origin), spacing_(spacing), n_(dimensions)
   {
     const std::size_t nodes = checked_number_of_nodes(origin, spacing, dimensions);
-    internal::check_grid_node_values("Regular_grid_flow_field_3", dimensions, nodes, values, mask);
+    internal::check_grid_node_values("Regular_grid_flow_field_3", dimensions, nodes, values, mask,
+                                     values_checked);
 
     values_ = std::make_shared<const std::vector<float>>(std::move(values));
     v_ = values_->data();
@@ -131,8 +152,7 @@ public:
     stride_z_ = n_[0] * n_[1];
   }
 
-  /// @}
-
+public:
   /// \name Evaluation
   /// @{
 

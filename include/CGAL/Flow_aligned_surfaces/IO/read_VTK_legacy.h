@@ -20,6 +20,7 @@
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/internal/checked_float_decoding.h>
 #include <CGAL/Flow_aligned_surfaces/internal/node_value_checks.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
@@ -428,6 +429,22 @@ public:
     }
   }
 
+  // The values of a binary array (checked by pass 1): decoded with `type`, big-endian (as
+  // VTK's legacy writer writes, whatever the host), value i at data + i * size, which is byte
+  // begin + i * size of the file.
+  struct Binary_values {
+    const unsigned char* data;
+    Flow_aligned_surfaces::internal::Binary_type type;
+    std::size_t size, begin;
+    static constexpr Flow_aligned_surfaces::internal::Byte_order order =
+        Flow_aligned_surfaces::internal::Byte_order::BIG_ENDIAN_ORDER;
+  };
+  Binary_values binary_values(const VTK_legacy_array& a) const
+  {
+    return {reinterpret_cast<const unsigned char*>(in_.bytes().data()) + a.begin, binary_type(a.type),
+            type_size(a.type), a.begin};
+  }
+
   std::string dimensions_string() const
   {
     return std::to_string(dimensions[0]) + " " + std::to_string(dimensions[1]) + " " +
@@ -724,35 +741,60 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
 
   VTK_legacy_node_data d;
   const std::size_t nodes = parser.nodes;
+  namespace FASi = Flow_aligned_surfaces::internal;
   if (mask != nullptr) {
     d.mask_name = mask->name;
-    Flow_aligned_surfaces::internal::reserve_huge_pages(d.flags, nodes);
+    FASi::reserve_huge_pages(d.flags, nodes);
     d.flags.resize(nodes);
     // By value: a byte store through d.flags[i], or through a captured reference, could alias
     // the pointer, which would then be reloaded per value.
     unsigned char* flags = d.flags.data();
-    parser.decode(*mask, [&, flags](std::size_t i, double v, std::size_t offset, std::size_t line) {
-      flags[i] = Flow_aligned_surfaces::internal::checked_mask_flag(
+    auto check = [&, flags](std::size_t i, double v, std::size_t offset, std::size_t line) {
+      flags[i] = FASi::checked_mask_flag(
           v, mask->name, [&] { return "node " + std::to_string(i); },
           [&](const std::string& what) { parser.fail_at(offset, line, what); });
-    });
+    };
+    const auto b = parser.binary_values(*mask);
+    // Binary: decoded as a run; only a NaN, which the run reports, goes through `check`.
+    if (!parser.binary || FASi::decode_checked_flags(b.type, b.order, b.data, nodes, flags))
+      parser.decode(*mask, check);
   }
-  Flow_aligned_surfaces::internal::reserve_huge_pages(d.values, 3 * nodes);
+  FASi::reserve_huge_pages(d.values, 3 * nodes);
   d.values.resize(3 * nodes);
   float* values = d.values.data();
-  parser.decode(*velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-    values[i] = Flow_aligned_surfaces::internal::checked_velocity_component(
+  auto check = [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
+    values[i] = FASi::checked_velocity_component(
         v, i, [&] { return d.flags.empty() || d.flags[i / 3] != 0; }, !d.flags.empty(), velocity->name,
         "node", [&] { return parser.node_name(i / 3); },
         [&](const std::string& what) { parser.fail_at(offset, line, what); });
-  });
+  };
   // A solid node's value is never interpolated: one with a non-finite component is stored as
   // zero, as the grid fields' constructors do (and the cells field, which refuses non-finite
   // values, gets the same).
-  for (std::size_t node = 0; node < d.flags.size(); ++node) {
-    float* c = d.values.data() + 3 * node;
-    if (d.flags[node] == 0 && !(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2])))
-      c[0] = c[1] = c[2] = 0.f;
+  auto zero_bad_solid_nodes = [&](std::size_t first_node, std::size_t end_node) {
+    for (std::size_t node = first_node; node < end_node && node < d.flags.size(); ++node) {
+      float* c = values + 3 * node;
+      if (d.flags[node] == 0 && !(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2])))
+        c[0] = c[1] = c[2] = 0.f;
+    }
+  };
+  if (parser.binary) {
+    // Decoded and range-checked straight into the result, in parallel blocks; the values of the
+    // (rare) blocks holding a non-finite or too large value are then checked one by one in file
+    // order, so the message names the first bad value at a fluid node, as in the ASCII case.
+    const auto b = parser.binary_values(*velocity);
+    for (std::size_t block : FASi::decode_checked_floats(b.type, b.order, b.data, 3 * nodes, values,
+                                                         [&](std::size_t i, double v) {
+                                                           check(i, v, b.begin + i * b.size, 0);
+                                                           return values[i];
+                                                         })) {
+      const std::size_t begin = block * FASi::checked_block_size;
+      zero_bad_solid_nodes(begin / 3, (begin + FASi::checked_block_size + 2) / 3);
+    }
+  }
+  else {
+    parser.decode(*velocity, check);
+    zero_bad_solid_nodes(0, nodes);
   }
   return d;
 }
@@ -951,7 +993,8 @@ Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, c
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
   return Flow_aligned_surfaces::internal::construct_field<Regular_grid_flow_field_3<K>>(
-      parser.file_failure(), Point_3(parser.origin[0], parser.origin[1], parser.origin[2]),
+      parser.file_failure(), Flow_aligned_surfaces::internal::Node_values_checked(),
+      Point_3(parser.origin[0], parser.origin[1], parser.origin[2]),
       Vector_3(parser.spacing[0], parser.spacing[1], parser.spacing[2]), parser.dimensions,
       std::move(d.values), std::move(d.flags));
 }
@@ -967,7 +1010,8 @@ Rectilinear_grid_flow_field_3<K> read_VTK_legacy_rectilinear(const std::string& 
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   std::array<std::vector<double>, 3> x = grid_coordinates(parser);
   return Flow_aligned_surfaces::internal::construct_field<Rectilinear_grid_flow_field_3<K>>(
-      parser.file_failure(), std::move(x), std::move(d.values), std::move(d.flags));
+      parser.file_failure(), Flow_aligned_surfaces::internal::Node_values_checked(), std::move(x),
+      std::move(d.values), std::move(d.flags));
 }
 
 template <class K>
@@ -1008,8 +1052,9 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
   if ((parser.dataset == "UNSTRUCTURED_GRID" || parser.dataset == "STRUCTURED_GRID") && parser.points &&
       parser.points->type == "float")
     return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
-        parser.file_failure(), std::vector<float>(points.begin(), points.end()), std::move(cells.connectivity),
-        std::move(cells.offsets), std::move(cells.cell_types), std::move(d.values));
+        parser.file_failure(), std::vector<float>(points.begin(), points.end()),
+        std::move(cells.connectivity), std::move(cells.offsets), std::move(cells.cell_types),
+        std::move(d.values));
   return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
       parser.file_failure(), std::move(points), std::move(cells.connectivity), std::move(cells.offsets),
       std::move(cells.cell_types), std::move(d.values));

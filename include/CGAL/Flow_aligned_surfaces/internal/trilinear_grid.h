@@ -66,11 +66,19 @@ inline std::size_t grid_node_count(const char* who, const Grid_dimensions& dimen
   return nodes;
 }
 
-/// Checks the sizes of `values` (3 per node) and of a nonempty `mask` (1 per node), and that
-/// fluid nodes have finite values; replaces the non-finite values of solid nodes by zeros
-/// (a solid node can get a zero weight in the blend, and 0 · NaN would poison the result).
+/// The tag of the grid fields' constructor for the package's readers, which have checked the
+/// values as they decoded them (every value of a fluid node finite, a solid node with a
+/// non-finite value stored as three zeros): the constructor then checks only the sizes and the
+/// geometry, not each of the values again.
+struct Node_values_checked {};
+
+/// Checks the sizes of `values` (3 per node) and of a nonempty `mask` (1 per node), and, unless
+/// `values_checked` (see `Node_values_checked`), that fluid nodes have finite values; replaces
+/// the non-finite values of solid nodes by zeros (a solid node can get a zero weight in the
+/// blend, and 0 · NaN would poison the result).
 inline void check_grid_node_values(const char* who, const Grid_dimensions& n, std::size_t nodes,
-                                   std::vector<float>& values, const std::vector<unsigned char>& mask)
+                                   std::vector<float>& values, const std::vector<unsigned char>& mask,
+                                   bool values_checked = false)
 {
   // Compared before anything is read or allocated: the sizes come from the caller.
   if (values.size() / 3 != nodes || values.size() % 3 != 0) {
@@ -85,6 +93,8 @@ inline void check_grid_node_values(const char* who, const Grid_dimensions& n, st
         << " need nx*ny*nz = " << nodes << " (or an empty mask for no mask)";
     throw std::invalid_argument(msg.str());
   }
+  if (values_checked)
+    return;
   for (std::size_t v = 0; v < nodes; ++v) {
     float* c = values.data() + 3 * v;
     if (std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]))

@@ -13,6 +13,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/internal/checked_float_decoding.h>
 #include <CGAL/Flow_aligned_surfaces/internal/node_value_checks.h>
 #include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
@@ -92,26 +93,42 @@ Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const st
                                              const Grid_array* mask)
 {
   const std::size_t nodes = n[0] * n[1] * n[2];
+  // Binary arrays are decoded as runs (the velocity in parallel blocks, see
+  // checked_float_decoding.h); only their bad values take the value-by-value checks.
+  auto data = [](const Grid_array& a) {
+    return reinterpret_cast<const unsigned char*>(a.bytes.data()) + a.begin;
+  };
+  auto offset = [](const Grid_array& a, std::size_t i) {
+    return a.file_offset != std::size_t(-1) ? a.file_offset : a.begin + i * binary_type_size(a.type);
+  };
   std::vector<unsigned char> flags;
   if (mask != nullptr) {
     reserve_huge_pages(flags, nodes);
     flags.resize(nodes);
-    decode_grid_array(cursor, *mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-      flags[i] = checked_mask_flag(
-          v, mask->name, [&] { return "node " + std::to_string(i); },
-          [&](const std::string& what) { cursor.fail_at(offset, line, what); });
-    });
+    if (mask->ascii || decode_checked_flags(mask->type, mask->order, data(*mask), nodes, flags.data()))
+      decode_grid_array(cursor, *mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
+        flags[i] = checked_mask_flag(
+            v, mask->name, [&] { return "node " + std::to_string(i); },
+            [&](const std::string& what) { cursor.fail_at(offset, line, what); });
+      });
   }
   std::vector<float> values;
   reserve_huge_pages(values, 3 * nodes);
   values.resize(3 * nodes);
-  decode_grid_array(cursor, velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-    // The constructor replaces a solid node's non-finite values by zeros.
-    values[i] = checked_velocity_component(
+  // The constructor replaces a solid node's non-finite values by zeros.
+  auto check = [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
+    return checked_velocity_component(
         v, i, [&] { return flags.empty() || flags[i / 3] != 0; }, !flags.empty(), velocity.name, "node",
         [&] { return "node " + grid_node_string(n, i / 3); },
         [&](const std::string& what) { cursor.fail_at(offset, line, what); });
-  });
+  };
+  if (velocity.ascii)
+    decode_grid_array(cursor, velocity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
+      values[i] = check(i, v, offset, line);
+    });
+  else
+    decode_checked_floats(velocity.type, velocity.order, data(velocity), 3 * nodes, values.data(),
+                          [&](std::size_t i, double v) { return check(i, v, offset(velocity, i), 0); });
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
   return construct_field<Regular_grid_flow_field_3<K>>(
