@@ -3,13 +3,14 @@
 //
 // Unstructured_flow_field_3's walk from the last hit cell: streams of queries along paths with
 // steps of 0.1, 0.7 and 2.5 cells (so that the walk crosses zero, one or several faces, or gives
-// up and the bucket grid answers) through jittered hexahedra and tetrahedra must return the
+// up and the hierarchy answers) through jittered hexahedra and tetrahedra must return the
 // linear field v(p) = A p + b, which both interpolations reproduce exactly, and a cell that
 // contains the point; paths leaving the mesh get std::nullopt there and are found again when
 // they come back.
 
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 
+#include "jittered_cube_mesh.h"
 #include "test_kernel.h"
 
 #include <gtest/gtest.h>
@@ -25,63 +26,12 @@ namespace {
 
 using namespace fas_test;
 typedef FAS::Unstructured_flow_field_3<K> Field;
-typedef Field::Index Index;
 
 const int n = 8; // cubes per axis of [0, 1]^3
-const int corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                          {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
 
-std::array<double, 3> linear_field(const double* x)
-{
-  return {{1. + 2. * x[0] - x[1] + 0.5 * x[2], -3. + x[0] + 4. * x[1] - 2. * x[2],
-           0.25 - x[0] + x[1] + 3. * x[2]}};
-}
-
-// The unit cube in n^3 cubes with interior nodes jittered by up to 0.2 cell, as hexahedra or
-// Kuhn tetrahedra.
 Field make_field(bool tetrahedra)
 {
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> jitter(-0.2 / n, 0.2 / n);
-  std::vector<double> points;
-  std::vector<float> vectors;
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) {
-        const int ijk[3] = {i, j, k};
-        double x[3];
-        for (int a = 0; a < 3; ++a)
-          x[a] = double(ijk[a]) / n + (ijk[a] > 0 && ijk[a] < n ? jitter(rng) : 0.);
-        points.insert(points.end(), x, x + 3);
-        const std::array<double, 3> v = linear_field(x);
-        for (double c : v)
-          vectors.push_back(static_cast<float>(c));
-      }
-  static const int kuhn[6][4] = {{0, 1, 2, 6}, {0, 1, 5, 6}, {0, 4, 5, 6},
-                                 {0, 4, 7, 6}, {0, 3, 7, 6}, {0, 3, 2, 6}};
-  std::vector<Index> connectivity, offsets{0};
-  std::vector<unsigned char> types;
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        Index h[8];
-        for (int q = 0; q < 8; ++q)
-          h[q] = (i + corner[q][0]) + (n + 1) * ((j + corner[q][1]) + (n + 1) * (k + corner[q][2]));
-        if (tetrahedra) {
-          for (const auto& t : kuhn) {
-            for (int q : t)
-              connectivity.push_back(h[q]);
-            offsets.push_back(static_cast<Index>(connectivity.size()));
-            types.push_back(10);
-          }
-        }
-        else {
-          connectivity.insert(connectivity.end(), h, h + 8);
-          offsets.push_back(static_cast<Index>(connectivity.size()));
-          types.push_back(12);
-        }
-      }
-  return Field(points, connectivity, offsets, types, vectors);
+  return jittered_cube_field(n, tetrahedra, 3);
 }
 
 void check_paths(const Field& field, double step_in_cells)

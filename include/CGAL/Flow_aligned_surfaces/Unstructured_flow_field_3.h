@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -251,27 +252,13 @@ public:
   {
     CGAL_precondition(cell < number_of_cells());
     const Storage& s = *storage_;
-    double box[6];
-    cell_box(s, cell, box);
-    std::vector<std::size_t> candidates;
-    visit_leaves(s, box, [&](std::size_t leaf) {
-      for (std::size_t k = leaf_begin(s, leaf); k < leaf_end(s, leaf); ++k)
-        if (std::size_t(s.order[k]) != cell)
-          candidates.push_back(std::size_t(s.order[k]));
-    });
+    double X[8][3];
+    gather(s, cell, X);
     std::vector<std::size_t> r;
-    const int nf = number_of_faces(s.cell_types[cell]);
-    for (int f = 0; f < nf; ++f) {
-      const std::array<Index, 4> key = face_key(s, cell, f);
-      for (std::size_t c : candidates) {
-        bool shared = false;
-        for (int g = 0; g < number_of_faces(s.cell_types[c]) && !shared; ++g)
-          shared = face_key(s, c, g) == key;
-        if (shared) {
-          r.push_back(c);
-          break;
-        }
-      }
+    for (int f = 0; f < number_of_faces(s.cell_types[cell]); ++f) {
+      std::size_t d, leaf;
+      if (find_neighbour(s, cell, f, X, 0, d, leaf))
+        r.push_back(d);
     }
     return r;
   }
@@ -305,6 +292,9 @@ private:
     std::vector<Index> order;
     std::size_t leaves = 0, first_deepest = 0;
     std::vector<float> node_box;
+    // Unique among the fields of the process (never reused, unlike an address): the key of
+    // the threads' walk caches.
+    std::uint64_t id = new_storage_id();
   };
 
   struct Hit {
@@ -314,11 +304,49 @@ private:
     double xi[3]; // the parametric coordinates of the point in the cell
   };
 
-  struct Hint {
-    const Storage* owner = nullptr;
-    std::size_t cell = 0, leaf = 0;
-    double xi[3]; // where the last query was found in `cell`: Newton's start for the next one
+  // What a thread keeps between its queries of one field: the hint and the face neighbours
+  // met by its walks, in a direct-mapped cache indexed by cell (a cell evicts the one that
+  // had its slot).  Everything it holds is tried before it is trusted (the hint cell must
+  // contain the point, a neighbour must share the face), so a stale entry costs time only.
+  struct Walk_cache {
+    static constexpr std::size_t slots = 1024; // 52 bytes each: 53 KB per thread
+    struct Slot {
+      Index cell = -1;
+      Index neighbour[6]; // -2: not looked for yet; -1: none (a boundary face)
+      Index leaf[6];      // the leaf node holding the neighbour
+    };
+    std::uint64_t owner = 0; // the field storage's `id`; 0: none
+    bool has_hint = false;
+    std::size_t cell = 0, leaf = 0; // the hint: the last cell found, its leaf node
+    double xi[3];                   // where the last query was found in `cell`: Newton's start
+    Slot slot[slots];
+
+    void reset(std::uint64_t id)
+    {
+      owner = id;
+      has_hint = false;
+      for (Slot& e : slot)
+        e.cell = -1;
+    }
+    Slot& of(std::size_t c)
+    {
+      Slot& e = slot[c % slots];
+      if (e.cell != Index(c)) {
+        e.cell = Index(c);
+        for (int f = 0; f < 6; ++f)
+          e.neighbour[f] = -2;
+      }
+      return e;
+    }
   };
+  // Cells a walk visits before the hierarchy takes over.
+  static constexpr int max_walk_steps = 8;
+
+  static std::uint64_t new_storage_id()
+  {
+    static std::atomic<std::uint64_t> last(0);
+    return ++last;
+  }
 
   static const std::vector<float>* float_points(const Storage& s)
   {
@@ -359,9 +387,11 @@ private:
 
   static int number_of_faces(unsigned char t) { return t == TETRA ? 4 : t == HEXAHEDRON ? 6 : 5; }
 
-  // The point indices of face f of cell c (VTK's local numbering), sorted, a triangle padded
-  // with -1 in front: the same for the two cells sharing the face.
-  static std::array<Index, 4> face_key(const Storage& s, std::size_t c, int f)
+  // The local point indices of face f of a cell of type t (VTK's numbering), a triangle padded
+  // with -1 at the end.  Hexahedron: faces r = 0, r = 1, s = 0, s = 1, t = 0, t = 1; tetrahedron:
+  // s = 0, r + s + t = 1, r = 0, t = 0; wedge: t = 0, t = 1, s = 0, r + s = 1, r = 0; pyramid:
+  // t = 0, s = 0, r = 1, s = 1, r = 0 (see `exit_face()`).
+  static const std::array<int, 4>& face_points(unsigned char t, int f)
   {
     static const std::array<int, 4> tet[4] = {{0, 1, 3, -1}, {1, 2, 3, -1}, {2, 0, 3, -1}, {0, 2, 1, -1}};
     static const std::array<int, 4> hex[6] = {{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4},
@@ -370,17 +400,52 @@ private:
         {0, 1, 2, -1}, {3, 5, 4, -1}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}};
     static const std::array<int, 4> pyramid[5] = {
         {0, 3, 2, 1}, {0, 1, 4, -1}, {1, 2, 4, -1}, {2, 3, 4, -1}, {3, 0, 4, -1}};
-    const unsigned char t = s.cell_types[c];
-    const std::array<int, 4>& local = (t == TETRA        ? tet
-                                       : t == HEXAHEDRON ? hex
-                                       : t == WEDGE      ? wedge
-                                                         : pyramid)[f];
+    return (t == TETRA ? tet : t == HEXAHEDRON ? hex : t == WEDGE ? wedge : pyramid)[f];
+  }
+
+  // The point indices of face f of cell c, sorted, a triangle padded with -1 in front: the
+  // same for the two cells sharing the face.
+  static std::array<Index, 4> face_key(const Storage& s, std::size_t c, int f)
+  {
+    const std::array<int, 4>& local = face_points(s.cell_types[c], f);
     const Index* v = s.connectivity.data() + s.offsets[c];
     std::array<Index, 4> key;
     for (int k = 0; k < 4; ++k)
       key[k] = local[k] < 0 ? Index(-1) : v[local[k]];
     std::sort(key.begin(), key.end());
     return key;
+  }
+
+  // The face of a cell of type t through which the parametric point xi (outside the reference
+  // cell) leaves it the most: the face whose defining inequality xi violates by the largest
+  // amount, or -1 if it violates none.
+  static int exit_face(unsigned char t, const double* xi)
+  {
+    const double r = xi[0], s = xi[1], u = xi[2];
+    double violation[6];
+    int n = 0;
+    switch (t) {
+    case TETRA:
+      n = 4, violation[0] = -s, violation[1] = r + s + u - 1., violation[2] = -r, violation[3] = -u;
+      break;
+    case HEXAHEDRON:
+      n = 6, violation[0] = -r, violation[1] = r - 1., violation[2] = -s, violation[3] = s - 1.,
+      violation[4] = -u, violation[5] = u - 1.;
+      break;
+    case WEDGE:
+      n = 5, violation[0] = -u, violation[1] = u - 1., violation[2] = -s, violation[3] = r + s - 1.,
+      violation[4] = -r;
+      break;
+    default: // PYRAMID; above the apex (t > 1) there is no face
+      n = 5, violation[0] = -u, violation[1] = -s, violation[2] = r - 1., violation[3] = s - 1.,
+      violation[4] = -r;
+    }
+    int best = -1;
+    double largest = inside_tolerance;
+    for (int f = 0; f < n; ++f)
+      if (violation[f] > largest) // false for NaN
+        largest = violation[f], best = f;
+    return best;
   }
 
   [[noreturn]] static void fail(const std::string& what)
@@ -678,29 +743,10 @@ private:
     }
   }
 
-  // Calls visit(leaf node) for every leaf whose box meets the box b.
-  template <typename Visit>
-  static void visit_leaves(const Storage& s, const double* b, Visit visit)
-  {
-    std::size_t stack[128];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const std::size_t node = stack[--top];
-      const float* nb = s.node_box.data() + 6 * node;
-      if (nb[0] > b[3] || nb[1] > b[4] || nb[2] > b[5] || nb[3] < b[0] || nb[4] < b[1] || nb[5] < b[2])
-        continue;
-      if (node >= s.leaves - 1) {
-        visit(node);
-        continue;
-      }
-      stack[top++] = 2 * node + 2;
-      stack[top++] = 2 * node + 1;
-    }
-  }
-
-  // Searches the subtree of `root` for a cell containing x, other than `skip`.
-  static bool search(const Storage& s, std::size_t root, const double* x, Hit& hit, std::size_t skip)
+  // Calls accept(cell, leaf node) for the cells of the leaves of the subtree of `root` whose
+  // boxes contain x, until it returns true; returns whether it did.
+  template <typename Accept>
+  static bool search(const Storage& s, std::size_t root, const double* x, const Accept& accept)
   {
     // The tree is complete, so its depth is below 64 for any size_t number of cells, and the
     // stack holds at most one pending sibling per level.
@@ -712,19 +758,59 @@ private:
       if (!in_node_box(s, node, x))
         continue;
       if (node >= s.leaves - 1) {
-        for (std::size_t k = leaf_begin(s, node); k < leaf_end(s, node); ++k) {
-          const std::size_t c = std::size_t(s.order[k]);
-          if (c != skip && try_cell(s, c, x, hit)) {
-            hit.leaf = node;
+        for (std::size_t k = leaf_begin(s, node); k < leaf_end(s, node); ++k)
+          if (accept(std::size_t(s.order[k]), node))
             return true;
-          }
-        }
         continue;
       }
       stack[top++] = 2 * node + 2;
       stack[top++] = 2 * node + 1;
     }
     return false;
+  }
+
+  // The same over the whole tree, nearest to the tree node `start` first: its subtree, then
+  // the siblings' subtrees on the way up to the root (every cell once).
+  template <typename Accept>
+  static bool search_from(const Storage& s, std::size_t start, const double* x, const Accept& accept)
+  {
+    if (search(s, start, x, accept))
+      return true;
+    for (std::size_t node = start; node != 0; node = (node - 1) / 2)
+      if (search(s, node % 2 == 1 ? node + 1 : node - 1, x, accept))
+        return true;
+    return false;
+  }
+
+  // The cell d sharing face f of cell c (whose points are X), that is, holding all the face's
+  // points, and the leaf holding d; searched among the cells whose leaf box contains the
+  // face's centroid (as d's box does), nearest to the tree node `start` first.  Returns false
+  // on the boundary.
+  static bool find_neighbour(const Storage& s, std::size_t c, int f, const double (*X)[3], std::size_t start,
+                             std::size_t& d, std::size_t& leaf)
+  {
+    const std::array<int, 4>& local = face_points(s.cell_types[c], f);
+    const int m = local[3] < 0 ? 3 : 4;
+    const Index* v = s.connectivity.data() + s.offsets[c];
+    Index P[4];
+    double centroid[3] = {0., 0., 0.};
+    for (int k = 0; k < m; ++k) {
+      P[k] = v[local[k]];
+      for (int a = 0; a < 3; ++a)
+        centroid[a] += X[local[k]][a] / m;
+    }
+    return search_from(s, start, centroid, [&](std::size_t e, std::size_t node) {
+      if (e == c)
+        return false;
+      const Index* w = s.connectivity.data() + s.offsets[e];
+      const int n = points_of(s.cell_types[e]);
+      for (int k = 0; k < m; ++k)
+        if (std::find(w, w + n, P[k]) == w + n)
+          return false;
+      d = e;
+      leaf = node;
+      return true;
+    });
   }
 
   // Shape functions N and their derivatives dN/d(r, s, t) at xi, in VTK's conventions.
@@ -808,9 +894,11 @@ private:
 
   // Inverts the map x(xi) = p of the cell of type `type` with points X by Newton's method from
   // `start` (in the reference cell) or else from the cell's parametric center.  Returns whether
-  // it converged and xi is in the reference cell, with the shape function values and xi in hit.
+  // it converged and xi is in the reference cell, with the shape function values and xi in hit;
+  // else, if `estimate` is not null, stores there the last iterate (exact where the iteration
+  // converged outside the reference cell, NaN or huge where it diverged), for the walk.
   static bool invert(unsigned char type, const double (*X)[3], int n, const double* p, Hit& hit,
-                     const double* start = nullptr)
+                     const double* start = nullptr, double* estimate = nullptr)
   {
     double size = 0.;
     for (int i = 0; i < n; ++i)
@@ -835,10 +923,16 @@ private:
     if (start != nullptr && type != TETRA) // linear maps need no start
       for (int a = 0; a < 3; ++a)
         xi[a] = start[a];
+    auto reject = [&] {
+      if (estimate != nullptr)
+        for (int a = 0; a < 3; ++a)
+          estimate[a] = xi[a];
+      return false;
+    };
     double N[8], dN[8][3];
     // Linear cells converge in one step; the trilinear map in a few for reasonable cells.  The
     // cap bounds the cost of points that are far outside a cell (in its bounding box only).
-    const int max_iterations = type == TETRA ? 2 : 12;
+    const int max_iterations = type == TETRA ? 1 : 12;
     bool converged = false;
     for (int it = 0; it < max_iterations; ++it) {
       shape(type, xi, N, dN);
@@ -874,7 +968,7 @@ private:
       }
       if (!(step < 1e3)) // diverging: far outside the cell
         break;
-      if (step < 1e-13) {
+      if (step < 1e-13 || type == TETRA) { // a tetrahedron's map is affine: one step solves it
         converged = true;
         break;
       }
@@ -884,7 +978,7 @@ private:
         for (int a = 0; a < 3; ++a)
           far = far || xi[a] < -0.5 || xi[a] > 1.5;
         if (far)
-          return false;
+          return reject();
       }
     }
     if (!converged) {
@@ -899,7 +993,7 @@ private:
         err = (std::max)(err, std::abs(x - p[a]));
       }
       if (!(err <= 1e-12 * size))
-        return false;
+        return reject();
     }
     if (type == PYRAMID && xi[2] >= 1. - 1e-8) {
       // At the apex r and s are undetermined and irrelevant.
@@ -907,7 +1001,7 @@ private:
       xi[1] = (std::min)((std::max)(xi[1], 0.), 1.);
     }
     if (!in_reference_cell(type, xi))
-      return false;
+      return reject();
     hit.n = shape(type, xi, hit.N, dN);
     for (int a = 0; a < 3; ++a)
       hit.xi[a] = xi[a];
@@ -940,6 +1034,48 @@ private:
     return Vector_3(FT(r[0]), FT(r[1]), FT(r[2]));
   }
 
+  // The walk from the hint's cell: invert the cell's map at x; if x is outside, cross the face
+  // through which the parametric point leaves the cell (`exit_face()`) into the neighbour
+  // sharing it (from the thread's cache, else found in the hierarchy and cached), and again,
+  // for at most `max_walk_steps` cells.  Gives up (false) at the boundary, on a cell whose map
+  // diverges, or when x is not in the box of the hint leaf's grandparent (about 32 cells).
+  static bool walk(const Storage& s, const double* x, Hit& hit, Walk_cache& w)
+  {
+    std::size_t c = w.cell, leaf = w.leaf, near = leaf;
+    for (int up = 0; up < 2 && near != 0; ++up)
+      near = (near - 1) / 2;
+    if (!in_node_box(s, near, x))
+      return false;
+    const double* start = w.xi;
+    for (int step = 0;; ++step) {
+      double X[8][3], xi[3], b[6];
+      const int n = gather(s, c, X);
+      if (invert(s.cell_types[c], X, n, x, hit, start, xi)) {
+        points_box(X, n, b);
+        if (!in_box(b, x)) // as try_cell(): points outside the cell's box are not in it
+          return false;
+        hit.cell = c;
+        hit.leaf = leaf;
+        return true;
+      }
+      const int f = exit_face(s.cell_types[c], xi);
+      if (f < 0 || step + 1 == max_walk_steps)
+        return false;
+      typename Walk_cache::Slot& e = w.of(c);
+      if (e.neighbour[f] == -2) {
+        std::size_t d, d_leaf;
+        const bool found = find_neighbour(s, c, f, X, leaf, d, d_leaf);
+        e.neighbour[f] = found ? Index(d) : Index(-1);
+        e.leaf[f] = found ? Index(d_leaf) : Index(-1);
+      }
+      if (e.neighbour[f] < 0)
+        return false;
+      c = std::size_t(e.neighbour[f]);
+      leaf = std::size_t(e.leaf[f]);
+      start = nullptr;
+    }
+  }
+
   bool find(const double* x, Hit& hit) const
   {
     const Storage& s = *storage_;
@@ -947,28 +1083,24 @@ private:
     if (!(x[0] >= s.bbox[0] && x[0] <= s.bbox[3] && x[1] >= s.bbox[1] && x[1] <= s.bbox[4] &&
           x[2] >= s.bbox[2] && x[2] <= s.bbox[5]))
       return false;
-    static thread_local Hint hint;
-    bool found = false;
-    if (hint.owner == &s && hint.cell < s.cell_types.size() && hint.leaf + 1 >= s.leaves &&
-        hint.leaf < 2 * s.leaves - 1) { // (a field built where a destroyed one was: any valid hint)
-      // The hint's cell, its leaf, then the siblings' subtrees on the way up: every cell once.
-      std::size_t node = hint.leaf;
-      found = (in_node_box(s, node, x) && try_cell(s, hint.cell, x, hit, hint.xi)) ||
-              search(s, node, x, hit, hint.cell);
-      for (; !found && node != 0; node = (node - 1) / 2)
-        found = search(s, node % 2 == 1 ? node + 1 : node - 1, x, hit, hint.cell);
-      if (found && hit.cell == hint.cell)
-        hit.leaf = hint.leaf;
-    }
-    else {
-      found = search(s, 0, x, hit, std::size_t(-1));
-    }
+    static thread_local Walk_cache w;
+    if (w.owner != s.id)
+      w.reset(s.id);
+    const auto try_any = [&](std::size_t c, std::size_t node) {
+      if (!try_cell(s, c, x, hit))
+        return false;
+      hit.leaf = node;
+      return true;
+    };
+    // The walk, else the hierarchy, nearest to the hint first.
+    const bool found =
+        w.has_hint ? walk(s, x, hit, w) || search_from(s, w.leaf, x, try_any) : search(s, 0, x, try_any);
     if (found) {
-      hint.owner = &s;
-      hint.cell = hit.cell;
-      hint.leaf = hit.leaf;
+      w.has_hint = true;
+      w.cell = hit.cell;
+      w.leaf = hit.leaf;
       for (int a = 0; a < 3; ++a)
-        hint.xi[a] = hit.xi[a];
+        w.xi[a] = hit.xi[a];
     }
     return found;
   }
