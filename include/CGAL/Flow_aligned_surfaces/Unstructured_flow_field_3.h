@@ -47,28 +47,43 @@ namespace Flow_aligned_surfaces {
 /// - `13` wedge: triangle `0 1 2`, triangle `3 4 5`, edges `0-3`, `1-4`, `2-5`;
 /// - `14` pyramid: quadrilateral base `0 1 2 3` in order, apex `4`.
 ///
-/// A point is located with a bounding volume hierarchy: a complete binary tree of float boxes
-/// (rounded outwards) whose leaves hold 8 cells each, built top down by splitting the cells at
-/// the median of their bounding boxes' centres along the longest axis.  A query first tries the cell that answered the previous query of
-/// the same thread on the same field (the hint, with its parametric position as Newton's
-/// start), then the hint's leaf, then the sibling subtrees on the way from the hint's leaf to
-/// the root, nearest first, so that a coherent query stays near the bottom of the tree.  A cell
-/// contains `p` when the Newton inversion of its isoparametric map converges and the parametric
-/// coordinates lie in the reference cell up to `1e-10` (so that points on shared faces and on
-/// the mesh boundary are inside; points outside the bounding box of the points never are).
-/// On a face shared by two conforming cells (the same points) both give the same value, up to
-/// rounding; a quadrilateral face against two triangles is not conforming.  Degenerate cells
+/// A point is located by a walk from the cell that answered the previous query of the same
+/// thread on the same field (the hint), for the coherent queries that integration and
+/// deformation make, and else with a bounding volume hierarchy: a complete binary tree of
+/// float boxes (rounded outwards) whose leaves hold 8 cells each, built top down by splitting
+/// the cells at the median of their bounding boxes' centres along the longest axis.  The walk
+/// inverts the hint cell's map at `p` (Newton's method from the previous parametric position);
+/// if `p` is outside, it crosses the face through which the parametric point leaves the
+/// reference cell the most into the cell sharing that face, and so on, for at most 8 cells.
+/// It gives up at the mesh boundary, on a cell whose inversion diverges, and when `p` is not
+/// in the box of the hint leaf's grandparent in the tree (about 32 cells around the hint);
+/// then the hierarchy is searched from the hint's leaf upwards (its leaf, then the sibling
+/// subtrees on the way to the root), so that a query near the hint stays near the bottom of
+/// the tree.  A cell contains `p` when the Newton inversion of its isoparametric map converges
+/// and the parametric coordinates lie in the reference cell up to `1e-10` (so that points on
+/// shared faces and on the mesh boundary are inside; points outside the bounding box of the
+/// points never are).  On a face shared by two conforming cells (the same points) both give the
+/// same value, up to rounding; a quadrilateral face against two triangles is not conforming
+/// (the walk does not cross it, the hierarchy still finds the cell beyond).  Degenerate cells
 /// (zero volume) contain no point.
 ///
-/// The hint is kept in a `thread_local` cache, one entry per thread, keyed by the field's
-/// shared storage: `operator()` is `const` and safe to call from several threads at once, a
-/// copy shares the hint of its original, and a thread alternating between two fields only
-/// loses the hint.  A stale hint costs one rejected box, never a wrong answer.
+/// The face neighbours are not stored: the walk finds the cell beyond a face in the hierarchy
+/// (among the cells of the leaves whose box holds the face's centroid, nearest to the current
+/// cell's leaf first, the first that holds all the face's points) and remembers it in a
+/// per-thread cache of 1024 cells (direct-mapped by cell index, 53 KB per thread, each face's
+/// neighbour looked for on the first crossing).  The hint and the cache are `thread_local`,
+/// keyed by a number that identifies the field's shared storage (never reused within the
+/// process): `operator()` is `const` and safe to call from several threads at once (a TBB
+/// loop, for instance), a copy shares the cache key of its original, and a thread alternating
+/// between two fields starts both afresh at each switch.  Whatever the hint and the cache say
+/// is checked before it is used (the cell must contain `p`, a neighbour must hold the face's
+/// points), so a stale entry costs time, never a wrong answer.
 ///
 /// Memory: the arrays as given (points in the precision given, 32-bit indices), plus 4 bytes
-/// per cell for the cells' order in the leaves and 2 float boxes (48 bytes) per leaf, about 10 bytes per cell
-/// in all.  Copies share the arrays and the hierarchy (through `std::shared_ptr`), so copying a
-/// field is cheap.  A query performs no allocation.
+/// per cell for the cells' order in the leaves and 2 float boxes (48 bytes) per leaf, about 10
+/// bytes per cell in all; and per thread that queries the field, the 53 KB cache.  Copies share
+/// the arrays and the hierarchy (through `std::shared_ptr`), so copying a field is cheap.  A
+/// query performs no allocation.
 ///
 /// \tparam GeomTraits a model of `Kernel`; the coordinates are converted to `double` with
 ///         `CGAL::to_double()`.
@@ -246,7 +261,8 @@ public:
   /// the VTK cell types
   const std::vector<unsigned char>& cell_types() const { return storage_->cell_types; }
   /// the cells sharing a face with cell `cell` (conforming faces with exactly the same points),
-  /// in the order of the cell's faces; computed on each call (from the hierarchy).
+  /// in the order of the cell's faces; computed on each call (from the hierarchy, as the walk
+  /// does, but without its cache).
   /// \pre `cell < number_of_cells()`
   std::vector<std::size_t> face_neighbours(std::size_t cell) const
   {
@@ -968,7 +984,11 @@ private:
       }
       if (!(step < 1e3)) // diverging: far outside the cell
         break;
-      if (step < 1e-13 || type == TETRA) { // a tetrahedron's map is affine: one step solves it
+      // Newton's error after a step of size h is about C h^2 (C: the map's second derivatives
+      // over its first, O(1) in parametric units for usable cells), so after a step below 1e-8
+      // xi is as accurate as rounding allows, without one more step to see it.  A
+      // tetrahedron's map is affine: one step solves it.
+      if (step < 1e-8 || type == TETRA) {
         converged = true;
         break;
       }
