@@ -53,8 +53,8 @@ bool save_surface(const fs::path& path, const Mesh& tm, const Flow& flow)
   if (path.extension() == ".vtp") {
     std::string error;
     if (FAS::IO::write_VTP(path.string(), tm, {{"velocity", 3, vertex_velocities(tm, flow)}},
-                           {{"normalized_flux", 1, face_fluxes(tm, flow)}}, CGAL::parameters::default_values(),
-                           &error))
+                           {{"normalized_flux", 1, face_fluxes(tm, flow)}},
+                           CGAL::parameters::default_values(), &error))
       return true;
     std::cerr << "error: " << error << "\n";
     return false;
@@ -65,15 +65,25 @@ bool save_surface(const fs::path& path, const Mesh& tm, const Flow& flow)
   return false;
 }
 
+std::size_t number_of_words(const std::string& text)
+{
+  std::size_t words = 0;
+  for (std::size_t i = 0; i < text.size(); ++i)
+    words += text[i] != ' ' && (i == 0 || text[i - 1] == ' ');
+  return words;
+}
+
 bool write_csv(const fs::path& path, const FAS::Session_replay_report& replay)
 {
   std::ofstream os(path);
   os << std::setprecision(17);
-  os << "iteration,session_line,normalized_flux,max_rotation_angle,max_vertex_step,converged,moves_before\n";
+  os << "iteration,session_line,normalized_flux,max_rotation_angle,max_vertex_step,converged,number_of_moves_"
+        "before,moves_before\n";
   for (const FAS::Session_iteration& it : replay.iterations)
     os << it.report.iteration << ',' << it.line << ',' << it.report.normalized_flux << ','
-       << it.report.max_rotation_angle << ',' << it.report.max_vertex_step << ',' << (it.report.converged ? 1 : 0)
-       << ',' << it.moves_before << '\n';
+       << it.report.max_rotation_angle << ',' << it.report.max_vertex_step << ','
+       << (it.report.converged ? 1 : 0) << ',' << number_of_words(it.moves_before) << ',' << it.moves_before
+       << '\n';
   if (!os) {
     std::cerr << "error: cannot write " << path << "\n";
     return false;
@@ -83,18 +93,21 @@ bool write_csv(const fs::path& path, const FAS::Session_replay_report& replay)
 
 // Figure 6: f_n per iteration, one curve per session; an iteration that follows a move is
 // marked with a ring (its flux is the spike that the move caused).
-bool plot_flux(const fs::path& png, const std::vector<fs::path>& csv_files, const std::vector<std::string>& titles)
+bool plot_flux(const fs::path& png, const std::vector<fs::path>& csv_files,
+               const std::vector<std::string>& titles)
 {
-  std::string script = "set terminal pngcairo size 960,540 font ',11'\nset output '" + png.string() +
-                       "'\nset datafile separator comma\nset xlabel 'iteration'\nset ylabel "
-                       "'normalized flux f_n'\nset yrange [-0.02:1.02]\nset grid\nset key outside right noenhanced\n"
-                       "plot ";
+  std::string script =
+      "set terminal pngcairo size 960,540 font ',11'\nset output '" + png.string() +
+      "'\nset datafile separator comma\nset title 'normalized flux of every iteration; rings: after a user "
+      "operation (cf. the paper, Figure 6)' noenhanced\nset xlabel 'iteration'\nset ylabel "
+      "'normalized flux f_n'\nset yrange [-0.02:1.02]\nset grid\nset key outside right noenhanced\n"
+      "plot ";
   for (std::size_t i = 0; i < csv_files.size(); ++i) {
     const std::string file = "'" + csv_files[i].string() + "'";
     script += (i ? ", " : "") + file + " skip 1 using 1:3 with linespoints pt 7 ps 0.6 lc " +
               std::to_string(i + 1) + " title '" + titles[i] + "', " + file +
-              " skip 1 using 1:(strlen(strcol(7)) > 0 ? $3 : NaN) with points pt 6 ps 1.8 lc " +
-              std::to_string(i + 1) + " notitle";
+              " skip 1 using 1:($7 > 0 ? $3 : NaN) with points pt 6 ps 1.8 lc " + std::to_string(i + 1) +
+              " notitle";
   }
   script += "\n";
   FILE* gnuplot = popen("gnuplot 2>&1", "w");
@@ -131,7 +144,8 @@ int main(int argc, char** argv)
     }
   }
   if (files.empty()) {
-    std::cerr << "usage: " << argv[0] << " [--flow NAME | --field FILE [--array NAME]] [--output DIR] SESSION...\n"
+    std::cerr << "usage: " << argv[0]
+              << " [--flow NAME | --field FILE [--array NAME]] [--output DIR] SESSION...\n"
               << "error: no session file given\n";
     return 2;
   }
@@ -207,7 +221,8 @@ int main(int argc, char** argv)
       const FAS::Session_replay_report replay =
           FAS::replay_session(deformation, s.session, [&](const FAS::IO::Session_operation& op) {
             if (!save_surface(out / op.path, tm, *flow))
-              throw std::runtime_error("session line " + std::to_string(op.line) + ": cannot save " + op.path);
+              throw std::runtime_error("session line " + std::to_string(op.line) + ": cannot save " +
+                                       op.path);
           });
       csv_files.push_back(out / (stem + ".csv"));
       titles.push_back(stem);
