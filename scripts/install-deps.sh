@@ -17,6 +17,7 @@ packages=(
   zlib1g-dev                            # compressed AmiraMesh (HxZip) and NRRD (gzip) data, optional
   libgtest-dev libgmock-dev libbenchmark-dev
   doxygen graphviz                      # documentation, built in the tests
+  gnuplot-nox                           # the flux plot of replayed sessions (Figure 6)
 )
 
 missing=()

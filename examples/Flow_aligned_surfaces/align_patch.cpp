@@ -12,19 +12,10 @@
 // mask array "inside"); without --center the patch is placed at the middle of the data's box,
 // and without --normal it faces the flow there (orthogonal) or contains it (tangential).
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include "example_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
-#include <CGAL/Flow_aligned_surfaces/IO/read_flow_field.h>
-#include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
-#include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
-#include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
-#include <CGAL/Flow_aligned_surfaces/measure.h>
-
-#include <CGAL/Surface_mesh/IO/PLY.h>
-#include <boost/property_map/property_map.hpp>
 
 #include <array>
 #include <cmath>
@@ -40,14 +31,7 @@
 #include <string>
 #include <vector>
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Vector = Kernel::Vector_3;
-using Mesh = CGAL::Surface_mesh<Point>;
-namespace FAS = CGAL::Flow_aligned_surfaces;
-
-// Every built-in flow behind one type, so that the deformation is compiled once.
-using Flow = std::function<std::optional<Vector>(const Point&)>;
+using namespace examples;
 
 struct Scene {
   Flow flow;
@@ -56,48 +40,36 @@ struct Scene {
   double size;
 };
 
+// A built-in flow with a tangential and an orthogonal placement of the patch in it.
 std::optional<Scene> make_scene(const std::string& name)
 {
-  if (name == "cylinder") // potential flow past a cylinder of radius 1 along z
-    return Scene{FAS::Cylinder_potential_flow<Kernel>(1.0, 1.0),
-                 Point(-2.0, 0.8, 0),
-                 Point(-2.2, 0.6, 0.3),
-                 Vector(0.3, 1.0, 0.4),
-                 Vector(1.0, 0.4, 0.2),
-                 1.2};
+  const std::optional<Flow> flow = make_built_in_flow(name);
+  if (!flow)
+    return std::nullopt;
+  if (name == "cylinder")
+    return Scene{
+        *flow, Point(-2.0, 0.8, 0), Point(-2.2, 0.6, 0.3), Vector(0.3, 1.0, 0.4), Vector(1.0, 0.4, 0.2), 1.2};
   if (name == "point-source")
-    return Scene{FAS::Point_source_flow<Kernel>(Point(0, 0, 0), 1.0),
-                 Point(0, 0, 2),
-                 Point(0.2, -0.1, 2.0),
-                 Vector(1.0, 0.2, 0.1),
-                 Vector(0.3, 0.2, 1.0),
+    return Scene{*flow, Point(0, 0, 2), Point(0.2, -0.1, 2.0), Vector(1.0, 0.2, 0.1), Vector(0.3, 0.2, 1.0),
                  1.0};
   if (name == "sphere")
-    return Scene{FAS::Sphere_potential_flow<Kernel>(1.0, 1.0),
-                 Point(0.8, 0.2, -2.0),
-                 Point(0.3, 0.2, -2.0),
-                 Vector(1.0, 0.3, 0.2),
-                 Vector(0.2, 0.1, 1.0),
-                 1.2};
+    return Scene{
+        *flow, Point(0.8, 0.2, -2.0), Point(0.3, 0.2, -2.0), Vector(1.0, 0.3, 0.2), Vector(0.2, 0.1, 1.0),
+        1.2};
   if (name == "helical")
-    return Scene{FAS::Helical_flow<Kernel>(0.5), Point(1.0, 0.2, 0),    Point(1.0, 0.0, 0.0),
-                 Vector(1.0, 0.3, 0.2),          Vector(0.0, 1.0, 0.3), 0.8};
+    return Scene{
+        *flow, Point(1.0, 0.2, 0), Point(1.0, 0.0, 0.0), Vector(1.0, 0.3, 0.2), Vector(0.0, 1.0, 0.3), 0.8};
   if (name == "hill")
-    return Scene{FAS::Hill_spherical_vortex<Kernel>(1.0, 1.0),
-                 Point(0.5, 0.1, 0.2),
-                 Point(0.5, 0.0, 0.0),
-                 Vector(0.2, 1.0, 0.3),
-                 Vector(0.2, 0.1, 1.0),
-                 0.4};
+    return Scene{
+        *flow, Point(0.5, 0.1, 0.2), Point(0.5, 0.0, 0.0), Vector(0.2, 1.0, 0.3), Vector(0.2, 0.1, 1.0), 0.4};
   if (name == "burgers")
-    return Scene{FAS::Burgers_vortex<Kernel>(), Point(1.0, 0, 0.5),    Point(0.8, 0.3, 0.8),
-                 Vector(0, 1.0, 0.2),           Vector(0.2, 0.1, 1.0), 0.6};
+    return Scene{*flow, Point(1.0, 0, 0.5), Point(0.8, 0.3, 0.8), Vector(0, 1.0, 0.2), Vector(0.2, 0.1, 1.0),
+                 0.6};
   if (name == "abc")
-    return Scene{FAS::ABC_flow<Kernel>(), Point(1, 1, 1),        Point(1, 1, 1),
-                 Vector(0.3, 0.2, 1.0),   Vector(0.5, 0.8, 1.0), 0.5};
+    return Scene{*flow, Point(1, 1, 1), Point(1, 1, 1), Vector(0.3, 0.2, 1.0), Vector(0.5, 0.8, 1.0), 0.5};
   if (name == "tornado")
-    return Scene{FAS::Crawfis_tornado<Kernel>(), Point(0.5, 0.3, 0.5),  Point(0.5, 0.5, 0.3),
-                 Vector(0.1, 1.0, 0.1),          Vector(0.1, 0.1, 1.0), 0.3};
+    return Scene{
+        *flow, Point(0.5, 0.3, 0.5), Point(0.5, 0.5, 0.3), Vector(0.1, 1.0, 0.1), Vector(0.1, 0.1, 1.0), 0.3};
   return std::nullopt;
 }
 
@@ -121,15 +93,9 @@ struct Placement {
 std::optional<Scene> make_data_scene(const std::string& file, const std::string& array,
                                      const Placement& placement)
 {
-  std::optional<FAS::Sampled_flow_field_3<Kernel>> field;
-  std::string error;
-  const bool read = array.empty()
-                        ? FAS::IO::read_flow_field(file, field, CGAL::parameters::default_values(), &error)
-                        : FAS::IO::read_flow_field(file, field, FAS::parameters::array_name(array), &error);
-  if (!read) {
-    std::cerr << "error: --field: " << error << "\n";
+  const std::optional<FAS::Sampled_flow_field_3<Kernel>> field = read_data_field(file, array);
+  if (!field)
     return std::nullopt;
-  }
   const CGAL::Bbox_3 box = field->bbox();
   const Point center = placement.center
                            ? Point((*placement.center)[0], (*placement.center)[1], (*placement.center)[2])
@@ -154,14 +120,6 @@ std::optional<Scene> make_data_scene(const std::string& file, const std::string&
   return Scene{Flow(*field), center, center, tangential_normal, orthogonal_normal, size};
 }
 
-std::vector<double> face_fluxes(const Mesh& tm, const Flow& flow)
-{
-  std::vector<double> values(tm.number_of_faces());
-  FAS::compute_face_normalized_flux(
-      tm, flow, boost::make_iterator_property_map(values.begin(), get(CGAL::face_index, tm)));
-  return values;
-}
-
 // Opens `path` for writing, or says why not.
 std::optional<std::ofstream> open_output(const std::filesystem::path& path)
 {
@@ -172,32 +130,6 @@ std::optional<std::ofstream> open_output(const std::filesystem::path& path)
   }
   os << std::setprecision(10);
   return os;
-}
-
-std::vector<double> vertex_velocities(const Mesh& tm, const Flow& flow)
-{
-  std::vector<double> values;
-  for (auto v : tm.vertices()) {
-    const auto sample = flow(tm.point(v));
-    const Vector w = sample ? *sample : Vector(0, 0, 0);
-    values.insert(values.end(), {w.x(), w.y(), w.z()});
-  }
-  return values;
-}
-
-bool write_surface(const std::filesystem::path& stem, const Mesh& tm, const Flow& flow)
-{
-  if (!CGAL::IO::write_PLY(stem.string() + ".ply", tm, CGAL::parameters::stream_precision(17))) {
-    std::cerr << "error: cannot write " << stem.string() << ".ply\n";
-    return false;
-  }
-  std::string error;
-  const bool vtp = FAS::IO::write_VTP(
-      stem.string() + ".vtp", tm, {{"velocity", 3, vertex_velocities(tm, flow)}},
-      {{"normalized_flux", 1, face_fluxes(tm, flow)}}, CGAL::parameters::default_values(), &error);
-  if (!vtp)
-    std::cerr << "error: " << error << "\n";
-  return vtp;
 }
 
 struct Run_summary {
@@ -298,8 +230,8 @@ int main(int argc, char** argv)
       }
     }
     else {
-      std::cerr << "usage: " << argv[0]
-                << " [--flow cylinder|point-source|sphere|helical|hill|burgers|abc|tornado | --field FILE"
+      std::cerr << "usage: " << argv[0] << " [--flow " << built_in_flow_names()
+                << " | --field FILE"
                    " [--array NAME]] [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]"
                    " [--center X,Y,Z] [--normal X,Y,Z] [--size S]\n"
                 << "error: unknown or incomplete argument '" << arg << "'\n";

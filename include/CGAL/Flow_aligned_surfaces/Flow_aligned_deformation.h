@@ -15,6 +15,7 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_FLOW_ALIGNED_DEFORMATION_H
 
 #include <CGAL/Flow_aligned_surfaces/Alignment.h>
+#include <CGAL/Flow_aligned_surfaces/grow_boundary.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
@@ -101,10 +102,11 @@ public:
       typename CGAL::Default::Get<SparseLinearSolver, internal::Default_sparse_linear_solver>::type;
   /// The type of the callable that receives every iteration's report.
   using Visitor = std::function<void(const Iteration_report&)>;
+  /// The vertex descriptor of `TriangleMesh`.
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   /// @}
 
 private:
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Positions = internal::Positions;
 
 public:
@@ -115,6 +117,7 @@ public:
   (\f$ M_0 \f$) and factors \f$ L + W \f$ once.
 
   \param tm the surface; it must stay alive and keep its connectivity while this object is used
+            (except through `grow()`)
   \param field the flow field (copied)
   \param alignment tangential (stream surface) or orthogonal (seeding surface)
   \param np an optional sequence of named parameters among the ones listed below
@@ -234,9 +237,9 @@ public:
     const auto fim = CGAL::get_initialized_face_index_map(tm, np);
     m_vertices = internal::vertices_in_index_order(tm, vim);
     m_arrays = internal::make_mesh_arrays(tm, vim, fim);
-    const Positions reference = internal::read_positions(m_vertices, m_vpm);
-    internal::check_finite_positions(reference, "Flow_aligned_deformation: tm");
-    rebuild_operators(reference);
+    m_reference = internal::read_positions(m_vertices, m_vpm);
+    internal::check_finite_positions(m_reference, "Flow_aligned_deformation: tm");
+    rebuild_operators(m_reference);
   }
   /// @}
 
@@ -412,8 +415,96 @@ public:
   }
   /// @}
 
+  /// \name Growing
+  /// @{
+
+  /*!
+  Grows the surface at its boundary by `distance` (Section 4 of the paper), as
+  `grow_boundary()` does to the current surface \f$ M_k \f$, and applies the same update to the
+  reference mesh \f$ M_0 \f$: there each offset is expressed in \f$ M_0 \f$'s own boundary frame
+  (boundary tangent, outward direction, normal) at the same vertex, and each new vertex takes
+  the barycentric coordinates it has in the untessellated strip of \f$ M_k \f$ in the same
+  strip of \f$ M_0 \f$.  Then the operators are rebuilt on \f$ M_0 \f$ and \f$ L + W \f$ is
+  refactored once (`number_of_factorizations()` grows by one); iterations continue from the
+  grown surface.
+
+  With `across_flow`, the flow is the deformation's own field.
+
+  \param distance the offset, positive and finite
+  \param np an optional sequence of named parameters among `growth_direction` and `across_flow`,
+         with the meanings of `grow_boundary()`
+
+  \returns what was grown, with the times of the offset, the tessellation, the placement in
+           \f$ M_0 \f$ and the refactorization.
+  \throws std::invalid_argument, before anything is modified, in the cases of `grow_boundary()`,
+          and if `across_flow` is asked of an orthogonal deformation (whose surface is across the
+          flow everywhere, so no boundary direction is across it).
+  \throws std::runtime_error if the refactorization fails (the mesh is then grown, but this
+          object must not be used any more).
+  \sa `grow_boundary()`
+  */
+  template <class NamedParameters = parameters::Default_named_parameters>
+  Growth_report grow(double distance, const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    const char* caller = "Flow_aligned_deformation::grow()";
+    const internal::Growth_options options = internal::read_growth_options(np, caller);
+    if (options.across_flow && m_alignment != Alignment::TANGENTIAL)
+      internal::throw_growth_error(caller,
+                                   "across_flow needs a tangential deformation (this one is orthogonal)");
+    const Positions x = internal::read_positions(m_vertices, m_vpm);
+    internal::check_finite_positions(x, std::string(caller) + ": tm");
+
+    auto vim = get(CGAL::dynamic_vertex_property_t<std::size_t>(), m_tm);
+    for (std::size_t i = 0; i < m_vertices.size(); ++i)
+      put(vim, m_vertices[i], i);
+    auto construct_point = m_gt.construct_point_3_object();
+    const internal::Boundary_strip strip = internal::make_boundary_strip(
+        m_tm, vim, x, &m_reference, distance, options,
+        [&](const Eigen::Vector3d& p) {
+          return internal::sample_flow(m_field, construct_point(p.x(), p.y(), p.z()));
+        },
+        caller);
+
+    const auto append_start = std::chrono::steady_clock::now();
+    const std::vector<vertex_descriptor> added = internal::append_strip(m_tm, m_vpm, m_gt, m_vertices, strip);
+    const Eigen::Index m = m_reference.rows();
+    m_reference.conservativeResize(m + Eigen::Index(added.size()), 3);
+    for (std::size_t i = 0; i < added.size(); ++i) {
+      m_reference.row(m + Eigen::Index(i)) = strip.reference_points[i].transpose();
+      put(vim, added[i], m_vertices.size());
+      m_vertices.push_back(added[i]);
+    }
+    auto fim = get(CGAL::dynamic_face_property_t<std::size_t>(), m_tm);
+    std::size_t face_index = 0;
+    for (auto f : faces(m_tm))
+      put(fim, f, face_index++);
+    m_arrays = internal::make_mesh_arrays(m_tm, vim, fim);
+    const auto factor_start = std::chrono::steady_clock::now();
+    rebuild_operators(m_reference);
+    const auto end = std::chrono::steady_clock::now();
+
+    Growth_report report = strip.report;
+    report.reference_map_ms += std::chrono::duration<double, std::milli>(factor_start - append_start).count();
+    report.factor_ms = std::chrono::duration<double, std::milli>(end - factor_start).count();
+    return report;
+  }
+  /// @}
+
   /// \name Access
   /// @{
+
+  /// The vertices of the surface in the order of the rows of the operators (the order of the
+  /// vertex index map at construction, then the vertices added by `grow()`).
+  const std::vector<vertex_descriptor>& vertices() const
+  {
+    return m_vertices;
+  }
+  /// The position in the reference mesh \f$ M_0 \f$ of `vertices()[i]`.
+  Point_3 reference_point(std::size_t i) const
+  {
+    const auto r = m_reference.row(Eigen::Index(i));
+    return m_gt.construct_point_3_object()(r[0], r[1], r[2]);
+  }
 
   /// The surface.
   const TriangleMesh& mesh() const
@@ -663,6 +754,7 @@ private:
   double m_relative_constraint_weight = 1e-3;
 
   std::vector<vertex_descriptor> m_vertices; // in vertex-index order
+  Positions m_reference;                     // M_0, row i for m_vertices[i]
   internal::Mesh_arrays m_arrays;
   internal::Poisson_operators m_ops;
   std::vector<Eigen::Index> m_constrained_vertices;

@@ -33,6 +33,9 @@ CGAL_FAS_DECLARE_TAG(use_parallelism)
 CGAL_FAS_DECLARE_TAG(patch_axis)
 CGAL_FAS_DECLARE_TAG(array_name)
 CGAL_FAS_DECLARE_TAG(mask_array_name)
+CGAL_FAS_DECLARE_TAG(growth_direction)
+CGAL_FAS_DECLARE_TAG(across_flow)
+CGAL_FAS_DECLARE_TAG(flow_field)
 #undef CGAL_FAS_DECLARE_TAG
 } // namespace internal_np
 /// \endcond
@@ -88,6 +91,11 @@ CGAL_FAS_NAMED_PARAMETER(array_name, std::string)
 /// The name of the node mask array (nonzero = fluid) that a flow field reader reads, or that a
 /// writer writes.  Default: `"inside"` (read only if present); the empty string reads no mask.
 CGAL_FAS_NAMED_PARAMETER(mask_array_name, std::string)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Growing (`grow_boundary()`, `Flow_aligned_deformation::grow()`): grow only where the outward
+/// direction of the boundary is within 60 degrees of the direction across the flow, and along
+/// that direction (`n × v/|v|` signed outward).  Default: `false`.
+CGAL_FAS_NAMED_PARAMETER(across_flow, bool)
 
 #undef CGAL_FAS_NAMED_PARAMETER
 
@@ -99,6 +107,29 @@ CGAL::Named_function_parameters<Vector_3, internal_np::patch_axis_t, NamedParame
 patch_axis(const Vector_3& axis, const NamedParameters& np = NamedParameters())
 {
   return CGAL::Named_function_parameters<Vector_3, internal_np::patch_axis_t, NamedParameters>(axis, np);
+}
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Growing (`grow_boundary()`, `Flow_aligned_deformation::grow()`): grow only the boundary edges
+/// whose outward direction (in the plane of the edge's face, orthogonal to the edge) is within
+/// 60 degrees of this direction projected on that plane.  Type: the kernel's `Vector_3`, not zero.
+/// Default: the whole boundary is grown.
+template <typename Vector_3, typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<Vector_3, internal_np::growth_direction_t, NamedParameters>
+growth_direction(const Vector_3& direction, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<Vector_3, internal_np::growth_direction_t, NamedParameters>(
+      direction, np);
+}
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The flow field (a model of `FlowField_3`, copied) of a function that needs one besides its
+/// mesh, such as `grow_boundary()` with `across_flow(true)`.  Default: none.
+template <typename FlowField, typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<FlowField, internal_np::flow_field_t, NamedParameters>
+flow_field(const FlowField& field, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<FlowField, internal_np::flow_field_t, NamedParameters>(field, np);
 }
 
 } // namespace parameters

@@ -1,0 +1,118 @@
+// What the example programs share: the kernel and mesh types, the built-in flows by name, a
+// flow read from a data file, and the surface files a user opens in ParaView (PLY, and VTP
+// with the velocity at the vertices and the normalized flux of every face).
+
+#ifndef FAS_EXAMPLES_EXAMPLE_SUPPORT_H
+#define FAS_EXAMPLES_EXAMPLE_SUPPORT_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Flow_aligned_surfaces/IO/read_flow_field.h>
+#include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
+#include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
+#include <CGAL/Flow_aligned_surfaces/measure.h>
+
+#include <CGAL/Surface_mesh/IO/PLY.h>
+#include <boost/property_map/property_map.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace examples {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Vector = Kernel::Vector_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace FAS = CGAL::Flow_aligned_surfaces;
+
+// Every flow behind one type, so that the deformation is compiled once.
+using Flow = std::function<std::optional<Vector>(const Point&)>;
+
+/// The names that `make_built_in_flow()` knows, for usage messages.
+inline const char* built_in_flow_names()
+{
+  return "cylinder|point-source|sphere|helical|hill|burgers|abc|tornado";
+}
+
+/// A built-in analytic flow by name, or nothing for an unknown name.
+inline std::optional<Flow> make_built_in_flow(const std::string& name)
+{
+  if (name == "cylinder") // potential flow past a cylinder of radius 1 along z
+    return Flow(FAS::Cylinder_potential_flow<Kernel>(1.0, 1.0));
+  if (name == "point-source")
+    return Flow(FAS::Point_source_flow<Kernel>(Point(0, 0, 0), 1.0));
+  if (name == "sphere")
+    return Flow(FAS::Sphere_potential_flow<Kernel>(1.0, 1.0));
+  if (name == "helical")
+    return Flow(FAS::Helical_flow<Kernel>(0.5));
+  if (name == "hill")
+    return Flow(FAS::Hill_spherical_vortex<Kernel>(1.0, 1.0));
+  if (name == "burgers")
+    return Flow(FAS::Burgers_vortex<Kernel>());
+  if (name == "abc")
+    return Flow(FAS::ABC_flow<Kernel>());
+  if (name == "tornado")
+    return Flow(FAS::Crawfis_tornado<Kernel>());
+  return std::nullopt;
+}
+
+/// The flow of a data file (any format `IO::read_flow_field()` reads), the velocity array named
+/// `array` (empty: the first vector array); prints the reason and returns nothing on failure.
+inline std::optional<FAS::Sampled_flow_field_3<Kernel>> read_data_field(const std::string& file,
+                                                                        const std::string& array)
+{
+  std::optional<FAS::Sampled_flow_field_3<Kernel>> field;
+  std::string error;
+  const bool read = array.empty()
+                        ? FAS::IO::read_flow_field(file, field, CGAL::parameters::default_values(), &error)
+                        : FAS::IO::read_flow_field(file, field, FAS::parameters::array_name(array), &error);
+  if (!read)
+    std::cerr << "error: " << error << "\n";
+  return field;
+}
+
+inline std::vector<double> face_fluxes(const Mesh& tm, const Flow& flow)
+{
+  std::vector<double> values(tm.number_of_faces());
+  FAS::compute_face_normalized_flux(
+      tm, flow, boost::make_iterator_property_map(values.begin(), get(CGAL::face_index, tm)));
+  return values;
+}
+
+inline std::vector<double> vertex_velocities(const Mesh& tm, const Flow& flow)
+{
+  std::vector<double> values;
+  for (auto v : tm.vertices()) {
+    const auto sample = flow(tm.point(v));
+    const Vector w = sample ? *sample : Vector(0, 0, 0);
+    values.insert(values.end(), {w.x(), w.y(), w.z()});
+  }
+  return values;
+}
+
+/// Writes `stem`.ply and `stem`.vtp (with the velocity and the per-face normalized flux).
+inline bool write_surface(const std::filesystem::path& stem, const Mesh& tm, const Flow& flow)
+{
+  if (!CGAL::IO::write_PLY(stem.string() + ".ply", tm, CGAL::parameters::stream_precision(17))) {
+    std::cerr << "error: cannot write " << stem.string() << ".ply\n";
+    return false;
+  }
+  std::string error;
+  const bool vtp = FAS::IO::write_VTP(
+      stem.string() + ".vtp", tm, {{"velocity", 3, vertex_velocities(tm, flow)}},
+      {{"normalized_flux", 1, face_fluxes(tm, flow)}}, CGAL::parameters::default_values(), &error);
+  if (!vtp)
+    std::cerr << "error: " << error << "\n";
+  return vtp;
+}
+
+} // namespace examples
+
+#endif // FAS_EXAMPLES_EXAMPLE_SUPPORT_H

@@ -1,0 +1,371 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reads an interactive session (Section 4 of the paper: iterations interleaved with the user's
+// translations, rotations and growing) from a plain-text file, one operation a line, so that
+// the session can be replayed exactly (`replay_session()`).  The whole file is read and checked
+// before anything is returned, so a replay never starts on a file with a bad line.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_READ_SESSION_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_READ_SESSION_H
+
+#include <CGAL/Flow_aligned_surfaces/Alignment.h>
+#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <new>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace IO {
+
+/// \ingroup PkgFlowAlignedSurfacesIO
+/// The initial surface of a session: a planar rectangle or a disk, as `make_planar_patch()` and
+/// `make_disk_patch()` build them.
+struct Session_patch {
+  enum class Shape { PLANAR, DISK };
+  Shape shape = Shape::PLANAR;
+  std::array<double, 3> center{{0, 0, 0}};
+  std::array<double, 3> normal{{0, 0, 1}};
+  double width = 1;  ///< the rectangle's first side (planar)
+  double height = 1; ///< the rectangle's second side (planar)
+  double radius = 1; ///< the disk's radius (disk)
+  std::size_t target_number_of_faces = 1000;
+};
+
+/// \ingroup PkgFlowAlignedSurfacesIO
+/// One operation of a session, as one line of the file gives it.
+struct Session_operation {
+  enum class Kind {
+    ITERATE,   ///< `iterate N` or `iterate until-converged [N]`
+    TRANSLATE, ///< `translate dx dy dz`
+    ROTATE,    ///< `rotate ax ay az angle` (degrees, about the centroid of the surface's vertices)
+    GROW,      ///< `grow distance [dx dy dz | across-flow]`
+    SAVE       ///< `save path`
+  };
+  /// Which part of the boundary `grow` offsets.
+  enum class Growth {
+    WHOLE_BOUNDARY, ///< `grow d`
+    DIRECTION,      ///< `grow d dx dy dz`: the part facing `vector`
+    ACROSS_FLOW     ///< `grow d across-flow`: across the flow, for tangential surfaces
+  };
+  Kind kind = Kind::ITERATE;
+  std::size_t line = 0; ///< the line of the file (1 = first)
+  /// `ITERATE`: the number of iterations, or the largest one when `until_converged`.
+  std::size_t number_of_iterations = 0;
+  bool until_converged = false; ///< `ITERATE`: stop at the first converged iteration
+  std::array<double, 3> vector{
+      {0, 0, 0}};      ///< `TRANSLATE`: the move; `ROTATE`: the axis; `GROW`: the direction
+  double angle = 0;    ///< `ROTATE`: the angle in radians (the file gives degrees)
+  double distance = 0; ///< `GROW`: the offset distance
+  Growth growth = Growth::WHOLE_BOUNDARY; ///< `GROW`: which part of the boundary
+  std::string path;                       ///< `SAVE`: the file name, as written in the session
+};
+
+/// \ingroup PkgFlowAlignedSurfacesIO
+/// A session read by `read_session()`: where it takes place and what the user did.
+struct Session {
+  std::string flow; ///< the `flow` line's argument, empty if there is none
+  Alignment alignment = Alignment::TANGENTIAL;
+  Session_patch patch;
+  std::vector<Session_operation> operations;
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+/// The iterations of `iterate until-converged` when the line gives no bound.
+constexpr std::size_t default_iterations_until_converged = 100;
+
+class Session_parser {
+public:
+  Session_parser(const std::string& filename, std::string_view bytes) : m_filename(filename), m_bytes(bytes)
+  {
+  }
+
+  Session parse()
+  {
+    Session session;
+    bool have_patch = false, have_alignment = false, have_flow = false;
+    std::size_t line_number = 0;
+    std::size_t start = 0;
+    while (start < m_bytes.size()) {
+      std::size_t end = m_bytes.find('\n', start);
+      if (end == std::string_view::npos)
+        end = m_bytes.size();
+      ++line_number;
+      std::string_view text = m_bytes.substr(start, end - start);
+      start = end + 1;
+      if (const std::size_t hash = text.find('#'); hash != std::string_view::npos)
+        text = text.substr(0, hash);
+      m_line = line_number;
+      m_words = split(text);
+      if (m_words.empty())
+        continue;
+      const std::string_view keyword = m_words[0];
+
+      if (keyword == "flow" || keyword == "alignment" || keyword == "patch") {
+        if (!session.operations.empty())
+          fail("'" + std::string(keyword) +
+               "' sets up the session and must come before its first operation (line " +
+               std::to_string(session.operations.front().line) + ")");
+        bool& seen = keyword == "flow" ? have_flow : keyword == "alignment" ? have_alignment : have_patch;
+        if (seen)
+          fail("a second '" + std::string(keyword) + "' line");
+        seen = true;
+        if (keyword == "flow") {
+          expect_arguments(1, "flow NAME-OR-FILE");
+          session.flow = std::string(m_words[1]);
+        }
+        else if (keyword == "alignment") {
+          expect_arguments(1, "alignment tangential|orthogonal");
+          if (m_words[1] == "tangential")
+            session.alignment = Alignment::TANGENTIAL;
+          else if (m_words[1] == "orthogonal")
+            session.alignment = Alignment::ORTHOGONAL;
+          else
+            fail("unknown alignment '" + printable(m_words[1]) + "' (expected tangential or orthogonal)");
+        }
+        else {
+          session.patch = parse_patch();
+        }
+        continue;
+      }
+
+      if (!have_patch)
+        fail("'" + printable(keyword) + "' before the 'patch' line that gives the initial surface");
+      Session_operation op;
+      op.line = line_number;
+      if (keyword == "iterate") {
+        op.kind = Session_operation::Kind::ITERATE;
+        if (m_words.size() >= 2 && m_words[1] == "until-converged") {
+          if (m_words.size() > 3)
+            fail("too many arguments (expected: iterate until-converged [N])");
+          op.until_converged = true;
+          op.number_of_iterations = m_words.size() == 3
+                                        ? positive_count(2, "the largest number of iterations")
+                                        : default_iterations_until_converged;
+        }
+        else {
+          expect_arguments(1, "iterate N | iterate until-converged [N]");
+          op.number_of_iterations = positive_count(1, "the number of iterations");
+        }
+      }
+      else if (keyword == "translate") {
+        expect_arguments(3, "translate dx dy dz");
+        op.kind = Session_operation::Kind::TRANSLATE;
+        op.vector = vector(1, "the translation");
+      }
+      else if (keyword == "rotate") {
+        expect_arguments(4, "rotate ax ay az angle");
+        op.kind = Session_operation::Kind::ROTATE;
+        op.vector = nonzero_vector(1, "the rotation axis");
+        op.angle = number(4, "the angle in degrees") * 3.14159265358979323846 / 180;
+      }
+      else if (keyword == "grow") {
+        op.kind = Session_operation::Kind::GROW;
+        if (m_words.size() != 2 && m_words.size() != 3 && m_words.size() != 5)
+          fail("expected: grow distance [dx dy dz | across-flow]");
+        op.distance = number(1, "the distance");
+        if (!(op.distance > 0))
+          fail("the distance " + printable(m_words[1]) + " is not positive");
+        if (m_words.size() == 3) {
+          if (m_words[2] != "across-flow")
+            fail("'" + printable(m_words[2]) + "' is neither a direction dx dy dz nor across-flow");
+          if (session.alignment != Alignment::TANGENTIAL)
+            fail("'grow ... across-flow' grows a tangential surface, and this session's alignment is "
+                 "orthogonal");
+          op.growth = Session_operation::Growth::ACROSS_FLOW;
+        }
+        else if (m_words.size() == 5) {
+          op.growth = Session_operation::Growth::DIRECTION;
+          op.vector = nonzero_vector(2, "the growth direction");
+        }
+      }
+      else if (keyword == "save") {
+        expect_arguments(1, "save path (no spaces)");
+        op.kind = Session_operation::Kind::SAVE;
+        op.path = std::string(m_words[1]);
+      }
+      else {
+        fail("unknown operation '" + printable(keyword) +
+             "' (expected flow, alignment, patch, iterate, translate, rotate, grow or save)");
+      }
+      session.operations.push_back(op);
+    }
+    if (!have_patch)
+      throw Flow_aligned_surfaces::internal::Read_error("read_session: " + m_filename +
+                                                        ": no 'patch' line gives the initial surface");
+    return session;
+  }
+
+private:
+  using Read_error = Flow_aligned_surfaces::internal::Read_error;
+
+  static std::string printable(std::string_view s) { return Flow_aligned_surfaces::internal::printable(s); }
+
+  static std::vector<std::string_view> split(std::string_view text)
+  {
+    std::vector<std::string_view> words;
+    std::size_t i = 0;
+    while (i < text.size()) {
+      while (i < text.size() && Flow_aligned_surfaces::internal::Text_cursor::is_space(text[i]))
+        ++i;
+      const std::size_t b = i;
+      while (i < text.size() && !Flow_aligned_surfaces::internal::Text_cursor::is_space(text[i]))
+        ++i;
+      if (i > b)
+        words.push_back(text.substr(b, i - b));
+    }
+    return words;
+  }
+
+  [[noreturn]] void fail(const std::string& what) const
+  {
+    throw Read_error("read_session: " + m_filename + ": line " + std::to_string(m_line) + ": " + what);
+  }
+
+  void expect_arguments(std::size_t n, const char* usage) const
+  {
+    if (m_words.size() != n + 1)
+      fail(std::string(m_words.size() < n + 1 ? "too few" : "too many") + " arguments (expected: " + usage +
+           ")");
+  }
+
+  double number(std::size_t i, const std::string& what) const
+  {
+    double v = 0;
+    if (!Flow_aligned_surfaces::internal::Text_cursor::parse_number(m_words[i], v) || !std::isfinite(v))
+      fail("'" + printable(m_words[i]) + "' is not a finite number (" + what + ")");
+    return v;
+  }
+
+  std::size_t positive_count(std::size_t i, const std::string& what) const
+  {
+    const double v = number(i, what);
+    if (!(v >= 1) || v != std::floor(v) || v > 1e9)
+      fail("'" + printable(m_words[i]) + "' is not a positive integer (" + what + ")");
+    return static_cast<std::size_t>(v);
+  }
+
+  std::array<double, 3> vector(std::size_t i, const std::string& what) const
+  {
+    return {{number(i, what), number(i + 1, what), number(i + 2, what)}};
+  }
+
+  std::array<double, 3> nonzero_vector(std::size_t i, const std::string& what) const
+  {
+    const std::array<double, 3> v = vector(i, what);
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0)
+      fail(what + " is the zero vector");
+    return v;
+  }
+
+  double positive(std::size_t i, const std::string& what) const
+  {
+    const double v = number(i, what);
+    if (!(v > 0))
+      fail(what + " " + printable(m_words[i]) + " is not positive");
+    return v;
+  }
+
+  Session_patch parse_patch() const
+  {
+    Session_patch patch;
+    if (m_words.size() >= 2 && m_words[1] == "planar") {
+      expect_arguments(10, "patch planar cx cy cz nx ny nz width height faces");
+      patch.shape = Session_patch::Shape::PLANAR;
+      patch.width = positive(8, "the width");
+      patch.height = positive(9, "the height");
+    }
+    else if (m_words.size() >= 2 && m_words[1] == "disk") {
+      expect_arguments(9, "patch disk cx cy cz nx ny nz radius faces");
+      patch.shape = Session_patch::Shape::DISK;
+      patch.radius = positive(8, "the radius");
+    }
+    else {
+      fail("expected: patch planar cx cy cz nx ny nz width height faces | patch disk cx cy cz nx ny nz "
+           "radius faces");
+    }
+    patch.center = vector(2, "the center");
+    patch.normal = nonzero_vector(5, "the normal");
+    patch.target_number_of_faces = positive_count(m_words.size() - 1, "the target number of faces");
+    return patch;
+  }
+
+  std::string m_filename;
+  std::string_view m_bytes;
+  std::size_t m_line = 0;
+  std::vector<std::string_view> m_words;
+};
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Reads an interactive deformation session from a plain-text file.
+
+One operation a line; `#` starts a comment; blank lines are skipped.  First the set-up lines
+(each at most once, before the first operation):
+- `flow NAME-OR-FILE`: where the session takes place, for the program that replays it (the
+  example `replay_session` takes a built-in flow's name or a data file); optional;
+- `alignment tangential|orthogonal` (default `tangential`);
+- `patch planar cx cy cz nx ny nz width height faces` or `patch disk cx cy cz nx ny nz radius faces`:
+  the initial surface, built with `make_planar_patch()` / `make_disk_patch()`; required.
+
+Then the operations, in the order the user performed them:
+- `iterate N`: `N` deformation iterations;
+- `iterate until-converged [N]`: iterations until one converges, at most `N` (default 100);
+- `translate dx dy dz`: a rigid translation;
+- `rotate ax ay az angle`: a rigid rotation by `angle` degrees (right-handed) about the axis
+  `(ax, ay, az)` through the centroid of the surface's vertices;
+- `grow distance`, `grow distance dx dy dz`, `grow distance across-flow`: growing the boundary
+  (all of it, the part facing a direction, or across the flow; see `Flow_aligned_deformation::grow()`);
+- `save path`: the surface as it is now, to `path` (relative paths are the replaying
+  program's business; the example writes them into its output folder).
+
+The whole file is checked before the function returns: a malformed line (an unknown word, a
+missing or extra argument, a number that is not finite, a zero axis or direction, a distance,
+size or count that is not positive, a set-up line after an operation or twice, `across-flow`
+in an orthogonal session) makes it
+return `false` with a message naming the file, the line and what is wrong, and `session` is
+left untouched.
+
+\param filename the file to read
+\param session receives the session on success; left untouched on failure
+\param error if not null, receives the reason of a failure
+\returns `true` on success.
+
+\sa `replay_session()`
+*/
+inline bool read_session(const std::string& filename, Session& session, std::string* error = nullptr)
+{
+  try {
+    const std::string bytes = Flow_aligned_surfaces::internal::read_file_contents(filename, "read_session");
+    session = internal::Session_parser(filename, bytes).parse();
+    return true;
+  } catch (const Flow_aligned_surfaces::internal::Read_error& e) {
+    if (error)
+      *error = e.what();
+  } catch (const std::bad_alloc&) {
+    if (error)
+      *error = "read_session: " + filename + ": not enough memory";
+  }
+  return false;
+}
+
+} // namespace IO
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_READ_SESSION_H

@@ -1,0 +1,684 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Growing a surface at its boundary (Section 4 of the paper, after Schulze et al.): every
+// selected boundary vertex b moves to the offset point
+//
+//   b' = b + d m_b g_b,   g_b = unit projection of sum_e g_e on the tangent plane at b,
+//
+// where the sum runs over the selected boundary edges e at b, g_e is the edge's outward
+// direction o_e (in its face's plane, orthogonal to the edge) or, across the flow, the in-plane
+// direction n_e x v/|v| signed so that it points outward, and m_b = 1/cos(half the turn
+// between the two edges' g_e) keeps the offset curve at distance d from straight edges (a
+// miter, capped at 2).  The strip between the selected boundary and its offset curve (the quads
+// b_i b_{i+1} b'_{i+1} b'_i) is then tessellated with near-regular triangles of the mesh's mean
+// edge length by CGAL's isotropic remeshing, with the old boundary protected, and appended to
+// the mesh.  Nothing is removed from the mesh: descriptors and index maps stay valid.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_GROW_BOUNDARY_H
+#define CGAL_FLOW_ALIGNED_SURFACES_GROW_BOUNDARY_H
+
+#include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
+#include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
+#include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
+#include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <deque>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+
+/*!
+\ingroup PkgFlowAlignedSurfacesRef
+What `grow_boundary()` and `Flow_aligned_deformation::grow()` did.
+*/
+struct Growth_report {
+  std::size_t number_of_new_vertices = 0; ///< vertices added to the mesh
+  std::size_t number_of_new_faces = 0;    ///< faces added to the mesh
+  double grown_boundary_length = 0;       ///< length of the boundary part that was offset (before growing)
+  double added_area = 0;                  ///< total area of the new faces
+  double offset_ms = 0;                   ///< time spent selecting the boundary and building the raw strip
+  double remesh_ms = 0;        ///< time spent tessellating the strip (split and isotropic remeshing)
+  double reference_map_ms = 0; ///< time spent placing the new vertices in \f$ M_0 \f$ and appending them
+  double factor_ms = 0;        ///< time spent rebuilding and refactoring the operators (the class only)
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// What to grow: the parameters shared by the free function and the class.
+struct Growth_options {
+  std::optional<Eigen::Vector3d> direction; // unit
+  bool across_flow = false;
+};
+
+// The tessellated strip, ready to be appended: new vertex i has index m + i (m the number of
+// vertices before growing), an index below m is an existing vertex.
+struct Boundary_strip {
+  std::vector<Eigen::Vector3d> points;           // positions of the new vertices on the current mesh
+  std::vector<Eigen::Vector3d> reference_points; // and on the reference mesh, when one was given
+  std::vector<std::array<Eigen::Index, 3>> faces;
+  Growth_report report;
+};
+
+// The cosine of the largest angle between a boundary edge's outward direction and the
+// requested direction (growth_direction), or the across-flow direction (across_flow), for the
+// edge to be grown: 60 degrees.
+constexpr double growth_cone_cosine = 0.5;
+// Below this sine, a direction is taken as parallel to the face normal (no in-plane part).
+constexpr double parallel_sine = 1e-6;
+
+template <class Options>
+Growth_options read_growth_options(const Options& np, const char* caller)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Growth_options options;
+  options.across_flow = choose_parameter(get_parameter(np, internal_np::across_flow_t()), false);
+  if constexpr (!parameters::is_default_parameter<Options, internal_np::growth_direction_t>::value) {
+    const auto d = get_parameter(np, internal_np::growth_direction_t());
+    const Eigen::Vector3d v(CGAL::to_double(d.x()), CGAL::to_double(d.y()), CGAL::to_double(d.z()));
+    if (!v.allFinite() || !(v.norm() > 0))
+      throw std::invalid_argument(std::string(caller) +
+                                  ": growth_direction must be a non-zero vector with finite coordinates");
+    options.direction = v.normalized();
+  }
+  return options;
+}
+
+template <class TriangleMesh, class VertexIndexMap>
+Eigen::Vector3d position(const Positions& x, VertexIndexMap vim,
+                         typename boost::graph_traits<TriangleMesh>::vertex_descriptor v)
+{
+  return x.row(static_cast<Eigen::Index>(get(vim, v))).transpose();
+}
+
+// Twice the area times the unit normal of the face of `h`.
+template <class TriangleMesh, class VertexIndexMap>
+Eigen::Vector3d face_cross(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x,
+                           typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h)
+{
+  const Eigen::Vector3d a = position<TriangleMesh>(x, vim, source(h, tm));
+  const Eigen::Vector3d b = position<TriangleMesh>(x, vim, target(h, tm));
+  const Eigen::Vector3d c = position<TriangleMesh>(x, vim, target(next(h, tm), tm));
+  return (b - a).cross(c - a);
+}
+
+// The local frame of a boundary: at a border halfedge h (face(h) is null), the unit normal
+// of the face across it, and the outward direction, in that face's plane and orthogonal to h.
+template <class TriangleMesh, class VertexIndexMap>
+void border_edge_frame(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x,
+                       typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
+                       Eigen::Vector3d& normal, Eigen::Vector3d& outward)
+{
+  const auto inside = opposite(h, tm);
+  normal = face_cross(tm, vim, x, inside).normalized();
+  // inside runs counterclockwise about `normal`: the face is on its left, the outside on its right.
+  const Eigen::Vector3d along =
+      position<TriangleMesh>(x, vim, target(inside, tm)) - position<TriangleMesh>(x, vim, source(inside, tm));
+  outward = along.cross(normal).normalized();
+}
+
+// The area-weighted unit normal at vertex v (the target of h).
+template <class TriangleMesh, class VertexIndexMap>
+Eigen::Vector3d vertex_normal(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x,
+                              typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h)
+{
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (auto g : halfedges_around_target(h, tm))
+    if (!is_border(g, tm))
+      n += face_cross(tm, vim, x, g);
+  return n.normalized();
+}
+
+// The orthonormal frame (boundary tangent, outward, normal) at the boundary vertex target(h_in),
+// h_in and next(h_in) its two border halfedges: the columns of the result.  Offsets are carried
+// from the current mesh to the reference mesh in these coordinates.
+template <class TriangleMesh, class VertexIndexMap>
+Eigen::Matrix3d boundary_vertex_frame(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x,
+                                      typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h_in)
+{
+  Eigen::Vector3d n_in, o_in, n_out, o_out;
+  border_edge_frame(tm, vim, x, h_in, n_in, o_in);
+  border_edge_frame(tm, vim, x, next(h_in, tm), n_out, o_out);
+  const Eigen::Vector3d n = vertex_normal(tm, vim, x, h_in);
+  Eigen::Vector3d o = o_in + o_out;
+  o -= o.dot(n) * n;
+  o.normalize();
+  Eigen::Matrix3d frame;
+  frame.col(0) = n.cross(o);
+  frame.col(1) = o;
+  frame.col(2) = n;
+  return frame;
+}
+
+[[noreturn]] inline void throw_growth_error(const std::string& caller, const std::string& what)
+{
+  throw std::invalid_argument(caller + ": " + what + "; the surface is left untouched");
+}
+
+/*
+Selects the boundary edges to grow, offsets their vertices and tessellates the strip; reads
+`tm` only.  `x` are the current positions in the order of `vim`; `reference`, when not null,
+the reference positions in the same order, on which the same strip is built with each offset
+expressed in the reference mesh's own boundary frame.  `sample(p)` returns the Flow_sample at
+the point p (Eigen::Vector3d).  Throws std::invalid_argument naming `caller` and what is wrong.
+*/
+template <class TriangleMesh, class VertexIndexMap, class Sampler>
+Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x,
+                                   const Positions* reference, double distance, const Growth_options& options,
+                                   const Sampler& sample, const std::string& caller)
+{
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+
+  if (!(distance > 0) || !std::isfinite(distance)) {
+    std::ostringstream os;
+    os << "the distance must be positive and finite (got " << distance << ")";
+    throw_growth_error(caller, os.str());
+  }
+
+  // The border loops, each as its border halfedges in order.
+  const Eigen::Index m = x.rows();
+  std::vector<char> on_loop(static_cast<std::size_t>(m), 0);
+  std::vector<std::vector<halfedge_descriptor>> loops;
+  for (halfedge_descriptor h : halfedges(tm)) {
+    if (!is_border(h, tm) || on_loop[get(vim, target(h, tm))])
+      continue;
+    loops.emplace_back();
+    halfedge_descriptor g = h;
+    do {
+      loops.back().push_back(g);
+      on_loop[get(vim, target(g, tm))] = 1;
+      g = next(g, tm);
+    } while (g != h);
+  }
+  if (loops.empty())
+    throw_growth_error(caller, "the mesh has no boundary (it is closed), so there is nothing to grow");
+
+  // Per border edge: selected or not, and its growth direction g_e.
+  struct Edge {
+    bool selected = false;
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+  };
+  std::vector<std::vector<Edge>> loop_edges(loops.size());
+  std::size_t number_of_edges = 0, parallel_to_normal = 0, without_flow = 0, selected = 0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    loop_edges[l].resize(loops[l].size());
+    for (std::size_t i = 0; i < loops[l].size(); ++i) {
+      const halfedge_descriptor h = loops[l][i];
+      ++number_of_edges;
+      Eigen::Vector3d normal, outward;
+      border_edge_frame(tm, vim, x, h, normal, outward);
+      Edge& e = loop_edges[l][i];
+      e.direction = outward;
+      bool facing = true;
+      if (options.direction) {
+        Eigen::Vector3d in_plane = *options.direction - options.direction->dot(normal) * normal;
+        if (in_plane.norm() <= parallel_sine) {
+          ++parallel_to_normal;
+          facing = false;
+        }
+        else
+          facing = outward.dot(in_plane.normalized()) >= growth_cone_cosine;
+      }
+      if (options.across_flow) {
+        const Eigen::Vector3d midpoint = 0.5 * (position<TriangleMesh>(x, vim, source(h, tm)) +
+                                                position<TriangleMesh>(x, vim, target(h, tm)));
+        const Flow_sample s = sample(midpoint);
+        Eigen::Vector3d across = normal.cross(s.direction);
+        if (s.kind != Sample_kind::VALID || across.norm() <= parallel_sine) {
+          ++without_flow;
+          facing = false;
+        }
+        else {
+          across.normalize();
+          if (across.dot(outward) < 0)
+            across = -across;
+          facing = facing && across.dot(outward) >= growth_cone_cosine;
+          e.direction = across;
+        }
+      }
+      e.selected = facing;
+      selected += facing ? 1 : 0;
+    }
+  }
+  if (options.direction && parallel_to_normal == number_of_edges)
+    throw_growth_error(caller, "growth_direction is parallel to the surface normal at every boundary edge");
+  if (options.across_flow && without_flow == number_of_edges)
+    throw_growth_error(caller, "across_flow: the flow is zero, undefined or along the normal at every "
+                               "boundary edge, so no direction across it exists");
+  if (selected == 0) {
+    std::string what = "no boundary edge faces ";
+    if (options.direction)
+      what += "growth_direction";
+    if (options.direction && options.across_flow)
+      what += " and ";
+    if (options.across_flow)
+      what += "across the flow";
+    throw_growth_error(caller,
+                       what + " (an edge is grown when its outward direction is within 60 degrees of it)");
+  }
+
+  // The raw strip: for each selected edge (p, q) the quad p q q' p' (counterclockwise like the
+  // old faces), split along its shorter diagonal.
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Strip_mesh = CGAL::Surface_mesh<Epick::Point_3>;
+  using strip_vertex = Strip_mesh::Vertex_index;
+  Strip_mesh strip;
+  std::vector<strip_vertex> inner(static_cast<std::size_t>(m)), outer(static_cast<std::size_t>(m));
+  std::vector<char> has_strip_vertex(static_cast<std::size_t>(m), 0);
+  std::vector<Eigen::Vector3d> raw_reference; // reference position of each strip vertex
+  auto base = strip.add_property_map<strip_vertex, Eigen::Index>("v:fas_base", -1).first;
+  auto vertex_constrained = strip.add_property_map<strip_vertex, bool>("v:fas_constrained", false).first;
+  auto edge_constrained =
+      strip.add_property_map<Strip_mesh::Edge_index, bool>("e:fas_constrained", false).first;
+  auto to_point = [](const Eigen::Vector3d& p) { return Epick::Point_3(p.x(), p.y(), p.z()); };
+  const double cos_corner = std::cos(CGAL_PI / 6);
+
+  double grown_length = 0, longest_inner_edge = 0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const std::size_t k = loops[l].size();
+    // Offset every vertex touching a selected edge; vertex i is target(loops[l][i]).
+    for (std::size_t i = 0; i < k; ++i) {
+      const Edge& e_in = loop_edges[l][i];
+      const Edge& e_out = loop_edges[l][(i + 1) % k];
+      if (!e_in.selected && !e_out.selected)
+        continue;
+      const halfedge_descriptor h_in = loops[l][i];
+      const auto b = target(h_in, tm);
+      const Eigen::Index bi = static_cast<Eigen::Index>(get(vim, b));
+      const Eigen::Vector3d n = vertex_normal(tm, vim, x, h_in);
+      Eigen::Vector3d g = (e_in.selected ? e_in.direction : Eigen::Vector3d::Zero()) +
+                          (e_out.selected ? e_out.direction : Eigen::Vector3d::Zero());
+      g -= g.dot(n) * n;
+      if (!(g.norm() > parallel_sine))
+        throw_growth_error(caller, "the boundary turns back on itself at vertex " + std::to_string(bi) +
+                                       " (its two edges grow in opposite directions)");
+      g.normalize();
+      double miter = 1;
+      if (e_in.selected && e_out.selected)
+        miter = 1 / (std::max)(0.5, g.dot(e_in.direction));
+      const Eigen::Vector3d offset = distance * miter * g;
+      const Eigen::Vector3d p = x.row(bi).transpose();
+
+      inner[bi] = strip.add_vertex(to_point(p));
+      outer[bi] = strip.add_vertex(to_point(p + offset));
+      has_strip_vertex[bi] = 1;
+      put(base, inner[bi], bi);
+      put(vertex_constrained, inner[bi], true);
+      // Keep the corners of the offset curve: the ends of a grown part and sharp turns.
+      put(vertex_constrained, outer[bi],
+          !(e_in.selected && e_out.selected) || e_in.direction.dot(e_out.direction) < cos_corner);
+      if (reference) {
+        const Eigen::Vector3d p0 = reference->row(bi).transpose();
+        const Eigen::Vector3d coefficients = boundary_vertex_frame(tm, vim, x, h_in).transpose() * offset;
+        raw_reference.resize(strip.number_of_vertices());
+        raw_reference[inner[bi]] = p0;
+        raw_reference[outer[bi]] = p0 + boundary_vertex_frame(tm, vim, *reference, h_in) * coefficients;
+      }
+    }
+    for (std::size_t i = 0; i < k; ++i) {
+      if (!loop_edges[l][i].selected)
+        continue;
+      const halfedge_descriptor h = loops[l][i];
+      const Eigen::Index p = static_cast<Eigen::Index>(get(vim, source(h, tm)));
+      const Eigen::Index q = static_cast<Eigen::Index>(get(vim, target(h, tm)));
+      auto point = [&](strip_vertex v) {
+        const auto& s = strip.point(v);
+        return Eigen::Vector3d(s.x(), s.y(), s.z());
+      };
+      const Eigen::Vector3d pq = point(inner[q]) - point(inner[p]);
+      grown_length += pq.norm();
+      longest_inner_edge = (std::max)(longest_inner_edge, pq.norm());
+      // An offset edge reversed with respect to its edge: the offset curve folds over.
+      const Eigen::Vector3d offset_pq = point(outer[q]) - point(outer[p]);
+      bool folds = !(offset_pq.dot(pq) > 0);
+      if (reference && !folds)
+        folds = !((raw_reference[outer[q]] - raw_reference[outer[p]])
+                      .dot(raw_reference[inner[q]] - raw_reference[inner[p]]) > 0);
+      if (folds) {
+        std::ostringstream os;
+        os << "the distance " << distance << " is too large for the boundary near vertex " << p
+           << ": the offset curve folds over there (grow by a smaller distance, in several steps)";
+        throw_growth_error(caller, os.str());
+      }
+      const bool first_diagonal = (point(inner[p]) - point(outer[q])).squaredNorm() <=
+                                  (point(inner[q]) - point(outer[p])).squaredNorm();
+      const std::array<std::array<strip_vertex, 3>, 2> triangles =
+          first_diagonal ? std::array<std::array<strip_vertex, 3>, 2>{{{{inner[p], inner[q], outer[q]}},
+                                                                       {{inner[p], outer[q], outer[p]}}}}
+                         : std::array<std::array<strip_vertex, 3>, 2>{
+                               {{{inner[p], inner[q], outer[p]}}, {{inner[q], outer[q], outer[p]}}}};
+      for (const auto& t : triangles)
+        if (strip.add_face(t[0], t[1], t[2]) == Strip_mesh::null_face())
+          throw std::logic_error(caller + ": building the raw strip failed");
+      put(edge_constrained, strip.edge(strip.halfedge(inner[p], inner[q])), true);
+    }
+  }
+
+  // Target length: the mesh's mean edge length, raised if needed so that the protected old
+  // edges are no longer than 4/3 of it (the remesher's precondition for protected edges).
+  double total_length = 0;
+  std::size_t number_of_mesh_edges = 0;
+  for (auto e : edges(tm)) {
+    const auto h = halfedge(e, tm);
+    total_length +=
+        (position<TriangleMesh>(x, vim, target(h, tm)) - position<TriangleMesh>(x, vim, source(h, tm)))
+            .norm();
+    ++number_of_mesh_edges;
+  }
+  const double target_length =
+      (std::max)(total_length / static_cast<double>(number_of_mesh_edges), 0.76 * longest_inner_edge);
+  const Strip_mesh raw = strip;
+  const auto offset_done = Clock::now();
+
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<Strip_mesh::Edge_index> free_edges;
+  for (auto e : strip.edges())
+    if (!get(edge_constrained, e))
+      free_edges.push_back(e);
+  PMP::split_long_edges(free_edges, 4. / 3. * target_length, strip,
+                        CGAL::parameters::edge_is_constrained_map(edge_constrained));
+  const std::vector<Strip_mesh::Face_index> strip_faces(strip.faces().begin(), strip.faces().end());
+  PMP::isotropic_remeshing(strip_faces, target_length, strip,
+                           CGAL::parameters::number_of_iterations(3)
+                               .edge_is_constrained_map(edge_constrained)
+                               .vertex_is_constrained_map(vertex_constrained)
+                               .protect_constraints(true));
+  const auto remeshed = Clock::now();
+
+  // Number the new vertices and place them on the reference strip: same triangle of the raw
+  // strip, same barycentric coordinates.
+  Boundary_strip result;
+  auto index = strip.add_property_map<strip_vertex, Eigen::Index>("v:fas_index", -1).first;
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Strip_mesh>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, Primitive>>;
+  Tree tree;
+  Strip_mesh raw_reference_mesh;
+  if (reference) {
+    PMP::build_AABB_tree(raw, tree);
+    raw_reference_mesh = raw;
+    for (auto v : raw_reference_mesh.vertices())
+      raw_reference_mesh.point(v) = to_point(raw_reference[v]);
+  }
+  for (auto v : strip.vertices()) {
+    if (get(base, v) >= 0) {
+      put(index, v, get(base, v));
+      continue;
+    }
+    put(index, v, m + static_cast<Eigen::Index>(result.points.size()));
+    const auto& p = strip.point(v);
+    result.points.emplace_back(p.x(), p.y(), p.z());
+    if (reference) {
+      const auto location = PMP::locate_with_AABB_tree(p, tree, raw);
+      const auto p0 = PMP::construct_point(location, raw_reference_mesh);
+      result.reference_points.emplace_back(p0.x(), p0.y(), p0.z());
+    }
+  }
+
+  auto check_face = [&](const std::array<Eigen::Index, 3>& f, const Positions& old,
+                        const std::vector<Eigen::Vector3d>& added, const char* which) {
+    auto at = [&](Eigen::Index i) -> Eigen::Vector3d {
+      return i < m ? Eigen::Vector3d(old.row(i).transpose()) : added[std::size_t(i - m)];
+    };
+    const auto t = triangle_gradients(at(f[0]), at(f[1]), at(f[2]));
+    if (!t)
+      throw_growth_error(caller,
+                         std::string("growing would create a degenerate face") + which +
+                             " (the boundary curves too much for this distance; grow in smaller steps)");
+    return t->area;
+  };
+  for (auto f : strip.faces()) {
+    std::array<Eigen::Index, 3> fv;
+    int i = 0;
+    for (auto v : vertices_around_face(strip.halfedge(f), strip))
+      fv[i++] = get(index, v);
+    result.report.added_area += check_face(fv, x, result.points, "");
+    if (reference)
+      check_face(fv, *reference, result.reference_points, " in the reference mesh M_0");
+    result.faces.push_back(fv);
+  }
+  result.report.number_of_new_vertices = result.points.size();
+  result.report.number_of_new_faces = result.faces.size();
+  result.report.grown_boundary_length = grown_length;
+  result.report.offset_ms = std::chrono::duration<double, std::milli>(offset_done - start).count();
+  result.report.remesh_ms = std::chrono::duration<double, std::milli>(remeshed - offset_done).count();
+  result.report.reference_map_ms = std::chrono::duration<double, std::milli>(Clock::now() - remeshed).count();
+  return result;
+}
+
+/*
+Adds the strip's vertices (with the positions `strip.points`) and faces to `tm`, faces in the
+order of a breadth-first search from the old boundary so that each one is attached along an
+edge; `ordered_vertices` are the existing vertices in index order.  Returns the new vertices.
+*/
+template <class TriangleMesh, class VertexPointMap, class GeomTraits>
+std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> append_strip(
+    TriangleMesh& tm, VertexPointMap vpm, const GeomTraits& gt,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& ordered_vertices,
+    const Boundary_strip& strip)
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  const Eigen::Index m = static_cast<Eigen::Index>(ordered_vertices.size());
+  auto construct_point = gt.construct_point_3_object();
+  std::vector<vertex_descriptor> added;
+  added.reserve(strip.points.size());
+  for (const Eigen::Vector3d& p : strip.points) {
+    added.push_back(add_vertex(tm));
+    put(vpm, added.back(), construct_point(p.x(), p.y(), p.z()));
+  }
+  auto descriptor = [&](Eigen::Index i) {
+    return i < m ? ordered_vertices[std::size_t(i)] : added[std::size_t(i - m)];
+  };
+
+  // Breadth-first over the strip's faces, seeded with those on an old edge (two old vertices).
+  const std::size_t n = strip.faces.size();
+  std::vector<std::vector<std::size_t>> faces_of_vertex(strip.points.size());
+  for (std::size_t j = 0; j < n; ++j)
+    for (Eigen::Index v : strip.faces[j])
+      if (v >= m)
+        faces_of_vertex[std::size_t(v - m)].push_back(j);
+  std::vector<char> queued(n, 0);
+  std::deque<std::size_t> queue;
+  for (std::size_t j = 0; j < n; ++j) {
+    int old = 0;
+    for (Eigen::Index v : strip.faces[j])
+      old += v < m ? 1 : 0;
+    if (old >= 2) {
+      queue.push_back(j);
+      queued[j] = 1;
+    }
+  }
+  std::size_t number_added = 0;
+  while (number_added < n) {
+    if (queue.empty()) // cannot happen on a strip built from the boundary; keep going anyway
+      for (std::size_t j = 0; j < n; ++j)
+        if (!queued[j]) {
+          queue.push_back(j);
+          queued[j] = 1;
+          break;
+        }
+    const std::size_t j = queue.front();
+    queue.pop_front();
+    const auto& f = strip.faces[j];
+    const std::array<vertex_descriptor, 3> vs = {{descriptor(f[0]), descriptor(f[1]), descriptor(f[2])}};
+    if (CGAL::Euler::add_face(vs, tm) == boost::graph_traits<TriangleMesh>::null_face())
+      throw std::logic_error("CGAL::Flow_aligned_surfaces: appending a face of the grown strip failed");
+    ++number_added;
+    for (Eigen::Index v : f)
+      if (v >= m)
+        for (std::size_t k : faces_of_vertex[std::size_t(v - m)])
+          if (!queued[k]) {
+            queued[k] = 1;
+            queue.push_back(k);
+          }
+  }
+  return added;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgFlowAlignedSurfacesRef
+
+\brief Grows `tm` at its boundary by `distance`: offsets the whole boundary, or the part of it
+selected by the named parameters, along its outward direction in the surface's tangent plane,
+and tessellates the new strip with near-regular triangles of the mesh's mean edge length.
+
+Every boundary edge \f$ e \f$ has an outward direction \f$ o_e \f$: in the plane of its face,
+orthogonal to the edge, pointing away from the face.  An edge is grown when
+- no `growth_direction` \f$ d \f$ is given, or the projection \f$ d_e \f$ of \f$ d \f$ on the plane
+  of its face satisfies \f$ o_e \cdot d_e / \|d_e\| \ge \cos 60° = 1/2 \f$, and
+- `across_flow` is `false`, or the direction across the flow at the edge's midpoint,
+  \f$ a_e = \pm n_e \times v / \|v\| \f$ signed so that \f$ a_e \cdot o_e > 0 \f$, satisfies
+  \f$ a_e \cdot o_e \ge 1/2 \f$ (the outward direction is within 60° of across the flow).
+
+Each vertex of a grown edge moves to \f$ b' = b + d\, m_b\, g_b \f$: \f$ g_b \f$ is the sum of the
+growth directions (\f$ o_e \f$, or \f$ a_e \f$ with `across_flow`) of its grown edges projected on the
+tangent plane at \f$ b \f$ (the area-weighted vertex normal) and normalized, and \f$ m_b \f$ the
+miter factor \f$ 1/\cos(\text{half the turn between them}) \f$ capped at 2, so that a straight side
+moves by exactly `distance` and a rectangle grows into a rectangle.  The quads between the old
+and the new boundary are tessellated by `CGAL::Polygon_mesh_processing::split_long_edges()` and
+`CGAL::Polygon_mesh_processing::isotropic_remeshing()` (three iterations, target length the mean
+edge length of `tm`, raised to 3/4 of the longest grown edge if that is larger) on a separate
+mesh, with the old boundary edges and vertices and the corners of the new boundary protected,
+and the result is appended to `tm`.  Nothing is removed from `tm`: its vertices and faces keep
+their descriptors and its index maps stay valid.
+
+The offset is first order: on a curved surface the strip lies in the tangent planes of the
+boundary, and where the boundary is concave it must not fold over (the distance must stay below
+the boundary's radius of curvature there); grow in several small steps to follow a curved
+surface.  The new strip is not tested against the rest of the surface for intersections.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph` whose faces are
+        triangles (`CGAL::Surface_mesh`, `CGAL::Polyhedron_3`, OpenMesh meshes)
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+
+\param tm a valid manifold triangle mesh with a boundary
+\param distance the offset, positive and finite
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadWritePropertyMap` with the vertices as key type and `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal kernel deduced from the point type}
+  \cgalParamNEnd
+  \cgalParamNBegin{growth_direction}
+    \cgalParamDescription{grow only the boundary edges whose outward direction is within 60° of
+      this direction (`CGAL::Flow_aligned_surfaces::parameters::growth_direction()`)}
+    \cgalParamType{`GeomTraits::Vector_3`, non-zero}
+    \cgalParamDefault{the whole boundary is grown}
+  \cgalParamNEnd
+  \cgalParamNBegin{across_flow}
+    \cgalParamDescription{grow only where the outward direction is within 60° of across the flow,
+      and along the direction across the flow (`CGAL::Flow_aligned_surfaces::parameters::across_flow()`);
+      needs `flow_field`}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+  \cgalParamNBegin{flow_field}
+    \cgalParamDescription{the flow for `across_flow` (`CGAL::Flow_aligned_surfaces::parameters::flow_field()`)}
+    \cgalParamType{a model of `FlowField_3`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns what was grown: new vertices and faces, the length of the grown boundary part, the
+         added area.
+\throws std::invalid_argument, before `tm` is modified, if `tm` is not a valid manifold triangle
+        mesh or is closed, `distance` is not positive and finite, `growth_direction` is zero,
+        parallel to the normal at every boundary edge or faces no boundary edge, `across_flow`
+        is given without `flow_field`, the flow is zero or undefined at every boundary edge, no
+        edge faces across the flow, or the distance is so large that the offset boundary folds
+        over or a new face would be degenerate.  The message names what is wrong.
+
+\sa `Flow_aligned_deformation::grow()`
+*/
+template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
+Growth_report grow_boundary(TriangleMesh& tm, double distance,
+                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Geom_traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
+  const char* caller = "grow_boundary()";
+
+  internal::check_triangle_mesh(tm, std::string(caller) + ": tm");
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, tm));
+  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const internal::Growth_options options = internal::read_growth_options(np, caller);
+
+  // Indices in iteration order: valid whatever the mesh's own index maps hold.
+  auto vim = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> ordered;
+  for (auto v : vertices(tm)) {
+    put(vim, v, ordered.size());
+    ordered.push_back(v);
+  }
+  const internal::Positions x = internal::read_positions(ordered, vpm);
+  internal::check_finite_positions(x, std::string(caller) + ": tm");
+
+  auto construct_point = gt.construct_point_3_object();
+  internal::Boundary_strip strip;
+  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::flow_field_t>::value) {
+    if (options.across_flow)
+      internal::throw_growth_error(caller, "across_flow needs the flow: pass it with the named parameter "
+                                           "flow_field");
+    strip = internal::make_boundary_strip(
+        tm, vim, x, nullptr, distance, options,
+        [](const Eigen::Vector3d&) { return internal::Flow_sample(); }, caller);
+  }
+  else {
+    const auto& field = get_parameter(np, internal_np::flow_field_t());
+    strip = internal::make_boundary_strip(
+        tm, vim, x, nullptr, distance, options,
+        [&](const Eigen::Vector3d& p) {
+          return internal::sample_flow(field, construct_point(p.x(), p.y(), p.z()));
+        },
+        caller);
+  }
+  internal::append_strip(tm, vpm, gt, ordered, strip);
+  return strip.report;
+}
+
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_GROW_BOUNDARY_H
