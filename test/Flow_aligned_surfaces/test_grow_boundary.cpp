@@ -471,6 +471,20 @@ TEST(GrowBoundaryBadInput, AcrossFlowWithoutFieldOrWithoutFlow)
       {"no boundary edge faces growth_direction and across the flow"});
 }
 
+// A narrow notch in the top side (depth 0.3, width ~0.1): its bottom curves with a radius far
+// below the distance 0.3, so the offset curve folds over there.
+TEST(GrowBoundaryBadInput, DistanceAboveTheRadiusOfAConcaveBoundaryFoldsOver)
+{
+  Mesh tm = rectangle(1, 1, 800);
+  for (auto v : tm.vertices()) {
+    const Point p = tm.point(v);
+    tm.point(v) = Point(p.x(), p.y() - 0.3 * std::exp(-CGAL::square(p.x() / 0.05)) * (p.y() + 0.5), 0);
+  }
+  expect_untouched_failure(tm, [&] { FAS::grow_boundary(tm, 0.3); }, {"grow_boundary()", "folds over"});
+  // A small step is fine.
+  EXPECT_NO_THROW(FAS::grow_boundary(tm, 0.002));
+}
+
 TEST(GrowBoundaryBadInput, DeformationRejectsAcrossFlowWhenOrthogonalAndKeepsItsState)
 {
   const FAS::Uniform_flow<K> flow(Vector(0, 0, 1));
