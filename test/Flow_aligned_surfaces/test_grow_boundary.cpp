@@ -3,6 +3,14 @@
 // pi ((R + d)^2 - R^2), a side grown alone moves by d; aligned surfaces stay on their exact
 // sphere or stream surface after growing and re-converging; M_0 follows M_k rigidly.
 
+#ifdef FAS_HAVE_OPENMESH
+// As in test_mesh_types.cpp: OpenMesh's add_vertex copies a deliberately uninitialized point,
+// which GCC reports at -O2 inside the standard headers, so the pragma precedes them.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#endif
+
 #include "expect_invalid_argument.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -20,6 +28,11 @@
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/helpers.h>
+
+#ifdef FAS_HAVE_OPENMESH
+#include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#endif
 
 #include <gtest/gtest.h>
 
@@ -210,6 +223,41 @@ TEST(GrowBoundary, PolyhedronGrowsLikeSurfaceMesh)
   EXPECT_EQ(tm.size_of_facets(), old_faces + report.number_of_new_faces);
   EXPECT_FALSE(PMP::does_self_intersect(tm));
 }
+
+TEST(GrowBoundary, DeformationOnPolyhedronGrowsAndReconverges)
+{
+  using Polyhedron = CGAL::Polyhedron_3<K>;
+  const FAS::Point_source_flow<K> source(Point(0, 0, 0), 1.0);
+  Polyhedron tm;
+  FAS::make_disk_patch(tm, Point(0.1, 0.2, 2.0), Vector(0.2, 0.1, 1.0), 0.5, 1000);
+  FAS::Flow_aligned_deformation<Polyhedron, FAS::Point_source_flow<K>> deformation(
+      tm, source, FAS::Alignment::ORTHOGONAL);
+  deformation.run();
+  const FAS::Growth_report report = deformation.grow(0.1);
+  EXPECT_NEAR(report.added_area / (0.1 * report.grown_boundary_length), 1.0, 0.1);
+  EXPECT_EQ(deformation.vertices().size(), tm.size_of_vertices());
+  EXPECT_TRUE(deformation.run().converged);
+  EXPECT_GE(FAS::normalized_flux(tm, source), 0.995);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(tm));
+}
+
+#ifdef FAS_HAVE_OPENMESH
+// OpenMesh's default TriMesh has float points (CGAL's vertex point map rounds to float).
+TEST(GrowBoundary, OpenMeshGrowsLikeSurfaceMesh)
+{
+  using OMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+  const double W = 1.2, H = 0.8, d = 0.1;
+  OMesh tm;
+  FAS::make_planar_patch(tm, Point(0, 0, 0), Vector(0, 0, 1), W, H, 800,
+                         FAS::parameters::patch_axis(Vector(1, 0, 0)));
+  const std::size_t old_faces = num_faces(tm);
+  const FAS::Growth_report report = FAS::grow_boundary(tm, d);
+  EXPECT_NEAR(report.added_area / ((W + 2 * d) * (H + 2 * d) - W * H), 1.0, 1e-5);
+  EXPECT_NEAR(PMP::area(tm) / ((W + 2 * d) * (H + 2 * d)), 1.0, 1e-5);
+  EXPECT_EQ(num_faces(tm), old_faces + report.number_of_new_faces);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(tm));
+}
+#endif
 
 // Growing twice: the second growth sees the first one's faces as old faces.
 TEST(GrowBoundary, RepeatedGrowthAddsUp)
@@ -421,6 +469,20 @@ TEST(GrowBoundaryBadInput, AcrossFlowWithoutFieldOrWithoutFlow)
                 true, FAS::parameters::flow_field(flow, FAS::parameters::growth_direction(Vector(1, 0, 0)))));
       },
       {"no boundary edge faces growth_direction and across the flow"});
+}
+
+// A narrow notch in the top side (depth 0.3, width ~0.1): its bottom curves with a radius far
+// below the distance 0.3, so the offset curve folds over there.
+TEST(GrowBoundaryBadInput, DistanceAboveTheRadiusOfAConcaveBoundaryFoldsOver)
+{
+  Mesh tm = rectangle(1, 1, 800);
+  for (auto v : tm.vertices()) {
+    const Point p = tm.point(v);
+    tm.point(v) = Point(p.x(), p.y() - 0.3 * std::exp(-CGAL::square(p.x() / 0.05)) * (p.y() + 0.5), 0);
+  }
+  expect_untouched_failure(tm, [&] { FAS::grow_boundary(tm, 0.3); }, {"grow_boundary()", "folds over"});
+  // A small step is fine.
+  EXPECT_NO_THROW(FAS::grow_boundary(tm, 0.002));
 }
 
 TEST(GrowBoundaryBadInput, DeformationRejectsAcrossFlowWhenOrthogonalAndKeepsItsState)

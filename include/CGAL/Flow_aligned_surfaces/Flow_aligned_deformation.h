@@ -686,7 +686,8 @@ private:
   // factors L + W.  Called at construction and whenever the connectivity changes.
   void rebuild_operators(const Positions& reference)
   {
-    auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices);
+    // The iterations use L and the per-face stiffness only (D Y' is assembled face by face).
+    auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices, false);
     if (auto* degenerate = std::get_if<internal::Degenerate_face>(&built))
       throw std::invalid_argument("Flow_aligned_deformation: tm: face " + std::to_string(degenerate->face) +
                                   " is degenerate (zero area)");

@@ -72,9 +72,9 @@ struct Poisson_operators {
 
   std::vector<Reference_face> faces;
   Eigen::VectorXd face_areas; // n
-  Sparse_matrix G;            // 3n x m
+  Sparse_matrix G;            // 3n x m (empty unless asked for)
   Sparse_matrix L;            // m x m
-  Sparse_matrix D;            // m x 3n
+  Sparse_matrix D;            // m x 3n (empty unless asked for)
 
   Eigen::Index number_of_vertices() const { return L.rows(); }
   Eigen::Index number_of_faces() const { return face_areas.size(); }
@@ -91,10 +91,13 @@ struct Degenerate_face {
 };
 
 /// Assembles the operators from vertex positions (m x 3) and the vertex indices of each face.
-/// Returns the index of a degenerate face instead when there is one.
+/// Returns the index of a degenerate face instead when there is one.  Without
+/// `with_gradient_and_divergence`, G and D are left empty: the deformation needs only L and the
+/// per-face data, and G, D cost about half of the assembly (a sparse product for D).
 inline std::variant<Poisson_operators, Degenerate_face>
 make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
-                       const std::vector<std::array<Eigen::Index, 3>>& face_vertices)
+                       const std::vector<std::array<Eigen::Index, 3>>& face_vertices,
+                       bool with_gradient_and_divergence = true)
 {
   using Triplet = Eigen::Triplet<double>;
   const Eigen::Index m = positions.rows();
@@ -104,7 +107,8 @@ make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions
   ops.faces.resize(face_vertices.size());
   ops.face_areas.resize(n);
   std::vector<Triplet> g_entries, l_entries;
-  g_entries.reserve(9 * face_vertices.size());
+  if (with_gradient_and_divergence)
+    g_entries.reserve(9 * face_vertices.size());
   l_entries.reserve(9 * face_vertices.size());
 
   for (Eigen::Index j = 0; j < n; ++j) {
@@ -119,18 +123,21 @@ make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions
     face.stiffness = t->area * t->gradients.transpose() * t->gradients;
     ops.face_areas[j] = t->area;
     for (int i = 0; i < 3; ++i) {
-      for (int d = 0; d < 3; ++d)
-        g_entries.emplace_back(3 * j + d, fv[i], t->gradients(d, i));
+      if (with_gradient_and_divergence)
+        for (int d = 0; d < 3; ++d)
+          g_entries.emplace_back(3 * j + d, fv[i], t->gradients(d, i));
       for (int k = 0; k < 3; ++k)
         l_entries.emplace_back(fv[i], fv[k], face.stiffness(i, k));
     }
   }
 
-  ops.G.resize(3 * n, m);
-  ops.G.setFromTriplets(g_entries.begin(), g_entries.end());
   ops.L.resize(m, m);
   ops.L.setFromTriplets(l_entries.begin(), l_entries.end());
-  ops.D = ops.G.transpose() * ops.area_matrix();
+  if (with_gradient_and_divergence) {
+    ops.G.resize(3 * n, m);
+    ops.G.setFromTriplets(g_entries.begin(), g_entries.end());
+    ops.D = ops.G.transpose() * ops.area_matrix();
+  }
   return ops;
 }
 
