@@ -33,6 +33,9 @@ CGAL_FAS_DECLARE_TAG(use_parallelism)
 CGAL_FAS_DECLARE_TAG(patch_axis)
 CGAL_FAS_DECLARE_TAG(array_name)
 CGAL_FAS_DECLARE_TAG(mask_array_name)
+CGAL_FAS_DECLARE_TAG(normalized)
+CGAL_FAS_DECLARE_TAG(angle)
+CGAL_FAS_DECLARE_TAG(constraint_vertex)
 #undef CGAL_FAS_DECLARE_TAG
 } // namespace internal_np
 /// \endcond
@@ -88,6 +91,15 @@ CGAL_FAS_NAMED_PARAMETER(array_name, std::string)
 /// The name of the node mask array (nonzero = fluid) that a flow field reader reads, or that a
 /// writer writes.  Default: `"inside"` (read only if present); the empty string reads no mask.
 CGAL_FAS_NAMED_PARAMETER(mask_array_name, std::string)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Whether a parametrization's guidance field is normalized per face (`true`: near-equidistant
+/// iso-contours; `false`: its gradient follows the field's magnitude, the time-like coordinate
+/// of LIC).  Default: `true` in `parametrize_tangential()`, `false` in `parametrize_orthogonal()`.
+CGAL_FAS_NAMED_PARAMETER(normalized, bool)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// α, the angle (radians) by which `parametrize_orthogonal()` turns its reference direction
+/// about the normal at the constrained vertex.  Default: `0`.
+CGAL_FAS_NAMED_PARAMETER(angle, double)
 
 #undef CGAL_FAS_NAMED_PARAMETER
 
@@ -99,6 +111,18 @@ CGAL::Named_function_parameters<Vector_3, internal_np::patch_axis_t, NamedParame
 patch_axis(const Vector_3& axis, const NamedParameters& np = NamedParameters())
 {
   return CGAL::Named_function_parameters<Vector_3, internal_np::patch_axis_t, NamedParameters>(axis, np);
+}
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The vertex at which a parametrization is constrained to 0 (in its connected component; the
+/// other components keep the default).  Type: the mesh's `vertex_descriptor`.  Default: the
+/// vertex nearest to the area-weighted barycenter of each connected component.
+template <typename VertexDescriptor, typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<VertexDescriptor, internal_np::constraint_vertex_t, NamedParameters>
+constraint_vertex(const VertexDescriptor& v, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<VertexDescriptor, internal_np::constraint_vertex_t, NamedParameters>(
+      v, np);
 }
 
 } // namespace parameters
