@@ -314,15 +314,8 @@ floating-point value type
     \cgalParamType{`boost::graph_traits<TriangleMesh>::%vertex_descriptor`}
     \cgalParamDefault{the vertex nearest to the area-weighted barycenter of each connected component}
   \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with the vertices as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal kernel deduced from the point type}
+  \cgalParamNBegin{vertex_point_map, geom_traits}
+    \cgalParamDescription{the points of the vertices and the kernel, as in `normalized_flux()`}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_index_map, face_index_map}
     \cgalParamDescription{property maps associating indices in `[0, num_vertices(tm))`, `[0, num_faces(tm))`}
