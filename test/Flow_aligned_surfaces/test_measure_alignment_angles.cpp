@@ -1,0 +1,136 @@
+// alignment_angle_statistics and compute_face_alignment_angles against closed forms: linear
+// fields whose gradient makes a known angle with a uniform flow, a piecewise uniform flow with
+// area-weighted statistics, and the tangential parametrization of an exact stream surface.
+
+#include "expect_invalid_argument.h"
+#include "test_kernel.h"
+
+#include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
+#include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
+#include <CGAL/Flow_aligned_surfaces/measure.h>
+#include <CGAL/Flow_aligned_surfaces/parametrize.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+
+namespace {
+
+using namespace fas_test;
+using Mesh = CGAL::Surface_mesh<Point_3>;
+using Vertex = Mesh::Vertex_index;
+
+Mesh::Property_map<Vertex, double> linear_field(Mesh& tm, const Vector_3& w)
+{
+  auto r = tm.add_property_map<Vertex, double>("v:r", 0).first;
+  for (Vertex v : tm.vertices())
+    r[v] = w * (tm.point(v) - CGAL::ORIGIN);
+  return r;
+}
+
+TEST(AlignmentAngles, TheGradientOfTheUniformFlowsPotentialIsAlignedAndATurnedOneMakesItsAngle)
+{
+  // A tilted plane containing u; r = w . x with w in the plane at the angle theta from u.
+  const Vector_3 u(1, 2, 0), normal(2, -1, 1.5);
+  const auto uniform = [&](const Point_3&) { return std::optional<Vector_3>(u); };
+  Mesh tm;
+  FAS::make_planar_patch(tm, Point_3(1, -1, 2), normal, 1.5, 1.0, 800);
+  const Vector_3 a = u / std::sqrt(u.squared_length());
+  const Vector_3 n = normal / std::sqrt(normal.squared_length());
+  const Vector_3 b = CGAL::cross_product(n, a);
+  for (double theta : {0.0, 30.0, 90.0, 150.0}) {
+    const double t = theta * CGAL_PI / 180;
+    auto r = linear_field(tm, 2.5 * (std::cos(t) * a + std::sin(t) * b));
+    const FAS::Alignment_angle_statistics statistics = FAS::alignment_angle_statistics(tm, uniform, r);
+    EXPECT_NEAR(statistics.mean, theta, 1e-6);
+    EXPECT_NEAR(statistics.standard_deviation, 0, 1e-6);
+    EXPECT_EQ(statistics.number_of_faces, tm.number_of_faces());
+    EXPECT_NEAR(statistics.area, 1.5, 1e-12);
+    tm.remove_property_map(r);
+  }
+}
+
+TEST(AlignmentAngles, StatisticsAreAreaWeightedAndSkipFacesWithoutASample)
+{
+  // r = x; the flow is along x where x < 0 (0 degrees), along (1, 1) where 0 <= x < 0.3 (45
+  // degrees), outside the domain beyond: mean 45 p, standard deviation 45 sqrt(p (1 - p)) with
+  // p the share of the 45-degree area among the measured faces.
+  const auto piecewise = [](const Point_3& p) -> std::optional<Vector_3> {
+    if (p.x() < 0)
+      return Vector_3(3, 0, 0);
+    if (p.x() < 0.3)
+      return Vector_3(1, 1, 0);
+    return std::nullopt;
+  };
+  Mesh tm;
+  FAS::make_planar_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), 1.0, 1.0, 2000);
+  auto r = linear_field(tm, Vector_3(1, 0, 0));
+  double aligned = 0, turned = 0;
+  std::size_t measured = 0;
+  for (auto f : tm.faces()) {
+    const auto h = tm.halfedge(f);
+    const double cx =
+        (tm.point(tm.source(h)).x() + tm.point(tm.target(h)).x() + tm.point(tm.target(tm.next(h))).x()) / 3;
+    const double area = CGAL::Polygon_mesh_processing::face_area(f, tm);
+    if (cx < 0)
+      aligned += area;
+    else if (cx < 0.3)
+      turned += area;
+    measured += cx < 0.3;
+  }
+  const double p = turned / (aligned + turned);
+  const FAS::Alignment_angle_statistics statistics = FAS::alignment_angle_statistics(tm, piecewise, r);
+  EXPECT_NEAR(statistics.mean, 45 * p, 1e-9);
+  EXPECT_NEAR(statistics.standard_deviation, 45 * std::sqrt(p * (1 - p)), 1e-9);
+  EXPECT_EQ(statistics.number_of_faces, measured);
+  EXPECT_NEAR(statistics.area, aligned + turned, 1e-12);
+
+  auto angles = tm.add_property_map<Mesh::Face_index, double>("f:angle", 0).first;
+  FAS::compute_face_alignment_angles(tm, piecewise, r, angles);
+  std::size_t undefined = 0;
+  for (auto f : tm.faces()) {
+    EXPECT_TRUE(angles[f] == -1 || std::abs(angles[f]) < 1e-9 || std::abs(angles[f] - 45) < 1e-9)
+        << angles[f];
+    undefined += angles[f] == -1;
+  }
+  EXPECT_EQ(undefined, tm.number_of_faces() - measured);
+}
+
+TEST(AlignmentAngles, TheTangentialParametrizationOfAStreamSurfaceFollowsTheFlow)
+{
+  // The cylinder x^2 + y^2 = 1 is a stream surface of the helical flow (-y, x, 0.5): a planar
+  // patch in (angle, z) wrapped onto two thirds of it.  The paper's best figures (DELTA WING):
+  // mean 1.0 degree, standard deviation 0.9.
+  const FAS::Helical_flow<K> helical(0.5);
+  Mesh tm;
+  FAS::make_planar_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), 4.0, 1.5, 5000);
+  for (Vertex v : tm.vertices()) {
+    const Point_3 p = tm.point(v);
+    tm.point(v) = Point_3(std::cos(p.x()), std::sin(p.x()), p.y());
+  }
+  auto r = tm.add_property_map<Vertex, double>("v:r", 0).first;
+  auto s = tm.add_property_map<Vertex, double>("v:s", 0).first;
+  for (bool normalized : {true, false}) {
+    FAS::parametrize_tangential(tm, helical, r, s, FAS::parameters::normalized(normalized));
+    const FAS::Alignment_angle_statistics statistics = FAS::alignment_angle_statistics(tm, helical, r);
+    EXPECT_LE(statistics.mean, 1.0) << normalized;
+    EXPECT_LE(statistics.standard_deviation, 0.9) << normalized;
+    // s follows the flow nowhere: its gradient is orthogonal to it.
+    EXPECT_NEAR(FAS::alignment_angle_statistics(tm, helical, s).mean, 90, 1.0) << normalized;
+  }
+}
+
+TEST(AlignmentAngles, NothingToMeasureIsAnError)
+{
+  Mesh tm;
+  FAS::make_disk_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), 1.0, 100);
+  auto r = linear_field(tm, Vector_3(0, 0, 0));
+  const auto uniform = [](const Point_3&) { return std::optional<Vector_3>(Vector_3(1, 0, 0)); };
+  expect_invalid_argument([&] { FAS::alignment_angle_statistics(tm, uniform, r); },
+                          {"alignment_angle_statistics", "no face", "gradient of r_map"});
+}
+
+} // namespace
