@@ -36,6 +36,7 @@ CGAL_FAS_DECLARE_TAG(mask_array_name)
 CGAL_FAS_DECLARE_TAG(normalized)
 CGAL_FAS_DECLARE_TAG(angle)
 CGAL_FAS_DECLARE_TAG(constraint_vertex)
+CGAL_FAS_DECLARE_TAG(resampling_step)
 #undef CGAL_FAS_DECLARE_TAG
 } // namespace internal_np
 /// \endcond
@@ -100,6 +101,10 @@ CGAL_FAS_NAMED_PARAMETER(normalized, bool)
 /// α, the angle (radians) by which `parametrize_orthogonal()` turns its reference direction
 /// about the normal at the constrained vertex.  Default: `0`.
 CGAL_FAS_NAMED_PARAMETER(angle, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The arc length between consecutive points of a polyline resampled by `project_polyline()`.
+/// Default: the mean edge length of the mesh.
+CGAL_FAS_NAMED_PARAMETER(resampling_step, double)
 
 #undef CGAL_FAS_NAMED_PARAMETER
 
