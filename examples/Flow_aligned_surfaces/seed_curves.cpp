@@ -1,13 +1,15 @@
 // Seed structures from an orthogonal surface (Section 5 of the paper): a disk near a point
 // source is aligned orthogonally to the flow (it becomes a piece of a sphere about the
 // source), parametrized orthogonally, and cut into seed curves by iso-contours of r; circular
-// seed curves come from the heat-method distance, seed points from a spaced sample.
+// seed curves come from the heat-method distance, seed points from a spaced sample.  A stream
+// surface of the Burgers vortex, parametrized tangentially, gives seed curves that cross the flow.
 //
 //   seed_curves [--faces N] [--output DIR]
 //
 // writes DIR/surface.vtp (r, s and the distance per vertex), DIR/seed_curves.csv and
 // DIR/circular_seeds.csv (curve,x,y,z per point), DIR/seed_points.csv (one row per seed, its
-// index in the "curve" column).  Exits with 1 if the seed curves are not orthogonal to the flow.
+// index in the "curve" column), DIR/stream_surface_seed_curves.csv.  Exits with 1 if the seed
+// curves are not orthogonal to the flow.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -46,6 +48,25 @@ bool write_polylines_csv(const std::string& filename, const std::vector<Polyline
       for (const Point& p : curves[c])
         os << c << "," << p.x() << "," << p.y() << "," << p.z() << "\n";
   });
+}
+
+// The mean over the segments of `curves` of |cos| between the segment and the flow at its midpoint.
+template <class Flow>
+double mean_cosine_to_flow(const Flow& flow, const std::vector<const std::vector<Polyline>*>& curves)
+{
+  double cosine = 0;
+  std::size_t segments = 0;
+  for (const std::vector<Polyline>* set : curves)
+    for (const Polyline& curve : *set)
+      for (std::size_t i = 1; i < curve.size(); ++i) {
+        const Vector d = curve[i] - curve[i - 1];
+        const Vector v = *flow(CGAL::midpoint(curve[i - 1], curve[i]));
+        if (d.squared_length() > 0) {
+          cosine += std::abs(d * v) / std::sqrt(d.squared_length() * v.squared_length());
+          ++segments;
+        }
+      }
+  return segments > 0 ? cosine / double(segments) : 1.0;
 }
 
 int main(int argc, char** argv)
@@ -94,20 +115,25 @@ int main(int argc, char** argv)
             << seed_points.size() << " seed points\n";
 
   // Every seed curve is orthogonal to the flow: the mean |cos| between segments and flow.
-  double cosine = 0;
-  std::size_t segments = 0;
-  for (const std::vector<Polyline>* curves : {&seed_curves, &circular_seeds})
-    for (const Polyline& curve : *curves)
-      for (std::size_t i = 1; i < curve.size(); ++i) {
-        const Vector d = curve[i] - curve[i - 1];
-        const Vector v = *flow(CGAL::midpoint(curve[i - 1], curve[i]));
-        if (d.squared_length() > 0) {
-          cosine += std::abs(d * v) / std::sqrt(d.squared_length() * v.squared_length());
-          ++segments;
-        }
-      }
-  cosine /= double(segments);
+  const double cosine = mean_cosine_to_flow(flow, {&seed_curves, &circular_seeds});
   std::cout << "mean |cos(segment, flow)| " << cosine << "\n";
+
+  // 4. A tangential surface (a stream surface of the Burgers vortex): the iso-contours of its
+  // tangential parametrization's r cross the flow within the surface.
+  const FAS::Burgers_vortex<Kernel> vortex;
+  Mesh stream_surface;
+  FAS::make_disk_patch(stream_surface, Point(1.0, 0.0, 0.5), Vector(0.0, 1.0, 0.3), 0.5, faces);
+  const FAS::Alignment_report tangential =
+      FAS::align_to_flow(stream_surface, vortex, FAS::Alignment::TANGENTIAL);
+  auto tr = stream_surface.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
+  auto ts = stream_surface.add_property_map<Mesh::Vertex_index, double>("v:s", 0).first;
+  FAS::parametrize_tangential(stream_surface, vortex, tr, ts);
+  std::vector<Polyline> crossing_curves;
+  FAS::extract_iso_contours(stream_surface, tr, FAS::evenly_spaced_iso_values(stream_surface, tr, 5),
+                            std::back_inserter(crossing_curves));
+  const double crossing_cosine = mean_cosine_to_flow(vortex, {&crossing_curves});
+  std::cout << "stream surface: flux " << tangential.normalized_flux << ", " << crossing_curves.size()
+            << " seed curves, mean |cos(segment, flow)| " << crossing_cosine << "\n";
 
   std::error_code ec;
   std::filesystem::create_directories(out, ec);
@@ -124,12 +150,17 @@ int main(int argc, char** argv)
   if (!FAS::IO::write_VTP(out + "/surface.vtp", tm, arrays, {}, CGAL::parameters::default_values(), &error) ||
       !write_polylines_csv(out + "/seed_curves.csv", seed_curves, error) ||
       !write_polylines_csv(out + "/circular_seeds.csv", circular_seeds, error) ||
-      !write_polylines_csv(out + "/seed_points.csv", points_as_rows, error)) {
+      !write_polylines_csv(out + "/seed_points.csv", points_as_rows, error) ||
+      !write_polylines_csv(out + "/stream_surface_seed_curves.csv", crossing_curves, error)) {
     std::cerr << error << "\n";
     return 1;
   }
-  std::cout << "wrote " << out << "/surface.vtp, seed_curves.csv, circular_seeds.csv, seed_points.csv\n";
-  return report.normalized_flux >= 0.99 && !seed_curves.empty() && circular_seeds.size() == 4 && cosine < 0.05
+  std::cout << "wrote " << out
+            << "/surface.vtp, seed_curves.csv, circular_seeds.csv, seed_points.csv, "
+               "stream_surface_seed_curves.csv\n";
+  return report.normalized_flux >= 0.99 && !seed_curves.empty() && circular_seeds.size() == 4 &&
+                 cosine < 0.05 && tangential.normalized_flux <= 0.01 && !crossing_curves.empty() &&
+                 crossing_cosine < 0.1
              ? 0
              : 1;
 }
