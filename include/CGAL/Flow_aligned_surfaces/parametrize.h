@@ -281,7 +281,9 @@ the iso-contours of \f$ r \f$ are near-equidistant; unnormalized, \f$ r \f$ is t
 coordinate used for LIC, and on a planar surface in a 2D divergence-free flow \f$ s \f$ is
 \f$ -\psi \f$ up to a constant (\f$ \psi \f$ the stream function with
 \f$ v = (\partial_y \psi, -\partial_x \psi) \f$ in the frame of the normal), in a curl-free
-flow \f$ r \f$ is the potential up to a constant.  Projecting \f$ v_j \f$ does not change the
+flow \f$ r \f$ is the potential up to a constant.  The normalized \f$ \nabla r \f$ follows the flow
+closely where its stream lines are near straight, the unnormalized one where the flow on the
+surface has little vorticity (`alignment_angle_statistics()` measures it).  Projecting \f$ v_j \f$ does not change the
 unnormalized solution (\f$ \mathbf{G} r \f$ lies in the face's plane).
 
 Faces whose centroid sample is outside the domain, not finite or zero, or whose field is
