@@ -36,6 +36,10 @@ CGAL_FAS_DECLARE_TAG(mask_array_name)
 CGAL_FAS_DECLARE_TAG(growth_direction)
 CGAL_FAS_DECLARE_TAG(across_flow)
 CGAL_FAS_DECLARE_TAG(flow_field)
+CGAL_FAS_DECLARE_TAG(normalized)
+CGAL_FAS_DECLARE_TAG(angle)
+CGAL_FAS_DECLARE_TAG(constraint_vertex)
+CGAL_FAS_DECLARE_TAG(resampling_step)
 #undef CGAL_FAS_DECLARE_TAG
 } // namespace internal_np
 /// \endcond
@@ -96,6 +100,19 @@ CGAL_FAS_NAMED_PARAMETER(mask_array_name, std::string)
 /// direction of the boundary is within 60 degrees of the direction across the flow, and along
 /// that direction (`n × v/|v|` signed outward).  Default: `false`.
 CGAL_FAS_NAMED_PARAMETER(across_flow, bool)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Whether a parametrization's guidance field is normalized per face (`true`: near-equidistant
+/// iso-contours; `false`: its gradient follows the field's magnitude, the time-like coordinate
+/// of LIC).  Default: `true` in `parametrize_tangential()`, `false` in `parametrize_orthogonal()`.
+CGAL_FAS_NAMED_PARAMETER(normalized, bool)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// α, the angle (radians) by which `parametrize_orthogonal()` turns its reference direction
+/// about the normal at the constrained vertex.  Default: `0`.
+CGAL_FAS_NAMED_PARAMETER(angle, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The arc length between consecutive points of a polyline resampled by `project_polyline()`.
+/// Default: the mean edge length of the mesh.
+CGAL_FAS_NAMED_PARAMETER(resampling_step, double)
 
 #undef CGAL_FAS_NAMED_PARAMETER
 
@@ -130,6 +147,18 @@ CGAL::Named_function_parameters<FlowField, internal_np::flow_field_t, NamedParam
 flow_field(const FlowField& field, const NamedParameters& np = NamedParameters())
 {
   return CGAL::Named_function_parameters<FlowField, internal_np::flow_field_t, NamedParameters>(field, np);
+}
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The vertex at which a parametrization is constrained to 0 (in its connected component; the
+/// other components keep the default).  Type: the mesh's `vertex_descriptor`.  Default: the
+/// vertex nearest to the area-weighted barycenter of each connected component.
+template <typename VertexDescriptor, typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<VertexDescriptor, internal_np::constraint_vertex_t, NamedParameters>
+constraint_vertex(const VertexDescriptor& v, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<VertexDescriptor, internal_np::constraint_vertex_t, NamedParameters>(
+      v, np);
 }
 
 } // namespace parameters

@@ -1,0 +1,166 @@
+// Seed structures from an orthogonal surface (Section 5 of the paper): a disk near a point
+// source is aligned orthogonally to the flow (it becomes a piece of a sphere about the
+// source), parametrized orthogonally, and cut into seed curves by iso-contours of r; circular
+// seed curves come from the heat-method distance, seed points from a spaced sample.  A stream
+// surface of the Burgers vortex, parametrized tangentially, gives seed curves that cross the flow.
+//
+//   seed_curves [--faces N] [--output DIR]
+//
+// writes DIR/surface.vtp (r, s and the distance per vertex), DIR/seed_curves.csv and
+// DIR/circular_seeds.csv (curve,x,y,z per point), DIR/seed_points.csv (one row per seed, its
+// index in the "curve" column), DIR/stream_surface_seed_curves.csv.  Exits with 1 if the seed
+// curves are not orthogonal to the flow.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
+#include <CGAL/Flow_aligned_surfaces/align_to_flow.h>
+#include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
+#include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
+#include <CGAL/Flow_aligned_surfaces/internal/write_file_atomically.h>
+#include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
+#include <CGAL/Flow_aligned_surfaces/parametrize.h>
+#include <CGAL/Flow_aligned_surfaces/seeds.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Vector = Kernel::Vector_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Polyline = std::vector<Point>;
+namespace FAS = CGAL::Flow_aligned_surfaces;
+
+// Writes "curve,x,y,z" rows; false with the reason in `error` when the file cannot be written.
+bool write_polylines_csv(const std::string& filename, const std::vector<Polyline>& curves, std::string& error)
+{
+  return FAS::internal::write_file_atomically(filename, error, [&](std::ostream& os) {
+    os.precision(17);
+    os << "curve,x,y,z\n";
+    for (std::size_t c = 0; c < curves.size(); ++c)
+      for (const Point& p : curves[c])
+        os << c << "," << p.x() << "," << p.y() << "," << p.z() << "\n";
+  });
+}
+
+// The mean over the segments of `curves` of |cos| between the segment and the flow at its midpoint.
+template <class Flow>
+double mean_cosine_to_flow(const Flow& flow, const std::vector<const std::vector<Polyline>*>& curves)
+{
+  double cosine = 0;
+  std::size_t segments = 0;
+  for (const std::vector<Polyline>* set : curves)
+    for (const Polyline& curve : *set)
+      for (std::size_t i = 1; i < curve.size(); ++i) {
+        const Vector d = curve[i] - curve[i - 1];
+        const Vector v = *flow(CGAL::midpoint(curve[i - 1], curve[i]));
+        if (d.squared_length() > 0) {
+          cosine += std::abs(d * v) / std::sqrt(d.squared_length() * v.squared_length());
+          ++segments;
+        }
+      }
+  return segments > 0 ? cosine / double(segments) : 1.0;
+}
+
+int main(int argc, char** argv)
+{
+  std::size_t faces = 3000;
+  std::string out = "seed_curves_output";
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--faces" && i + 1 < argc)
+      faces = std::strtoul(argv[++i], nullptr, 10);
+    else if (arg == "--output" && i + 1 < argc)
+      out = argv[++i];
+    else {
+      std::cerr << "usage: seed_curves [--faces N] [--output DIR]\n";
+      return 2;
+    }
+  }
+
+  // 1. An orthogonal surface: a tilted disk beside the source becomes a piece of a sphere.
+  const FAS::Point_source_flow<Kernel> flow;
+  Mesh tm;
+  FAS::make_disk_patch(tm, Point(0, 0, 1), Vector(0.3, 0, 1), 0.6, faces);
+  const FAS::Alignment_report report = FAS::align_to_flow(tm, flow, FAS::Alignment::ORTHOGONAL);
+  std::cout << "aligned: flux " << report.normalized_flux << " after " << report.number_of_iterations
+            << " iterations\n";
+
+  // 2. The orthogonal parametrization (alpha turns the contours) and the circular one.
+  auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
+  auto s = tm.add_property_map<Mesh::Vertex_index, double>("v:s", 0).first;
+  auto distance = tm.add_property_map<Mesh::Vertex_index, double>("v:distance", 0).first;
+  FAS::parametrize_orthogonal(tm, flow, r, s, FAS::parameters::angle(0.5));
+  Mesh::Vertex_index center = *tm.vertices().begin();
+  for (auto v : tm.vertices()) // the constrained vertex, where r = 0
+    if (std::abs(r[v]) < std::abs(r[center]))
+      center = v;
+  FAS::compute_geodesic_distance(tm, center, distance);
+
+  // 3. Seed curves: iso-contours of r; circular seeds: iso-contours of the distance.
+  std::vector<Polyline> seed_curves, circular_seeds;
+  FAS::extract_iso_contours(tm, r, FAS::evenly_spaced_iso_values(tm, r, 7), std::back_inserter(seed_curves));
+  FAS::extract_iso_contours(tm, distance, std::vector<double>{0.1, 0.2, 0.3, 0.4},
+                            std::back_inserter(circular_seeds));
+  std::vector<Point> seed_points;
+  FAS::sample_seed_points(tm, 0.1, std::back_inserter(seed_points));
+  std::cout << seed_curves.size() << " seed curves, " << circular_seeds.size() << " circular seeds, "
+            << seed_points.size() << " seed points\n";
+
+  // Every seed curve is orthogonal to the flow: the mean |cos| between segments and flow.
+  const double cosine = mean_cosine_to_flow(flow, {&seed_curves, &circular_seeds});
+  std::cout << "mean |cos(segment, flow)| " << cosine << "\n";
+
+  // 4. A tangential surface (a stream surface of the Burgers vortex): the iso-contours of its
+  // tangential parametrization's r cross the flow within the surface.
+  const FAS::Burgers_vortex<Kernel> vortex;
+  Mesh stream_surface;
+  FAS::make_disk_patch(stream_surface, Point(1.0, 0.0, 0.5), Vector(0.0, 1.0, 0.3), 0.5, faces);
+  const FAS::Alignment_report tangential =
+      FAS::align_to_flow(stream_surface, vortex, FAS::Alignment::TANGENTIAL);
+  auto tr = stream_surface.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
+  auto ts = stream_surface.add_property_map<Mesh::Vertex_index, double>("v:s", 0).first;
+  FAS::parametrize_tangential(stream_surface, vortex, tr, ts);
+  std::vector<Polyline> crossing_curves;
+  FAS::extract_iso_contours(stream_surface, tr, FAS::evenly_spaced_iso_values(stream_surface, tr, 5),
+                            std::back_inserter(crossing_curves));
+  const double crossing_cosine = mean_cosine_to_flow(vortex, {&crossing_curves});
+  std::cout << "stream surface: flux " << tangential.normalized_flux << ", " << crossing_curves.size()
+            << " seed curves, mean |cos(segment, flow)| " << crossing_cosine << "\n";
+
+  std::error_code ec;
+  std::filesystem::create_directories(out, ec);
+  std::vector<FAS::IO::Data_array> arrays = {{"r", 1, {}}, {"s", 1, {}}, {"distance", 1, {}}};
+  for (auto v : tm.vertices()) {
+    arrays[0].values.push_back(r[v]);
+    arrays[1].values.push_back(s[v]);
+    arrays[2].values.push_back(distance[v]);
+  }
+  std::string error;
+  std::vector<Polyline> points_as_rows;
+  for (const Point& p : seed_points)
+    points_as_rows.push_back({p});
+  if (!FAS::IO::write_VTP(out + "/surface.vtp", tm, arrays, {}, CGAL::parameters::default_values(), &error) ||
+      !write_polylines_csv(out + "/seed_curves.csv", seed_curves, error) ||
+      !write_polylines_csv(out + "/circular_seeds.csv", circular_seeds, error) ||
+      !write_polylines_csv(out + "/seed_points.csv", points_as_rows, error) ||
+      !write_polylines_csv(out + "/stream_surface_seed_curves.csv", crossing_curves, error)) {
+    std::cerr << error << "\n";
+    return 1;
+  }
+  std::cout << "wrote " << out
+            << "/surface.vtp, seed_curves.csv, circular_seeds.csv, seed_points.csv, "
+               "stream_surface_seed_curves.csv\n";
+  return report.normalized_flux >= 0.99 && !seed_curves.empty() && circular_seeds.size() == 4 &&
+                 cosine < 0.05 && tangential.normalized_flux <= 0.01 && !crossing_curves.empty() &&
+                 crossing_cosine < 0.1
+             ? 0
+             : 1;
+}

@@ -1,0 +1,535 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Poisson parametrizations of a triangle mesh guided by a flow (Section 5 of the paper).
+// With the operators G (3n x m), A (3n x 3n), L = G^T A G and D = G^T A of
+// internal/Poisson_operators.h, a per-face cross field C_j = (a_j, b_j) gives the two vertex
+// scalar fields (r, s) (m x 2) that minimize eq. (6)
+//
+//   e_p(r, s) = ||G r - a||_A^2 + ||G s - b||_A^2,   that is   L (r, s) = D (a, b)   (eq. 7),
+//
+// solved with one factorization of L + W (W: one soft constraint per connected component,
+// which fixes the free constant) and one back-substitution per column; r and s are then
+// shifted to 0 at the constrained vertex.
+//
+//   tangential:  a_j = P_j v_j / |P_j v_j|  (normalized)  or  P_j v_j,   b_j = a_j x n_j
+//   orthogonal:  a_j = P_j (R(n_c, alpha) r_c) x v_j  (optionally normalized),  b_j = a_j x n_j
+//   geodesic distance (heat method, Crane et al. 2013, on the same operators):
+//                (M + t L) h = h_0,  t = 5 A_M / |T|,  X_j = -(G h)_j / |(G h)_j|,  L d = D X,
+//                d(source) = 0.
+//
+// P_j = I - n_j n_j^T, v_j the field at the centroid of face j, n_c the normal at the
+// constrained vertex v_c, r_c a unit vector orthogonal to n_c (second column of the Householder
+// Q of n_c), M the lumped (barycentric) vertex areas, A_M the total area and |T| the number of
+// faces.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_PARAMETRIZE_H
+#define CGAL_FLOW_ALIGNED_SURFACES_PARAMETRIZE_H
+
+#include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
+#include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
+#include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
+#include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
+#include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/QR>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace internal {
+
+/// A face graph flattened into arrays together with its Poisson operators.
+template <class TriangleMesh>
+struct Surface_operators {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+
+  std::vector<vertex_descriptor> vertices; // in index order
+  Mesh_arrays arrays;
+  Positions positions;
+  Poisson_operators ops;
+  Positions face_normals;   // n x 3, unit
+  Positions face_centroids; // n x 3
+  std::vector<std::size_t> vertex_component;
+
+  Eigen::Index number_of_faces() const { return ops.number_of_faces(); }
+};
+
+/// Checks `tm` and builds its operators; messages start with `caller`.
+template <class TriangleMesh, class NamedParameters>
+Surface_operators<TriangleMesh> make_surface_operators(const TriangleMesh& tm, const NamedParameters& np,
+                                                       const std::string& caller)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  check_triangle_mesh(tm, caller + ": tm");
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+
+  Surface_operators<TriangleMesh> s;
+  s.vertices = vertices_in_index_order(tm, vim);
+  s.arrays = make_mesh_arrays(tm, vim, fim);
+  s.positions = read_positions(s.vertices, vpm);
+  check_finite_positions(s.positions, caller + ": tm");
+  auto built = make_poisson_operators(s.positions, s.arrays.face_vertices);
+  if (auto* degenerate = std::get_if<Degenerate_face>(&built))
+    throw std::invalid_argument(caller + ": tm: face " + std::to_string(degenerate->face) +
+                                " is degenerate (zero area)");
+  s.ops = std::move(std::get<Poisson_operators>(built));
+
+  const Eigen::Index n = s.ops.number_of_faces();
+  s.face_normals.resize(n, 3);
+  s.face_centroids.resize(n, 3);
+  s.vertex_component.assign(s.vertices.size(), 0);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const auto& fv = s.arrays.face_vertices[std::size_t(j)];
+    const Eigen::Vector3d a = s.positions.row(fv[0]), b = s.positions.row(fv[1]), c = s.positions.row(fv[2]);
+    s.face_normals.row(j) = (b - a).cross(c - a).normalized();
+    s.face_centroids.row(j) = (a + b + c) / 3;
+    for (Eigen::Index v : fv)
+      s.vertex_component[std::size_t(v)] = s.arrays.face_component[std::size_t(j)];
+  }
+  return s;
+}
+
+/// The index of `v` in `s.vertices`; throws std::invalid_argument naming `what` when `v` is not
+/// a vertex of the mesh.
+template <class TriangleMesh>
+Eigen::Index vertex_index_or_throw(const Surface_operators<TriangleMesh>& s,
+                                   const typename Surface_operators<TriangleMesh>::vertex_descriptor& v,
+                                   const std::string& what)
+{
+  const auto found = std::find(s.vertices.begin(), s.vertices.end(), v);
+  if (found == s.vertices.end())
+    throw std::invalid_argument(what + " is not a vertex of tm");
+  return static_cast<Eigen::Index>(found - s.vertices.begin());
+}
+
+/// One constrained vertex per connected component: the vertex nearest to the component's
+/// area-weighted barycenter (the lowest index among vertices equally near, up to a tolerance
+/// that makes the choice independent of rounding), or `chosen` (when >= 0) in its component.
+template <class TriangleMesh>
+std::vector<Eigen::Index> constrained_vertices(const Surface_operators<TriangleMesh>& s, Eigen::Index chosen)
+{
+  const std::size_t components = s.arrays.number_of_components;
+  std::vector<Eigen::Vector3d> barycenter(components, Eigen::Vector3d::Zero());
+  std::vector<double> area(components, 0);
+  for (Eigen::Index j = 0; j < s.number_of_faces(); ++j) {
+    const std::size_t c = s.arrays.face_component[std::size_t(j)];
+    barycenter[c] += s.ops.face_areas[j] * s.face_centroids.row(j).transpose();
+    area[c] += s.ops.face_areas[j];
+  }
+  const double tolerance =
+      1e-10 * (s.positions.colwise().maxCoeff() - s.positions.colwise().minCoeff()).squaredNorm();
+  std::vector<Eigen::Index> nearest(components, -1);
+  std::vector<double> nearest_distance(components, std::numeric_limits<double>::infinity());
+  for (Eigen::Index i = 0; i < s.positions.rows(); ++i) {
+    const std::size_t c = s.vertex_component[std::size_t(i)];
+    const double d = (s.positions.row(i).transpose() - barycenter[c] / area[c]).squaredNorm();
+    if (d < nearest_distance[c] - tolerance) {
+      nearest_distance[c] = d;
+      nearest[c] = i;
+    }
+  }
+  if (chosen >= 0)
+    nearest[s.vertex_component[std::size_t(chosen)]] = chosen;
+  return nearest;
+}
+
+/// The solution x (m x k) of L x = rhs with x = 0 at `constrained[c]` in each component c:
+/// one factorization of L + W, W = w e_c e_c^T for each constrained vertex, and one
+/// back-substitution per column.  Since the rows of D sum to zero over a component (G maps
+/// constants to zero), summing the rows of (L + W) x = D y gives w x_c = 0: the soft
+/// constraint is exact for any w > 0, and w = mean diag(L) keeps L + W well conditioned.
+/// The final shift removes the rounding left at x_c.
+inline Eigen::MatrixXd solve_constrained_poisson(const Poisson_operators& ops,
+                                                 const std::vector<Eigen::Index>& constrained,
+                                                 const std::vector<std::size_t>& vertex_component,
+                                                 const Eigen::MatrixXd& rhs)
+{
+  Eigen::SparseMatrix<double> system = ops.L;
+  const double weight = ops.L.diagonal().mean();
+  for (Eigen::Index v : constrained)
+    system.coeffRef(v, v) += weight;
+  Default_sparse_linear_solver solver;
+  factor_or_throw(solver, system, "L + W");
+  Eigen::MatrixXd x = solver.solver().solve(rhs);
+  Eigen::MatrixXd at_constraint(constrained.size(), x.cols());
+  for (std::size_t c = 0; c < constrained.size(); ++c)
+    at_constraint.row(Eigen::Index(c)) = x.row(constrained[c]);
+  for (Eigen::Index i = 0; i < x.rows(); ++i)
+    x.row(i) -= at_constraint.row(Eigen::Index(vertex_component[std::size_t(i)]));
+  return x;
+}
+
+/// The unit normal at vertex i: the area-weighted mean of its faces' normals.
+template <class TriangleMesh>
+Eigen::Vector3d vertex_normal(const Surface_operators<TriangleMesh>& s, Eigen::Index i)
+{
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (Eigen::Index j = 0; j < s.number_of_faces(); ++j) {
+    const auto& fv = s.arrays.face_vertices[std::size_t(j)];
+    if (fv[0] == i || fv[1] == i || fv[2] == i)
+      n += s.ops.face_areas[j] * s.face_normals.row(j).transpose();
+  }
+  return n.normalized();
+}
+
+/// Samples `field` at every face centroid; rows of faces without a usable sample (outside the
+/// domain, not finite, or zero) are zero.
+template <class TriangleMesh, class FlowField, class NamedParameters>
+Positions sample_face_velocities(const Surface_operators<TriangleMesh>& s, const FlowField& field,
+                                 const NamedParameters& np)
+{
+  using Geom_traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
+  const Geom_traits gt = parameters::choose_parameter<Geom_traits>(
+      parameters::get_parameter(np, CGAL::internal_np::geom_traits));
+  auto construct_point = gt.construct_point_3_object();
+  Positions v = Positions::Zero(s.number_of_faces(), 3);
+  for (Eigen::Index j = 0; j < s.number_of_faces(); ++j) {
+    const Flow_sample sample = sample_flow(
+        field, construct_point(s.face_centroids(j, 0), s.face_centroids(j, 1), s.face_centroids(j, 2)));
+    if (sample.kind == Sample_kind::VALID)
+      v.row(j) = sample.velocity.transpose();
+  }
+  return v;
+}
+
+/// Projects a_j into the plane of face j and normalizes it when asked; a direction within
+/// 1e-9 (relative) of the normal, or zero, has no usable projection and becomes zero.
+inline Eigen::Vector3d project_guidance(const Eigen::Vector3d& a, const Eigen::Vector3d& n, bool normalize)
+{
+  const Eigen::Vector3d p = a - n.dot(a) * n;
+  const double length = p.norm();
+  if (!(length > 1e-9 * a.norm()) || !std::isfinite(length))
+    return Eigen::Vector3d::Zero();
+  return normalize ? Eigen::Vector3d(p / length) : p;
+}
+
+/// Solves eq. (7) for the guidance `a` (n x 3, b_j = a_j x n_j) and writes r and s.
+template <class TriangleMesh, class RMap, class SMap>
+void solve_parametrization(const Surface_operators<TriangleMesh>& s, const Positions& a,
+                           const std::vector<Eigen::Index>& constrained, RMap r_map, SMap s_map,
+                           const std::string& caller)
+{
+  const Eigen::Index n = s.number_of_faces();
+  Eigen::MatrixXd c(3 * n, 2);
+  bool any = false;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const Eigen::Vector3d aj = a.row(j).transpose();
+    c.block<3, 1>(3 * j, 0) = aj;
+    c.block<3, 1>(3 * j, 1) = aj.cross(s.face_normals.row(j).transpose());
+    any = any || aj.squaredNorm() > 0;
+  }
+  if (!any)
+    throw std::invalid_argument(
+        caller + ": the field gives no usable direction on any face of tm (every centroid sample "
+                 "is outside the domain, not finite, zero, or normal to its face)");
+  const Eigen::MatrixXd rs = solve_constrained_poisson(s.ops, constrained, s.vertex_component, s.ops.D * c);
+  using R_value = typename boost::property_traits<RMap>::value_type;
+  using S_value = typename boost::property_traits<SMap>::value_type;
+  for (std::size_t i = 0; i < s.vertices.size(); ++i) {
+    put(r_map, s.vertices[i], R_value(rs(Eigen::Index(i), 0)));
+    put(s_map, s.vertices[i], S_value(rs(Eigen::Index(i), 1)));
+  }
+}
+
+/// The constrained vertices of eq. (7) for the named parameters `np`.
+template <class TriangleMesh, class NamedParameters>
+std::vector<Eigen::Index> constrained_vertices(const Surface_operators<TriangleMesh>& s,
+                                               const NamedParameters& np, const std::string& caller)
+{
+  Eigen::Index chosen = -1;
+  if constexpr (!parameters::is_default_parameter<NamedParameters, internal_np::constraint_vertex_t>::value)
+    chosen = vertex_index_or_throw(s, parameters::get_parameter(np, internal_np::constraint_vertex_t()),
+                                   caller + ": constraint_vertex");
+  return constrained_vertices(s, chosen);
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgFlowAlignedSurfacesRef
+
+\brief Computes the tangential parametrization \f$ (r, s) \f$ of `tm` in `field`: the
+least-squares solution of \f$ \mathbf{L} (\mathbf{r}, \mathbf{s}) = \mathbf{D} (\mathbf{a},
+\mathbf{b}) \f$ (the paper's eq. (7)) for the guidance
+\f$ a_j = P_j v_j / \|P_j v_j\| \f$ (normalized, the default) or \f$ a_j = P_j v_j \f$, and
+\f$ b_j = a_j \times n_j \f$, where \f$ v_j \f$ is the field at the centroid of face \f$ j \f$,
+\f$ n_j \f$ its unit normal and \f$ P_j = I - n_j n_j^T \f$.
+
+On a stream surface, \f$ \nabla r \f$ follows the flow: iso-contours of \f$ r \f$ cross the
+flow and serve as seed curves, iso-contours of \f$ s \f$ are near stream lines.  Normalized,
+the iso-contours of \f$ r \f$ are near-equidistant; unnormalized, \f$ r \f$ is the time-like
+coordinate used for LIC, and on a planar surface in a 2D divergence-free flow \f$ s \f$ is
+\f$ -\psi \f$ up to a constant (\f$ \psi \f$ the stream function with
+\f$ v = (\partial_y \psi, -\partial_x \psi) \f$ in the frame of the normal), in a curl-free
+flow \f$ r \f$ is the potential up to a constant.  The normalized \f$ \nabla r \f$ follows the flow
+closely where its stream lines are near straight, the unnormalized one where the flow on the
+surface has little vorticity (`alignment_angle_statistics()` measures it).  Projecting \f$ v_j \f$ does not change the
+unnormalized solution (\f$ \mathbf{G} r \f$ lies in the face's plane).
+
+Faces whose centroid sample is outside the domain, not finite or zero, or whose field is
+normal to the face, get \f$ a_j = b_j = 0 \f$ (they only smooth the solution).  Both fields
+are 0 at the constrained vertex of each connected component; a component on which no face has
+a usable direction gets 0 everywhere.  The system matrix is factored once and solved for both
+columns.
+
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam FlowField a model of `FlowField_3`
+\tparam RMap, SMap models of `WritablePropertyMap` with the vertices as key type and a
+floating-point value type
+\tparam NamedParameters a sequence of named parameters
+
+\param tm a triangle mesh
+\param field the flow field
+\param r_map receives \f$ r \f$ (along the flow)
+\param s_map receives \f$ s \f$ (across the flow)
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{normalized}
+    \cgalParamDescription{`FAS::parameters::normalized()`: whether \f$ a_j \f$ is normalized}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{constraint_vertex}
+    \cgalParamDescription{`FAS::parameters::constraint_vertex()`: the vertex where \f$ r = s = 0 \f$
+      in its connected component}
+    \cgalParamType{`boost::graph_traits<TriangleMesh>::%vertex_descriptor`}
+    \cgalParamDefault{the vertex nearest to the area-weighted barycenter of each connected component}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map, geom_traits}
+    \cgalParamDescription{the points of the vertices and the kernel, as in `normalized_flux()`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_index_map, face_index_map}
+    \cgalParamDescription{property maps associating indices in `[0, num_vertices(tm))`, `[0, num_faces(tm))`}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument if `tm` is empty, not a valid manifold triangle mesh, has a
+degenerate face or a coordinate that is not finite; if `constraint_vertex` is not a vertex of
+`tm`; if no face of `tm` gets a usable direction.  `r_map` and `s_map` are then untouched.
+\sa `parametrize_orthogonal()`, `compute_geodesic_distance()`, `extract_iso_contours()`,
+`alignment_angle_statistics()`
+*/
+template <class TriangleMesh, class FlowField, class RMap, class SMap,
+          class NamedParameters = parameters::Default_named_parameters>
+void parametrize_tangential(const TriangleMesh& tm, const FlowField& field, RMap r_map, SMap s_map,
+                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const std::string caller = "parametrize_tangential";
+  const bool normalize =
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::normalized_t()), true);
+  const auto s = internal::make_surface_operators(tm, np, caller);
+  const auto constrained = internal::constrained_vertices(s, np, caller);
+  internal::Positions a = internal::sample_face_velocities(s, field, np);
+  for (Eigen::Index j = 0; j < a.rows(); ++j)
+    a.row(j) = internal::project_guidance(a.row(j).transpose(), s.face_normals.row(j).transpose(), normalize)
+                   .transpose();
+  internal::solve_parametrization(s, a, constrained, r_map, s_map, caller);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesRef
+
+\brief Computes the orthogonal parametrization \f$ (r, s) \f$ of `tm` in `field`, for a
+surface orthogonal to the flow: eq. (7) with the guidance
+\f$ a_j = P_j \left( (R(n_c, \alpha)\, r_c) \times v_j \right) \f$ and
+\f$ b_j = a_j \times n_j \f$.
+
+\f$ n_c \f$ is the unit normal at the constrained vertex \f$ v_c \f$ (the area-weighted mean
+of its faces' normals), \f$ r_c \f$ the unit vector orthogonal to \f$ n_c \f$ given by the
+second column of the Householder \f$ Q \f$ of \f$ n_c \f$ (the paper's QR null-space basis),
+\f$ R(n_c, \alpha) \f$ the rotation about \f$ n_c \f$ by the user angle \f$ \alpha \f$.  Where
+the surface is orthogonal to the flow, \f$ a_j \f$ lies in the surface and is orthogonal to the
+turned direction, so the iso-contours of \f$ r \f$ run near-straight along
+\f$ R(n_c, \alpha) r_c \f$; turning \f$ \alpha \f$ by \f$ \pi/2 \f$ on a plane turns
+\f$ \nabla r \f$ by \f$ \pi/2 \f$ (\f$ r_{\alpha + \pi/2} = -s_\alpha \f$).  Every curve in an
+orthogonal surface is orthogonal to the flow, so all iso-contours are seed curves.  As in the
+paper the guidance is unnormalized by default (\f$ \|a_j\| \approx \|v_j\| \f$).  Each
+connected component uses the normal at its own constrained vertex.  Unusable faces are treated
+as in `parametrize_tangential()`.
+
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam FlowField a model of `FlowField_3`
+\tparam RMap, SMap models of `WritablePropertyMap` with the vertices as key type and a
+floating-point value type
+\tparam NamedParameters a sequence of named parameters
+
+\param tm a triangle mesh
+\param field the flow field
+\param r_map receives \f$ r \f$
+\param s_map receives \f$ s \f$
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{angle}
+    \cgalParamDescription{`FAS::parameters::angle()`: \f$ \alpha \f$, radians}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{normalized}
+    \cgalParamDescription{`FAS::parameters::normalized()`: whether \f$ a_j \f$ is normalized}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+  \cgalParamNBegin{constraint_vertex, vertex_point_map, geom_traits, vertex_index_map, face_index_map}
+    \cgalParamDescription{as in `parametrize_tangential()`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument if `angle` is not finite, and in the cases of
+`parametrize_tangential()`.  `r_map` and `s_map` are then untouched.
+\sa `parametrize_tangential()`, `compute_geodesic_distance()`, `extract_iso_contours()`
+*/
+template <class TriangleMesh, class FlowField, class RMap, class SMap,
+          class NamedParameters = parameters::Default_named_parameters>
+void parametrize_orthogonal(const TriangleMesh& tm, const FlowField& field, RMap r_map, SMap s_map,
+                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const std::string caller = "parametrize_orthogonal";
+  const double alpha =
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::angle_t()), 0.0);
+  if (!std::isfinite(alpha))
+    throw std::invalid_argument(caller + ": angle must be finite (got " + std::to_string(alpha) + ")");
+  const bool normalize =
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::normalized_t()), false);
+  const auto s = internal::make_surface_operators(tm, np, caller);
+  const auto constrained = internal::constrained_vertices(s, np, caller);
+
+  std::vector<Eigen::Vector3d> direction(constrained.size());
+  for (std::size_t c = 0; c < constrained.size(); ++c) {
+    const Eigen::Vector3d n_c = internal::vertex_normal(s, constrained[c]);
+    const Eigen::Matrix3d q = Eigen::HouseholderQR<Eigen::Vector3d>(n_c).householderQ();
+    direction[c] = internal::rotation_matrix(n_c, alpha) * q.col(1);
+  }
+  internal::Positions a = internal::sample_face_velocities(s, field, np);
+  for (Eigen::Index j = 0; j < a.rows(); ++j) {
+    const Eigen::Vector3d turned = direction[s.arrays.face_component[std::size_t(j)]];
+    a.row(j) = internal::project_guidance(turned.cross(a.row(j).transpose()),
+                                          s.face_normals.row(j).transpose(), normalize)
+                   .transpose();
+  }
+  internal::solve_parametrization(s, a, constrained, r_map, s_map, caller);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesRef
+
+\brief Computes the geodesic distance from `source` on `tm` by the heat method (Crane, Weischedel
+and Wardetzky 2013) on the package's Poisson operators, the paper's circular parametrization.
+
+Three steps, with \f$ \mathbf{L} = \mathbf{G}^T \mathbf{A} \mathbf{G} \f$ (positive
+semi-definite) and \f$ \mathbf{M} \f$ the diagonal of lumped vertex areas (a third of the area
+of each face at the vertex):
+1. heat: \f$ (\mathbf{M} + t \mathbf{L})\, h = h_0 \f$, \f$ h_0 \f$ one at the source and zero
+   elsewhere, with \f$ t = 5 A_M / |T| \f$ (\f$ A_M \f$ the area of the source's component,
+   \f$ |T| \f$ its number of faces).  This is the paper's \f$ (I - tL) h = h_0 \f$ written with
+   the opposite sign convention of \f$ L \f$ and with the mass matrix as Crane et al. have it
+   (the identity would make \f$ t \f$ depend on the mesh resolution); the scale of
+   \f$ h_0 \f$ does not matter;
+2. guidance: \f$ X_j = -(\mathbf{G} h)_j / \|(\mathbf{G} h)_j\| \f$ (zero where the gradient
+   vanishes);
+3. distance: \f$ \mathbf{L} d = \mathbf{D} X \f$, shifted so that \f$ d(\mathrm{source}) = 0 \f$.
+
+The boundary condition is the natural (Neumann) one: distances are most accurate when the
+boundary is far from the source or near a level set of the distance.  Vertices of other
+connected components than the source's get \f$ +\infty \f$.
+
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam DistanceMap a model of `WritablePropertyMap` with the vertices as key type and a
+floating-point value type
+\tparam NamedParameters a sequence of named parameters
+
+\param tm a triangle mesh
+\param source the vertex from which distances are measured
+\param distance_map receives the distance of each vertex
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map}
+    \cgalParamDescription{as in `parametrize_tangential()`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument if `source` is not a vertex of `tm`, or `tm` is empty, not a
+valid manifold triangle mesh, has a degenerate face or a coordinate that is not finite.
+`distance_map` is then untouched.
+\sa `extract_iso_contours()`, `parametrize_orthogonal()`
+*/
+template <class TriangleMesh, class DistanceMap, class NamedParameters = parameters::Default_named_parameters>
+void compute_geodesic_distance(const TriangleMesh& tm,
+                               typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
+                               DistanceMap distance_map,
+                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const std::string caller = "compute_geodesic_distance";
+  const auto s = internal::make_surface_operators(tm, np, caller);
+  const Eigen::Index source_index = internal::vertex_index_or_throw(s, source, caller + ": source");
+  const std::size_t component = s.vertex_component[std::size_t(source_index)];
+  const Eigen::Index m = s.ops.number_of_vertices(), n = s.number_of_faces();
+
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(m);
+  double area = 0;
+  Eigen::Index faces_in_component = 0;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    for (Eigen::Index v : s.arrays.face_vertices[std::size_t(j)])
+      mass[v] += s.ops.face_areas[j] / 3;
+    if (s.arrays.face_component[std::size_t(j)] == component) {
+      area += s.ops.face_areas[j];
+      ++faces_in_component;
+    }
+  }
+  const double t = 5 * area / double(faces_in_component);
+
+  Eigen::SparseMatrix<double> heat_system = t * s.ops.L;
+  for (Eigen::Index i = 0; i < m; ++i)
+    heat_system.coeffRef(i, i) += mass[i];
+  internal::Default_sparse_linear_solver heat_solver;
+  internal::factor_or_throw(heat_solver, heat_system, "M + t L");
+  Eigen::VectorXd h0 = Eigen::VectorXd::Zero(m);
+  h0[source_index] = 1;
+  const Eigen::VectorXd h = heat_solver.solver().solve(h0);
+
+  const Eigen::VectorXd gradient = s.ops.G * h;
+  Eigen::MatrixXd guidance(3 * n, 1);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const Eigen::Vector3d g = gradient.segment<3>(3 * j);
+    const double length = g.norm();
+    guidance.block<3, 1>(3 * j, 0) =
+        length > 0 && std::isfinite(length) ? Eigen::Vector3d(-g / length) : Eigen::Vector3d::Zero();
+  }
+  std::vector<Eigen::Index> constrained = internal::constrained_vertices(s, source_index);
+  const Eigen::MatrixXd d =
+      internal::solve_constrained_poisson(s.ops, constrained, s.vertex_component, s.ops.D * guidance);
+
+  using Value = typename boost::property_traits<DistanceMap>::value_type;
+  for (std::size_t i = 0; i < s.vertices.size(); ++i)
+    put(distance_map, s.vertices[i],
+        s.vertex_component[i] == component ? Value(d(Eigen::Index(i), 0))
+                                           : Value(std::numeric_limits<double>::infinity()));
+}
+
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_PARAMETRIZE_H
