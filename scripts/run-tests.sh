@@ -22,6 +22,6 @@ if [ "${FAS_SKIP_SANITIZERS:-0}" != 1 ]; then
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DFAS_SANITIZE=ON \
     -DFAS_BUILD_EXAMPLES=OFF -DFAS_BUILD_BENCHMARKS=OFF -DFAS_BUILD_DOC_TEST=OFF
   cmake --build "$sanitized" --target test_flow_aligned_surfaces -j"$jobs"
-  (cd "$sanitized" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+  (cd "$sanitized" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions="$root/test/Flow_aligned_surfaces/ubsan.supp" \
     ctest --output-on-failure -j"$jobs" -E consumer)
 fi
