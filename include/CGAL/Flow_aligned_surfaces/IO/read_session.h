@@ -31,19 +31,24 @@ namespace IO {
 /// The initial surface of a session: a planar rectangle or a disk, as `make_planar_patch()` and
 /// `make_disk_patch()` build them.
 struct Session_patch {
-  enum class Shape { PLANAR, DISK };
-  Shape shape = Shape::PLANAR;
-  std::array<double, 3> center{{0, 0, 0}};
-  std::array<double, 3> normal{{0, 0, 1}};
-  double width = 1;  ///< the rectangle's first side (planar)
-  double height = 1; ///< the rectangle's second side (planar)
-  double radius = 1; ///< the disk's radius (disk)
-  std::size_t target_number_of_faces = 1000;
+  /// The kind of initial surface.
+  enum class Shape {
+    PLANAR, ///< `patch planar ...`: a rectangle
+    DISK    ///< `patch disk ...`: a disk
+  };
+  Shape shape = Shape::PLANAR;               ///< rectangle or disk
+  std::array<double, 3> center{{0, 0, 0}};   ///< the center of the patch
+  std::array<double, 3> normal{{0, 0, 1}};   ///< the normal of its plane (not necessarily unit)
+  double width = 1;                          ///< the rectangle's first side (planar)
+  double height = 1;                         ///< the rectangle's second side (planar)
+  double radius = 1;                         ///< the disk's radius (disk)
+  std::size_t target_number_of_faces = 1000; ///< the number of faces asked of the patch builder
 };
 
 /// \ingroup PkgFlowAlignedSurfacesIO
 /// One operation of a session, as one line of the file gives it.
 struct Session_operation {
+  /// What the operation does.
   enum class Kind {
     ITERATE,   ///< `iterate N` or `iterate until-converged [N]`
     TRANSLATE, ///< `translate dx dy dz`
@@ -57,8 +62,8 @@ struct Session_operation {
     DIRECTION,      ///< `grow d dx dy dz`: the part facing `vector`
     ACROSS_FLOW     ///< `grow d across-flow`: across the flow, for tangential surfaces
   };
-  Kind kind = Kind::ITERATE;
-  std::size_t line = 0; ///< the line of the file (1 = first)
+  Kind kind = Kind::ITERATE; ///< what the operation does
+  std::size_t line = 0;      ///< the line of the file (1 = first)
   /// `ITERATE`: the number of iterations, or the largest one when `until_converged`.
   std::size_t number_of_iterations = 0;
   bool until_converged = false; ///< `ITERATE`: stop at the first converged iteration
@@ -73,10 +78,10 @@ struct Session_operation {
 /// \ingroup PkgFlowAlignedSurfacesIO
 /// A session read by `read_session()`: where it takes place and what the user did.
 struct Session {
-  std::string flow; ///< the `flow` line's argument, empty if there is none
-  Alignment alignment = Alignment::TANGENTIAL;
-  Session_patch patch;
-  std::vector<Session_operation> operations;
+  std::string flow;                            ///< the `flow` line's argument, empty if there is none
+  Alignment alignment = Alignment::TANGENTIAL; ///< the `alignment` line's argument (default tangential)
+  Session_patch patch;                         ///< the `patch` line: the initial surface
+  std::vector<Session_operation> operations;   ///< the operations, in the order of the file
 };
 
 /// \cond SKIP_IN_MANUAL
