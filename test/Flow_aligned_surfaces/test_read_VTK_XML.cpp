@@ -155,14 +155,17 @@ Mixed_mesh mixed_mesh()
   return m;
 }
 
+// `mode`: "appended" (VTK's default, compressed), "ascii", or "binary" (inline, compressed).
 template <class Writer>
-void write_with_VTK(vtkDataObject* data, const std::string& filename, bool ascii = false)
+void write_with_VTK(vtkDataObject* data, const std::string& filename, const std::string& mode = "appended")
 {
   vtkNew<Writer> writer;
   writer->SetInputData(data);
   writer->SetFileName(filename.c_str());
-  if (ascii)
+  if (mode == "ascii")
     writer->SetDataModeToAscii();
+  else if (mode == "binary")
+    writer->SetDataModeToBinary();
   ASSERT_EQ(writer->Write(), 1) << filename;
 }
 
@@ -187,9 +190,12 @@ Point random_point_in(vtkDataSet* ds, const std::vector<vtkIdType>& ids, std::mt
 TEST(ReadVTKXML, UnstructuredGridOfEveryCellKindGivesTheLinearFieldExactly)
 {
   const Mixed_mesh m = mixed_mesh();
-  for (bool ascii : {false, true}) {
-    const std::string file = temporary(ascii ? "mixed_ascii.vtu" : "mixed.vtu");
-    write_with_VTK<vtkXMLUnstructuredGridWriter>(m.grid, file, ascii);
+  for (const std::string mode : {"appended", "ascii", "binary"}) {
+    const std::string file = temporary("mixed_" + mode + ".vtu");
+    write_with_VTK<vtkXMLUnstructuredGridWriter>(m.grid, file, mode);
+    if (mode == "binary") { // inline base64 with compression headers, checked before VTK reads
+      ASSERT_NE(read_bytes(file).find("format=\"binary\""), std::string::npos);
+    }
     Cells field(std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 2, 3}, {0, 4}, {10},
                 std::vector<float>(12, 0.f));
     std::string error;
@@ -651,6 +657,16 @@ TEST(ReadVTKXML, LyingCompressionHeadersAreRefused)
   expect_read_fails<Cells>(lying, {"the compressed DataArray 'velocity' announces 1 blocks", "lying header"});
   write_bytes(lying, good.substr(0, data) + header(3000000000u, 32768, 312, 310) + good.substr(data + 24));
   expect_read_fails<Cells>(lying, {"announces 3e+09 blocks, whose sizes alone need more than the"});
+}
+
+// Found by the fuzzer: a 2 KB compressed .vts whose velocity array has format="appende0d", which
+// VTK 9.1 reads as inline binary: the element is empty, so VTK decodes a compression header
+// from the text after it and allocates 3.4 GB.  Inline headers are checked like appended ones.
+TEST(ReadVTKXML, LyingInlineCompressionHeadersAreRefused)
+{
+  expect_read_fails<Cells>(
+      std::string(FAS_TEST_DATA_DIR) + "/vts_inline_lying_compression_header.vts",
+      {"the compressed DataArray 'velocity' has no complete compression header", "corrupt file"});
 }
 
 TEST(ReadVTKXML, UnsupportedCellsAreNamed)

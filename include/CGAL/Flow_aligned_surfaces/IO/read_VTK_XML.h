@@ -335,11 +335,25 @@ inline std::string read_VTK_XML_bytes(std::istream& in, long long position, bool
   return r;
 }
 
+// Where VTK looks for the inline data of the element whose start tag begins at byte `start`:
+// after the tag's closing '>' (even for an empty element `<.../>`), or nothing if the tag does
+// not end.
+inline std::optional<long long> VTK_XML_inline_data_position(std::istream& in, long long start)
+{
+  in.clear();
+  in.seekg(start);
+  for (char ch; in.get(ch);)
+    if (ch == '>')
+      return static_cast<long long>(in.tellg());
+  return std::nullopt;
+}
+
 // The header of a compressed array (number of blocks, block size, last block size, compressed
 // size of each block) is trusted by VTK 9.1, which allocates from it (found by fuzzing: a
 // 13-point file announcing 2 GB blocks, or 10^9 blocks).  Checked here against the file's size
-// for the appended arrays (raw or base64) of a compressed file; inline binary arrays are not
-// checked (VTK does not give their position in the file).
+// for the appended arrays (raw or base64) and the inline binary ones (base64, after the end of
+// the DataArray's start tag) of a compressed file; VTK reads every format but `ascii` and
+// `appended` as inline binary.
 inline void check_VTK_XML_compression_headers(const VTK_XML_context& c, vtkXMLDataParser* parser)
 {
   using Flow_aligned_surfaces::internal::Binary_type;
@@ -376,15 +390,34 @@ inline void check_VTK_XML_compression_headers(const VTK_XML_context& c, vtkXMLDa
     const char* format = e->GetAttribute("format");
     if (std::string(e->GetName() ? e->GetName() : "") != "DataArray" || format == nullptr)
       continue;
-    const char* offset = e->GetAttribute("offset");
-    if (std::string(format) != "appended" || appended == nullptr || offset == nullptr)
-      continue; // VTK reports what is missing
-    const long long position =
-        static_cast<long long>(parser->GetAppendedDataPosition()) + std::strtoll(offset, nullptr, 10);
-    const bool base64 = appended_base64;
+    if (std::string(format) == "ascii")
+      continue;
+    long long position = 0;
+    bool base64 = true;
+    if (std::string(format) == "appended") {
+      const char* offset = e->GetAttribute("offset");
+      if (appended == nullptr || offset == nullptr)
+        continue; // VTK reports what is missing
+      position =
+          static_cast<long long>(parser->GetAppendedDataPosition()) + std::strtoll(offset, nullptr, 10);
+      base64 = appended_base64;
+    }
+    else {
+      const std::optional<long long> inline_data = VTK_XML_inline_data_position(in, e->GetXMLByteIndex());
+      if (!inline_data)
+        continue; // VTK reports the unfinished tag
+      position = *inline_data;
+    }
+    const bool inline_array = std::string(format) != "appended";
     const std::string head = read_VTK_XML_bytes(in, position, base64, 3 * word);
-    if (head.size() < 3 * word)
-      continue; // VTK reports the short read
+    if (head.size() < 3 * word) {
+      // VTK reports a short appended read; inline, it would decode a header from what follows.
+      if (inline_array)
+        c.fail("byte " + std::to_string(e->GetXMLByteIndex()) + ": the compressed DataArray '" +
+               (e->GetAttribute("Name") ? e->GetAttribute("Name") : "") +
+               "' has no complete compression header in its inline data (corrupt file)");
+      continue;
+    }
     const double blocks = number(head, 0), block_size = number(head, 1), last_size = number(head, 2);
     const std::string where = "byte " + std::to_string(e->GetXMLByteIndex()) +
                               ": the compressed DataArray '" +
