@@ -97,6 +97,18 @@ inline std::vector<double> vertex_velocities(const Mesh& tm, const Flow& flow)
   return values;
 }
 
+/// Writes `tm` to `path` as VTP, with the velocity at the vertices and the per-face flux.
+inline bool write_surface_VTP(const std::filesystem::path& path, const Mesh& tm, const Flow& flow)
+{
+  std::string error;
+  const bool vtp = FAS::IO::write_VTP(path.string(), tm, {{"velocity", 3, vertex_velocities(tm, flow)}},
+                                      {{"normalized_flux", 1, face_fluxes(tm, flow)}},
+                                      CGAL::parameters::default_values(), &error);
+  if (!vtp)
+    std::cerr << "error: " << error << "\n";
+  return vtp;
+}
+
 /// Writes `stem`.ply and `stem`.vtp (with the velocity and the per-face normalized flux).
 inline bool write_surface(const std::filesystem::path& stem, const Mesh& tm, const Flow& flow)
 {
@@ -104,13 +116,7 @@ inline bool write_surface(const std::filesystem::path& stem, const Mesh& tm, con
     std::cerr << "error: cannot write " << stem.string() << ".ply\n";
     return false;
   }
-  std::string error;
-  const bool vtp = FAS::IO::write_VTP(
-      stem.string() + ".vtp", tm, {{"velocity", 3, vertex_velocities(tm, flow)}},
-      {{"normalized_flux", 1, face_fluxes(tm, flow)}}, CGAL::parameters::default_values(), &error);
-  if (!vtp)
-    std::cerr << "error: " << error << "\n";
-  return vtp;
+  return write_surface_VTP(stem.string() + ".vtp", tm, flow);
 }
 
 } // namespace examples

@@ -50,15 +50,8 @@ bool is_supported_surface_file(const fs::path& path)
 
 bool save_surface(const fs::path& path, const Mesh& tm, const Flow& flow)
 {
-  if (path.extension() == ".vtp") {
-    std::string error;
-    if (FAS::IO::write_VTP(path.string(), tm, {{"velocity", 3, vertex_velocities(tm, flow)}},
-                           {{"normalized_flux", 1, face_fluxes(tm, flow)}},
-                           CGAL::parameters::default_values(), &error))
-      return true;
-    std::cerr << "error: " << error << "\n";
-    return false;
-  }
+  if (path.extension() == ".vtp")
+    return write_surface_VTP(path, tm, flow);
   if (CGAL::IO::write_polygon_mesh(path.string(), tm, CGAL::parameters::stream_precision(17)))
     return true;
   std::cerr << "error: cannot write " << path << "\n";
