@@ -385,6 +385,11 @@ std::vector<Solver_config> solver_configs()
   configs.push_back({"cholmod_supernodal_to_simplicial",
                      "CHOLMOD supernodal LL^T (default ordering) converted to simplicial LL^T for the solves",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, -1, true>>>});
+  configs.push_back({"cholmod_auto_ldlt",
+                     "CHOLMOD supernodal LL^T where its flops/nnz(L) switch says so, then simplicial LDL^T "
+                     "without the amalgamation zeros (final_super = 0, final_resymbol)",
+                     measure_solver<CGAL::Eigen_solver_traits<
+                         Instrumented_cholmod<FAS::internal::Cholmod_auto_LDLT<Sparse_matrix>, -1>>>});
   configs.push_back(
       {"cholmod_simplicial_ldlt", "CHOLMOD simplicial LDL^T, default ordering strategy",
        measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Cholmod_simplicial, -1>>>});
@@ -404,6 +409,8 @@ const char* default_solver_name()
     return "cholmod_supernodal";
   if (std::is_same<Default, Eigen::CholmodSimplicialLDLT<Sparse_matrix>>::value)
     return "cholmod_simplicial_ldlt";
+  if (std::is_same<Default, FAS::internal::Cholmod_auto_LDLT<Sparse_matrix>>::value)
+    return "cholmod_auto_ldlt";
 #endif
   if (std::is_same<Default, Eigen::SimplicialLDLT<Sparse_matrix>>::value)
     return "eigen_simplicial_ldlt";

@@ -3,6 +3,7 @@
 // Euclidean and great-circle distances, and CGAL's own heat method on the same mesh.
 
 #include "expect_invalid_argument.h"
+#include "scalar_field_errors.h"
 #include "test_kernel.h"
 
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
@@ -29,24 +30,6 @@ using Scalar = std::function<double(const Point_3&)>;
 Scalar_map add_scalar(Mesh& tm, const std::string& name, double initial = 0)
 {
   return tm.add_property_map<Vertex, double>(name, initial).first;
-}
-
-// ||(f - g) - mean(f - g)|| / ||g - mean(g)|| over the vertices: the error up to a constant.
-double relative_error_up_to_constant(const Mesh& tm, Scalar_map f, const Scalar& g)
-{
-  double mean_difference = 0, mean_g = 0;
-  for (Vertex v : tm.vertices()) {
-    mean_difference += f[v] - g(tm.point(v));
-    mean_g += g(tm.point(v));
-  }
-  mean_difference /= double(tm.number_of_vertices());
-  mean_g /= double(tm.number_of_vertices());
-  double error = 0, norm = 0;
-  for (Vertex v : tm.vertices()) {
-    error += std::pow(f[v] - g(tm.point(v)) - mean_difference, 2);
-    norm += std::pow(g(tm.point(v)) - mean_g, 2);
-  }
-  return std::sqrt(error / norm);
 }
 
 struct Planar_case {

@@ -22,6 +22,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
 #include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
+#include <CGAL/Flow_aligned_surfaces/internal/parametrization.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -490,6 +491,116 @@ public:
   }
   /// @}
 
+  /// \name Parametrizing with the Factored Operators (Section 5)
+  /// The parametrizations of `parametrize.h` on the current surface \f$ M_k \f$, solved with
+  /// this object's factorization of \f$ L + W \f$ on \f$ M_0 \f$ instead of a new one: the
+  /// per-face guidance \f$ a_j \f$ is computed on \f$ M_k \f$, pulled back to the same face of
+  /// \f$ M_0 \f$ (the vector whose dot products with the face's edges in \f$ M_0 \f$ are those of
+  /// \f$ a_j \f$ with the edges in \f$ M_k \f$, so that a function with gradient \f$ a_j \f$ on
+  /// \f$ M_k \f$ has that gradient on \f$ M_0 \f$), and eq. (7) is solved on \f$ M_0 \f$ with one
+  /// back-substitution pair for both columns, as the paper's reuse of the prefactored
+  /// \f$ \mathbf{L} \f$ implies.  The energy is then measured with \f$ M_0 \f$'s metric, equal
+  /// to \f$ M_k \f$'s where the deformation is isometric (the area correction keeps it near
+  /// isometric).  On \f$ M_k = M_0 \f$ the results equal the free functions' up to the soft
+  /// constraint, which here sits on the three vertices of the deformation's constrained face
+  /// (weight \f$ 10^{-3} \f$ of the mean diagonal of \f$ L \f$): a relative difference of the order of
+  /// \f$ 10^{-3} h / \mathrm{diameter} \f$.  Results are shifted to 0 at the vertex of
+  /// `parametrize.h`'s rule (or at `constraint_vertex`).
+  /// @{
+
+  /*!
+  `parametrize_tangential()` of the current surface in this object's field, with the factored
+  \f$ L + W \f$: one pass over the faces and one back-substitution pair.
+  \param r_map, s_map receive \f$ r \f$ and \f$ s \f$ at the vertices
+  \param np an optional sequence of named parameters among `normalized` and `constraint_vertex`,
+         with the meanings and defaults of `parametrize_tangential()`
+  \throws std::invalid_argument if `constraint_vertex` is not a vertex of the mesh, if a face of
+          the current surface is degenerate, or if no face gets a usable direction; the maps are
+          then untouched.
+  \sa `parametrize_tangential()`
+  */
+  template <class RMap, class SMap, class NamedParameters = parameters::Default_named_parameters>
+  void parametrize_tangential(RMap r_map, SMap s_map,
+                              const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
+    const std::string caller = "Flow_aligned_deformation::parametrize_tangential";
+    const bool normalize =
+        parameters::choose_parameter(parameters::get_parameter(np, internal_np::normalized_t()), true);
+    const internal::Surface_faces current = current_surface_faces(caller);
+    const auto constrained = parametrization_constraints(current, np, caller);
+    const internal::Positions a = internal::tangential_guidance(
+        current, internal::sample_face_velocities(current, m_field, m_gt), normalize);
+    const Eigen::MatrixXd rs =
+        solve_on_reference(current, internal::cross_field(current, a, caller), constrained);
+    internal::write_vertex_values(m_vertices, rs, 0, r_map);
+    internal::write_vertex_values(m_vertices, rs, 1, s_map);
+  }
+
+  /*!
+  `parametrize_orthogonal()` of the current surface in this object's field, with the factored
+  \f$ L + W \f$: one pass over the faces and one back-substitution pair.
+  \param r_map, s_map receive \f$ r \f$ and \f$ s \f$ at the vertices
+  \param np an optional sequence of named parameters among `angle`, `normalized` and
+         `constraint_vertex`, with the meanings and defaults of `parametrize_orthogonal()`
+  \throws std::invalid_argument if `angle` is not finite, and in the cases of the member
+          `parametrize_tangential()`; the maps are then untouched.
+  \sa `parametrize_orthogonal()`
+  */
+  template <class RMap, class SMap, class NamedParameters = parameters::Default_named_parameters>
+  void parametrize_orthogonal(RMap r_map, SMap s_map,
+                              const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
+    const std::string caller = "Flow_aligned_deformation::parametrize_orthogonal";
+    const double alpha = internal::orthogonal_parametrization_angle(np, caller);
+    const bool normalize =
+        parameters::choose_parameter(parameters::get_parameter(np, internal_np::normalized_t()), false);
+    const internal::Surface_faces current = current_surface_faces(caller);
+    const auto constrained = parametrization_constraints(current, np, caller);
+    const internal::Positions a = internal::orthogonal_guidance(
+        m_arrays, current, internal::sample_face_velocities(current, m_field, m_gt), constrained, alpha,
+        normalize);
+    const Eigen::MatrixXd rs =
+        solve_on_reference(current, internal::cross_field(current, a, caller), constrained);
+    internal::write_vertex_values(m_vertices, rs, 0, r_map);
+    internal::write_vertex_values(m_vertices, rs, 1, s_map);
+  }
+
+  /*!
+  `compute_geodesic_distance()` on the current surface (the circular seeds of Section 5): the
+  heat step \f$ (\mathbf{M} + t\mathbf{L}) h = h_0 \f$ with \f$ \mathbf{L} \f$, \f$ \mathbf{M} \f$
+  and \f$ t = 5 A_M / |T| \f$ of \f$ M_0 \f$ (one new factorization), the normalized
+  \f$ -\nabla h \f$ on the faces of \f$ M_k \f$, and the final Poisson solve with the factored
+  \f$ L + W \f$: two solves and one factorization in all.
+  \param source the vertex where the distance is 0
+  \param distance_map receives the distance at every vertex (\f$ +\infty \f$ on other components)
+  \throws std::invalid_argument if `source` is not a vertex of the mesh or a face of the current
+          surface is degenerate; `distance_map` is then untouched.
+  \throws std::runtime_error if the heat system cannot be factored.
+  \sa `compute_geodesic_distance()`
+  */
+  template <class DistanceMap>
+  void compute_geodesic_distance(vertex_descriptor source, DistanceMap distance_map) const
+  {
+    const std::string caller = "Flow_aligned_deformation::compute_geodesic_distance";
+    const Eigen::Index source_index =
+        internal::vertex_index_or_throw(m_vertices, source, caller + ": source");
+    const internal::Surface_faces current = current_surface_faces(caller);
+    const std::size_t component = current.vertex_component[std::size_t(source_index)];
+    const Eigen::Index m = m_ops.number_of_vertices();
+
+    const Eigen::VectorXd h =
+        internal::heat_step<Sparse_linear_solver>(m_ops, m_arrays, source_index, component);
+
+    Eigen::MatrixXd d =
+        solve_on_reference(current, internal::normalized_negative_gradient(m_arrays, current, h),
+                           internal::constrained_vertices(m_arrays, current, source_index));
+    for (Eigen::Index i = 0; i < m; ++i)
+      if (current.vertex_component[std::size_t(i)] != component)
+        d(i, 0) = std::numeric_limits<double>::infinity();
+    internal::write_vertex_values(m_vertices, d, 0, distance_map);
+  }
+  /// @}
+
   /// \name Access
   /// @{
 
@@ -682,6 +793,41 @@ private:
     return internal::rotation_matrix(axis, angle_cos, angle_sin);
   }
 
+  // The frames of the faces of the current surface M_k; throws naming `caller` on a degenerate face.
+  internal::Surface_faces current_surface_faces(const std::string& caller) const
+  {
+    internal::Positions x = internal::read_positions(m_vertices, m_vpm);
+    internal::check_finite_positions(x, caller + ": tm");
+    Eigen::Index degenerate = -1;
+    internal::Surface_faces faces = internal::make_surface_faces(m_arrays, std::move(x), degenerate);
+    if (degenerate >= 0)
+      throw std::invalid_argument(caller + ": tm: face " + std::to_string(degenerate) +
+                                  " of the current surface is degenerate (zero area)");
+    return faces;
+  }
+
+  template <class NamedParameters>
+  std::vector<Eigen::Index> parametrization_constraints(const internal::Surface_faces& current,
+                                                        const NamedParameters& np,
+                                                        const std::string& caller) const
+  {
+    return internal::constrained_vertices(m_arrays, current,
+                                          internal::chosen_constraint_vertex(m_vertices, np, caller));
+  }
+
+  // The least-squares scalar fields on M_0 whose gradients best match the per-face vectors
+  // `field_on_current` (3n x k) given on M_k: (L + W)^{-1} D_0 (pulled-back field), shifted to 0
+  // at `constrained`.
+  Eigen::MatrixXd solve_on_reference(const internal::Surface_faces& current,
+                                     const Eigen::MatrixXd& field_on_current,
+                                     const std::vector<Eigen::Index>& constrained) const
+  {
+    Eigen::MatrixXd x = m_solver.solver().solve(
+        internal::reference_divergence(m_ops, m_reference, current.positions, field_on_current));
+    internal::shift_to_constraints(x, constrained, current.vertex_component);
+    return x;
+  }
+
   // Assembles the operators on the reference positions, chooses the constrained faces and
   // factors L + W.  Called at construction and whenever the connectivity changes.
   void rebuild_operators(const Positions& reference)
@@ -760,7 +906,7 @@ private:
   internal::Poisson_operators m_ops;
   std::vector<Eigen::Index> m_constrained_vertices;
   double m_constraint_weight = 0;
-  Sparse_linear_solver m_solver;
+  mutable Sparse_linear_solver m_solver; // mutable: CGAL's solver traits have no const solver()
   std::size_t m_number_of_factorizations = 0;
   double m_factor_ms = 0;
   std::size_t m_number_of_iterations = 0;

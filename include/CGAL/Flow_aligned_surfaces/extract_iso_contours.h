@@ -109,10 +109,7 @@ OutputIterator extract_iso_contours(const TriangleMesh& tm, ScalarMap scalar_map
   using Geom_traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
   using Point_3 = typename Geom_traits::Point_3;
   const std::string caller = "extract_iso_contours";
-  internal::check_triangle_mesh(tm, caller + ": tm");
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const auto [vpm, gt] = internal::checked_mesh_input(tm, np, caller + ": tm");
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto eim = CGAL::get_initialized_edge_index_map(tm, np);
   const std::vector<double> f = internal::read_scalars(tm, scalar_map, vim, caller);

@@ -106,11 +106,7 @@ void visit_mesh_face_samples(const TriangleMesh& tm, const FlowField& field, con
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  check_triangle_mesh(tm, caller + ": tm");
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  using Geom_traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
-  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const auto [vpm, gt] = checked_mesh_input(tm, np, caller + ": tm");
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> ordered_faces(num_faces(tm));

@@ -31,6 +31,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
 #include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
+#include <CGAL/Flow_aligned_surfaces/internal/parametrization.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -54,20 +55,15 @@ namespace CGAL {
 namespace Flow_aligned_surfaces {
 namespace internal {
 
-/// A face graph flattened into arrays together with its Poisson operators.
+/// A face graph flattened into arrays, with its face frames and its Poisson operators.
 template <class TriangleMesh>
 struct Surface_operators {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
 
   std::vector<vertex_descriptor> vertices; // in index order
   Mesh_arrays arrays;
-  Positions positions;
+  Surface_faces faces;
   Poisson_operators ops;
-  Positions face_normals;   // n x 3, unit
-  Positions face_centroids; // n x 3
-  std::vector<std::size_t> vertex_component;
-
-  Eigen::Index number_of_faces() const { return ops.number_of_faces(); }
 };
 
 /// Checks `tm` and builds its operators; messages start with `caller`.
@@ -75,82 +71,23 @@ template <class TriangleMesh, class NamedParameters>
 Surface_operators<TriangleMesh> make_surface_operators(const TriangleMesh& tm, const NamedParameters& np,
                                                        const std::string& caller)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  check_triangle_mesh(tm, caller + ": tm");
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = checked_mesh_input(tm, np, caller + ": tm").vpm;
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
 
   Surface_operators<TriangleMesh> s;
   s.vertices = vertices_in_index_order(tm, vim);
   s.arrays = make_mesh_arrays(tm, vim, fim);
-  s.positions = read_positions(s.vertices, vpm);
-  check_finite_positions(s.positions, caller + ": tm");
-  auto built = make_poisson_operators(s.positions, s.arrays.face_vertices);
+  Positions positions = read_positions(s.vertices, vpm);
+  check_finite_positions(positions, caller + ": tm");
+  auto built = make_poisson_operators(positions, s.arrays.face_vertices);
   if (auto* degenerate = std::get_if<Degenerate_face>(&built))
     throw std::invalid_argument(caller + ": tm: face " + std::to_string(degenerate->face) +
                                 " is degenerate (zero area)");
   s.ops = std::move(std::get<Poisson_operators>(built));
-
-  const Eigen::Index n = s.ops.number_of_faces();
-  s.face_normals.resize(n, 3);
-  s.face_centroids.resize(n, 3);
-  s.vertex_component.assign(s.vertices.size(), 0);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const auto& fv = s.arrays.face_vertices[std::size_t(j)];
-    const Eigen::Vector3d a = s.positions.row(fv[0]), b = s.positions.row(fv[1]), c = s.positions.row(fv[2]);
-    s.face_normals.row(j) = (b - a).cross(c - a).normalized();
-    s.face_centroids.row(j) = (a + b + c) / 3;
-    for (Eigen::Index v : fv)
-      s.vertex_component[std::size_t(v)] = s.arrays.face_component[std::size_t(j)];
-  }
+  Eigen::Index degenerate_face = -1; // none: the operators were built
+  s.faces = make_surface_faces(s.arrays, std::move(positions), degenerate_face);
   return s;
-}
-
-/// The index of `v` in `s.vertices`; throws std::invalid_argument naming `what` when `v` is not
-/// a vertex of the mesh.
-template <class TriangleMesh>
-Eigen::Index vertex_index_or_throw(const Surface_operators<TriangleMesh>& s,
-                                   const typename Surface_operators<TriangleMesh>::vertex_descriptor& v,
-                                   const std::string& what)
-{
-  const auto found = std::find(s.vertices.begin(), s.vertices.end(), v);
-  if (found == s.vertices.end())
-    throw std::invalid_argument(what + " is not a vertex of tm");
-  return static_cast<Eigen::Index>(found - s.vertices.begin());
-}
-
-/// One constrained vertex per connected component: the vertex nearest to the component's
-/// area-weighted barycenter (the lowest index among vertices equally near, up to a tolerance
-/// that makes the choice independent of rounding), or `chosen` (when >= 0) in its component.
-template <class TriangleMesh>
-std::vector<Eigen::Index> constrained_vertices(const Surface_operators<TriangleMesh>& s, Eigen::Index chosen)
-{
-  const std::size_t components = s.arrays.number_of_components;
-  std::vector<Eigen::Vector3d> barycenter(components, Eigen::Vector3d::Zero());
-  std::vector<double> area(components, 0);
-  for (Eigen::Index j = 0; j < s.number_of_faces(); ++j) {
-    const std::size_t c = s.arrays.face_component[std::size_t(j)];
-    barycenter[c] += s.ops.face_areas[j] * s.face_centroids.row(j).transpose();
-    area[c] += s.ops.face_areas[j];
-  }
-  const double tolerance =
-      1e-10 * (s.positions.colwise().maxCoeff() - s.positions.colwise().minCoeff()).squaredNorm();
-  std::vector<Eigen::Index> nearest(components, -1);
-  std::vector<double> nearest_distance(components, std::numeric_limits<double>::infinity());
-  for (Eigen::Index i = 0; i < s.positions.rows(); ++i) {
-    const std::size_t c = s.vertex_component[std::size_t(i)];
-    const double d = (s.positions.row(i).transpose() - barycenter[c] / area[c]).squaredNorm();
-    if (d < nearest_distance[c] - tolerance) {
-      nearest_distance[c] = d;
-      nearest[c] = i;
-    }
-  }
-  if (chosen >= 0)
-    nearest[s.vertex_component[std::size_t(chosen)]] = chosen;
-  return nearest;
 }
 
 /// The solution x (m x k) of L x = rhs with x = 0 at `constrained[c]` in each component c:
@@ -171,96 +108,45 @@ inline Eigen::MatrixXd solve_constrained_poisson(const Poisson_operators& ops,
   Default_sparse_linear_solver solver;
   factor_or_throw(solver, system, "L + W");
   Eigen::MatrixXd x = solver.solver().solve(rhs);
-  Eigen::MatrixXd at_constraint(constrained.size(), x.cols());
-  for (std::size_t c = 0; c < constrained.size(); ++c)
-    at_constraint.row(Eigen::Index(c)) = x.row(constrained[c]);
-  for (Eigen::Index i = 0; i < x.rows(); ++i)
-    x.row(i) -= at_constraint.row(Eigen::Index(vertex_component[std::size_t(i)]));
+  shift_to_constraints(x, constrained, vertex_component);
   return x;
 }
 
-/// The unit normal at vertex i: the area-weighted mean of its faces' normals.
-template <class TriangleMesh>
-Eigen::Vector3d vertex_normal(const Surface_operators<TriangleMesh>& s, Eigen::Index i)
-{
-  Eigen::Vector3d n = Eigen::Vector3d::Zero();
-  for (Eigen::Index j = 0; j < s.number_of_faces(); ++j) {
-    const auto& fv = s.arrays.face_vertices[std::size_t(j)];
-    if (fv[0] == i || fv[1] == i || fv[2] == i)
-      n += s.ops.face_areas[j] * s.face_normals.row(j).transpose();
-  }
-  return n.normalized();
-}
-
-/// Samples `field` at every face centroid; rows of faces without a usable sample (outside the
-/// domain, not finite, or zero) are zero.
-template <class TriangleMesh, class FlowField, class NamedParameters>
-Positions sample_face_velocities(const Surface_operators<TriangleMesh>& s, const FlowField& field,
-                                 const NamedParameters& np)
-{
-  using Geom_traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
-  const Geom_traits gt = parameters::choose_parameter<Geom_traits>(
-      parameters::get_parameter(np, CGAL::internal_np::geom_traits));
-  auto construct_point = gt.construct_point_3_object();
-  Positions v = Positions::Zero(s.number_of_faces(), 3);
-  for (Eigen::Index j = 0; j < s.number_of_faces(); ++j) {
-    const Flow_sample sample = sample_flow(
-        field, construct_point(s.face_centroids(j, 0), s.face_centroids(j, 1), s.face_centroids(j, 2)));
-    if (sample.kind == Sample_kind::VALID)
-      v.row(j) = sample.velocity.transpose();
-  }
-  return v;
-}
-
-/// Projects a_j into the plane of face j and normalizes it when asked; a direction within
-/// 1e-9 (relative) of the normal, or zero, has no usable projection and becomes zero.
-inline Eigen::Vector3d project_guidance(const Eigen::Vector3d& a, const Eigen::Vector3d& n, bool normalize)
-{
-  const Eigen::Vector3d p = a - n.dot(a) * n;
-  const double length = p.norm();
-  if (!(length > 1e-9 * a.norm()) || !std::isfinite(length))
-    return Eigen::Vector3d::Zero();
-  return normalize ? Eigen::Vector3d(p / length) : p;
-}
-
-/// Solves eq. (7) for the guidance `a` (n x 3, b_j = a_j x n_j) and writes r and s.
+/// Solves eq. (7) on `s` for the guidance `a` (n x 3, b_j = a_j x n_j) and writes r and s.
 template <class TriangleMesh, class RMap, class SMap>
 void solve_parametrization(const Surface_operators<TriangleMesh>& s, const Positions& a,
                            const std::vector<Eigen::Index>& constrained, RMap r_map, SMap s_map,
                            const std::string& caller)
 {
-  const Eigen::Index n = s.number_of_faces();
-  Eigen::MatrixXd c(3 * n, 2);
-  bool any = false;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const Eigen::Vector3d aj = a.row(j).transpose();
-    c.block<3, 1>(3 * j, 0) = aj;
-    c.block<3, 1>(3 * j, 1) = aj.cross(s.face_normals.row(j).transpose());
-    any = any || aj.squaredNorm() > 0;
-  }
-  if (!any)
-    throw std::invalid_argument(
-        caller + ": the field gives no usable direction on any face of tm (every centroid sample "
-                 "is outside the domain, not finite, zero, or normal to its face)");
-  const Eigen::MatrixXd rs = solve_constrained_poisson(s.ops, constrained, s.vertex_component, s.ops.D * c);
-  using R_value = typename boost::property_traits<RMap>::value_type;
-  using S_value = typename boost::property_traits<SMap>::value_type;
-  for (std::size_t i = 0; i < s.vertices.size(); ++i) {
-    put(r_map, s.vertices[i], R_value(rs(Eigen::Index(i), 0)));
-    put(s_map, s.vertices[i], S_value(rs(Eigen::Index(i), 1)));
-  }
+  const Eigen::MatrixXd c = cross_field(s.faces, a, caller);
+  const Eigen::MatrixXd rs =
+      solve_constrained_poisson(s.ops, constrained, s.faces.vertex_component, s.ops.D * c);
+  write_vertex_values(s.vertices, rs, 0, r_map);
+  write_vertex_values(s.vertices, rs, 1, s_map);
 }
 
-/// The constrained vertices of eq. (7) for the named parameters `np`.
-template <class TriangleMesh, class NamedParameters>
-std::vector<Eigen::Index> constrained_vertices(const Surface_operators<TriangleMesh>& s,
-                                               const NamedParameters& np, const std::string& caller)
+/// The per-call data of the parametrization functions: the checked surface, its constrained
+/// vertices and the field sampled at its face centroids.
+template <class TriangleMesh>
+struct Parametrization_input {
+  Surface_operators<TriangleMesh> surface;
+  std::vector<Eigen::Index> constrained;
+  Positions velocities;
+};
+
+template <class TriangleMesh, class FlowField, class NamedParameters>
+Parametrization_input<TriangleMesh> make_parametrization_input(const TriangleMesh& tm, const FlowField& field,
+                                                               const NamedParameters& np,
+                                                               const std::string& caller)
 {
-  Eigen::Index chosen = -1;
-  if constexpr (!parameters::is_default_parameter<NamedParameters, internal_np::constraint_vertex_t>::value)
-    chosen = vertex_index_or_throw(s, parameters::get_parameter(np, internal_np::constraint_vertex_t()),
-                                   caller + ": constraint_vertex");
-  return constrained_vertices(s, chosen);
+  Parametrization_input<TriangleMesh> in{make_surface_operators(tm, np, caller), {}, {}};
+  in.constrained = constrained_vertices(in.surface.arrays, in.surface.faces,
+                                        chosen_constraint_vertex(in.surface.vertices, np, caller));
+  using Geom_traits = typename Checked_mesh_input<TriangleMesh, NamedParameters>::Geom_traits;
+  in.velocities = sample_face_velocities(in.surface.faces, field,
+                                         parameters::choose_parameter<Geom_traits>(
+                                             parameters::get_parameter(np, CGAL::internal_np::geom_traits)));
+  return in;
 }
 
 } // namespace internal
@@ -339,13 +225,10 @@ void parametrize_tangential(const TriangleMesh& tm, const FlowField& field, RMap
   const std::string caller = "parametrize_tangential";
   const bool normalize =
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::normalized_t()), true);
-  const auto s = internal::make_surface_operators(tm, np, caller);
-  const auto constrained = internal::constrained_vertices(s, np, caller);
-  internal::Positions a = internal::sample_face_velocities(s, field, np);
-  for (Eigen::Index j = 0; j < a.rows(); ++j)
-    a.row(j) = internal::project_guidance(a.row(j).transpose(), s.face_normals.row(j).transpose(), normalize)
-                   .transpose();
-  internal::solve_parametrization(s, a, constrained, r_map, s_map, caller);
+  auto in = internal::make_parametrization_input(tm, field, np, caller);
+  const internal::Positions a =
+      internal::tangential_guidance(in.surface.faces, std::move(in.velocities), normalize);
+  internal::solve_parametrization(in.surface, a, in.constrained, r_map, s_map, caller);
 }
 
 /*!
@@ -407,29 +290,13 @@ void parametrize_orthogonal(const TriangleMesh& tm, const FlowField& field, RMap
                             const NamedParameters& np = CGAL::parameters::default_values())
 {
   const std::string caller = "parametrize_orthogonal";
-  const double alpha =
-      parameters::choose_parameter(parameters::get_parameter(np, internal_np::angle_t()), 0.0);
-  if (!std::isfinite(alpha))
-    throw std::invalid_argument(caller + ": angle must be finite (got " + std::to_string(alpha) + ")");
+  const double alpha = internal::orthogonal_parametrization_angle(np, caller);
   const bool normalize =
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::normalized_t()), false);
-  const auto s = internal::make_surface_operators(tm, np, caller);
-  const auto constrained = internal::constrained_vertices(s, np, caller);
-
-  std::vector<Eigen::Vector3d> direction(constrained.size());
-  for (std::size_t c = 0; c < constrained.size(); ++c) {
-    const Eigen::Vector3d n_c = internal::vertex_normal(s, constrained[c]);
-    const Eigen::Matrix3d q = Eigen::HouseholderQR<Eigen::Vector3d>(n_c).householderQ();
-    direction[c] = internal::rotation_matrix(n_c, alpha) * q.col(1);
-  }
-  internal::Positions a = internal::sample_face_velocities(s, field, np);
-  for (Eigen::Index j = 0; j < a.rows(); ++j) {
-    const Eigen::Vector3d turned = direction[s.arrays.face_component[std::size_t(j)]];
-    a.row(j) = internal::project_guidance(turned.cross(a.row(j).transpose()),
-                                          s.face_normals.row(j).transpose(), normalize)
-                   .transpose();
-  }
-  internal::solve_parametrization(s, a, constrained, r_map, s_map, caller);
+  auto in = internal::make_parametrization_input(tm, field, np, caller);
+  const internal::Positions a = internal::orthogonal_guidance(
+      in.surface.arrays, in.surface.faces, std::move(in.velocities), in.constrained, alpha, normalize);
+  internal::solve_parametrization(in.surface, a, in.constrained, r_map, s_map, caller);
 }
 
 /*!
@@ -484,49 +351,21 @@ void compute_geodesic_distance(const TriangleMesh& tm,
 {
   const std::string caller = "compute_geodesic_distance";
   const auto s = internal::make_surface_operators(tm, np, caller);
-  const Eigen::Index source_index = internal::vertex_index_or_throw(s, source, caller + ": source");
-  const std::size_t component = s.vertex_component[std::size_t(source_index)];
-  const Eigen::Index m = s.ops.number_of_vertices(), n = s.number_of_faces();
+  const Eigen::Index source_index = internal::vertex_index_or_throw(s.vertices, source, caller + ": source");
+  const std::size_t component = s.faces.vertex_component[std::size_t(source_index)];
+  const Eigen::Index m = s.ops.number_of_vertices();
+  const Eigen::VectorXd h =
+      internal::heat_step<internal::Default_sparse_linear_solver>(s.ops, s.arrays, source_index, component);
 
-  Eigen::VectorXd mass = Eigen::VectorXd::Zero(m);
-  double area = 0;
-  Eigen::Index faces_in_component = 0;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    for (Eigen::Index v : s.arrays.face_vertices[std::size_t(j)])
-      mass[v] += s.ops.face_areas[j] / 3;
-    if (s.arrays.face_component[std::size_t(j)] == component) {
-      area += s.ops.face_areas[j];
-      ++faces_in_component;
-    }
-  }
-  const double t = 5 * area / double(faces_in_component);
-
-  Eigen::SparseMatrix<double> heat_system = t * s.ops.L;
+  const Eigen::MatrixXd guidance = internal::normalized_negative_gradient(s.arrays, s.faces, h);
+  const std::vector<Eigen::Index> constrained =
+      internal::constrained_vertices(s.arrays, s.faces, source_index);
+  Eigen::MatrixXd d =
+      internal::solve_constrained_poisson(s.ops, constrained, s.faces.vertex_component, s.ops.D * guidance);
   for (Eigen::Index i = 0; i < m; ++i)
-    heat_system.coeffRef(i, i) += mass[i];
-  internal::Default_sparse_linear_solver heat_solver;
-  internal::factor_or_throw(heat_solver, heat_system, "M + t L");
-  Eigen::VectorXd h0 = Eigen::VectorXd::Zero(m);
-  h0[source_index] = 1;
-  const Eigen::VectorXd h = heat_solver.solver().solve(h0);
-
-  const Eigen::VectorXd gradient = s.ops.G * h;
-  Eigen::MatrixXd guidance(3 * n, 1);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const Eigen::Vector3d g = gradient.segment<3>(3 * j);
-    const double length = g.norm();
-    guidance.block<3, 1>(3 * j, 0) =
-        length > 0 && std::isfinite(length) ? Eigen::Vector3d(-g / length) : Eigen::Vector3d::Zero();
-  }
-  std::vector<Eigen::Index> constrained = internal::constrained_vertices(s, source_index);
-  const Eigen::MatrixXd d =
-      internal::solve_constrained_poisson(s.ops, constrained, s.vertex_component, s.ops.D * guidance);
-
-  using Value = typename boost::property_traits<DistanceMap>::value_type;
-  for (std::size_t i = 0; i < s.vertices.size(); ++i)
-    put(distance_map, s.vertices[i],
-        s.vertex_component[i] == component ? Value(d(Eigen::Index(i), 0))
-                                           : Value(std::numeric_limits<double>::infinity()));
+    if (s.faces.vertex_component[std::size_t(i)] != component)
+      d(i, 0) = std::numeric_limits<double>::infinity();
+  internal::write_vertex_values(s.vertices, d, 0, distance_map);
 }
 
 } // namespace Flow_aligned_surfaces

@@ -132,15 +132,11 @@ OutputIterator sample_seed_points(const TriangleMesh& tm, double spacing, Output
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using Geom_traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
   const std::string caller = "sample_seed_points";
   if (!(spacing > 0) || !std::isfinite(spacing))
     throw std::invalid_argument(caller + ": spacing must be positive and finite (got " +
                                 std::to_string(spacing) + ")");
-  internal::check_triangle_mesh(tm, caller + ": tm");
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const auto [vpm, gt] = internal::checked_mesh_input(tm, np, caller + ": tm");
   const unsigned int seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
@@ -234,10 +230,7 @@ OutputIterator project_polyline(const TriangleMesh& tm, const PointRange& polyli
   using Geom_traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
   using Point_3 = typename Geom_traits::Point_3;
   const std::string caller = "project_polyline";
-  internal::check_triangle_mesh(tm, caller + ": tm");
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const auto [vpm, gt] = internal::checked_mesh_input(tm, np, caller + ": tm");
 
   std::vector<Eigen::Vector3d> input;
   for (const auto& p : polyline) {

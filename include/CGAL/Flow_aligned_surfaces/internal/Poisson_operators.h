@@ -141,6 +141,42 @@ make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions
   return ops;
 }
 
+/// The divergence D_0 on the reference mesh M_0 of a per-face field given on a deformed mesh
+/// M_k with the same connectivity: column l of `field_on_current` (3n x k) stacks one vector
+/// a_j per face of M_k.  Each a_j is pulled back to face j of M_0 as a cotangent vector: the
+/// vector b_j in the plane of the M_0 face with b_j . e^0 = a_j . e^k for its edges (e^0 and e^k
+/// the same edge in M_0 and M_k), so that grad_0 (r o phi) = b_j when grad_k r = a_j (phi the
+/// piecewise linear map M_0 -> M_k).  With E = [x_b - x_a, x_c - x_a] (3 x 2),
+/// b_j = E_0 (E_0^T E_0)^{-1} E_k^T a_j, and since grad_0^T E_0 = S = [-1 -1; 1 0; 0 1] the face's
+/// share of D_0 b is A_j^0 S (E_0^T E_0)^{-1} E_k^T a_j: no gradients needed.  Equals D a when
+/// M_k = M_0.
+inline Eigen::MatrixXd
+reference_divergence(const Poisson_operators& reference_ops,
+                     const Eigen::Matrix<double, Eigen::Dynamic, 3>& reference_positions,
+                     const Eigen::Matrix<double, Eigen::Dynamic, 3>& current_positions,
+                     const Eigen::MatrixXd& field_on_current)
+{
+  Eigen::MatrixXd result = Eigen::MatrixXd::Zero(reference_positions.rows(), field_on_current.cols());
+  for (std::size_t j = 0; j < reference_ops.faces.size(); ++j) {
+    const Reference_face& face = reference_ops.faces[j];
+    const auto& v = face.vertices;
+    Eigen::Matrix<double, 3, 2> e0, ek;
+    e0.col(0) = (reference_positions.row(v[1]) - reference_positions.row(v[0])).transpose();
+    e0.col(1) = (reference_positions.row(v[2]) - reference_positions.row(v[0])).transpose();
+    ek.col(0) = (current_positions.row(v[1]) - current_positions.row(v[0])).transpose();
+    ek.col(1) = (current_positions.row(v[2]) - current_positions.row(v[0])).transpose();
+    const Eigen::Matrix2d metric_inverse = (e0.transpose() * e0).inverse();
+    for (Eigen::Index l = 0; l < field_on_current.cols(); ++l) {
+      const Eigen::Vector2d w = face.area * metric_inverse *
+                                (ek.transpose() * field_on_current.block<3, 1>(3 * Eigen::Index(j), l));
+      result(v[0], l) -= w[0] + w[1];
+      result(v[1], l) += w[0];
+      result(v[2], l) += w[1];
+    }
+  }
+  return result;
+}
+
 } // namespace internal
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL

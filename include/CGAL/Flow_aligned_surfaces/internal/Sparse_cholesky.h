@@ -26,12 +26,34 @@ namespace Flow_aligned_surfaces {
 namespace internal {
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
-/// CHOLMOD's simplicial LDL^T with its fill-reducing ordering.  Measured against the supernodal
-/// LL^T (benchmark/Flow_aligned_surfaces/RESULTS.md): its back-substitutions, paid every
-/// iteration, are 1.6 to 2.8 times faster at every size, and its factorization, paid once, is
-/// faster up to 2e4 faces and repaid within 7 (8e4 faces) to 30 (3.2e5) iterations above.
+/// CHOLMOD's LDL^T: factored the way CHOLMOD's own switch chooses (simplicial when
+/// flops / nnz(L) < 40, i.e. below about 5e3 faces; supernodal LL^T above, blocked BLAS-3 and 1.5
+/// to 2.4 times faster there), then left by `cholmod_factorize` as a simplicial LDL^T factor
+/// (`final_super = 0`, `final_ll = 0`) without the zeros of relaxed supernodal amalgamation
+/// (`final_resymbol = 1`).  So the factorization is the faster of the two at every size, and the
+/// back-substitutions, paid every iteration, are always CHOLMOD's simplicial ones, which sweep the
+/// three coordinate columns at once instead of making many small BLAS calls per supernode
+/// (1.6 to 2.8 times faster).  Measured in benchmark/Flow_aligned_surfaces/RESULTS.md.
+template <class MatrixType>
+class Cholmod_auto_LDLT : public Eigen::CholmodBase<MatrixType, Eigen::Lower, Cholmod_auto_LDLT<MatrixType>> {
+  using Base = Eigen::CholmodBase<MatrixType, Eigen::Lower, Cholmod_auto_LDLT<MatrixType>>;
+
+public:
+  Cholmod_auto_LDLT() : Base()
+  {
+    cholmod_common& common = this->cholmod();
+    common.supernodal = CHOLMOD_AUTO;
+    common.final_asis = 0;
+    common.final_super = 0;
+    common.final_ll = 0;
+    common.final_pack = 1;
+    common.final_monotonic = 1;
+    common.final_resymbol = 1;
+  }
+};
+
 using Default_sparse_linear_solver =
-    CGAL::Eigen_solver_traits<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>>>;
+    CGAL::Eigen_solver_traits<Cholmod_auto_LDLT<Eigen::SparseMatrix<double>>>;
 #else
 using Default_sparse_linear_solver =
     CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>;

@@ -67,6 +67,32 @@ void check_triangle_mesh(const TriangleMesh& tm, const std::string& name)
   }
 }
 
+/// What every read-only algorithm takes from a mesh and its named parameters once
+/// `check_triangle_mesh()` has accepted the mesh: the vertex point map (`vertex_point_map`, by
+/// default the mesh's own) and the geometric traits (`geom_traits`, by default the kernel of the
+/// points).
+template <class TriangleMesh, class NamedParameters>
+struct Checked_mesh_input {
+  using Geom_traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
+  using Vertex_point_map = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+  Vertex_point_map vpm;
+  Geom_traits gt;
+};
+
+/// Checks `tm` (messages start with `name`) and reads its vertex point map and traits from `np`.
+template <class TriangleMesh, class NamedParameters>
+Checked_mesh_input<TriangleMesh, NamedParameters>
+checked_mesh_input(const TriangleMesh& tm, const NamedParameters& np, const std::string& name)
+{
+  using Input = Checked_mesh_input<TriangleMesh, NamedParameters>;
+  check_triangle_mesh(tm, name);
+  return Input{
+      CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                         get_const_property_map(CGAL::vertex_point, tm)),
+      CGAL::parameters::choose_parameter<typename Input::Geom_traits>(
+          CGAL::parameters::get_parameter(np, CGAL::internal_np::geom_traits))};
+}
+
 } // namespace internal
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
