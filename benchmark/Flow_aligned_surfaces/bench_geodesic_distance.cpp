@@ -93,9 +93,9 @@ int main(int argc, char** argv)
     const Deformation shared(shared_tm, rotation, FAS::Alignment::TANGENTIAL);
     const double factor_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - construct_start).count();
-    auto shared_d = shared_tm.property_map<Vertex, double>("v:ours").value();
-    auto shared_r = shared_tm.property_map<Vertex, double>("v:r").value();
-    auto shared_s = shared_tm.property_map<Vertex, double>("v:s").value();
+    auto shared_d = shared_tm.property_map<Vertex, double>("v:ours").first;
+    auto shared_r = shared_tm.property_map<Vertex, double>("v:r").first;
+    auto shared_s = shared_tm.property_map<Vertex, double>("v:s").first;
     const double shared_ms = best_of_3_ms([&] { shared.compute_geodesic_distance(source, shared_d); });
     const double shared_param_ms = best_of_3_ms([&] { shared.parametrize_tangential(shared_r, shared_s); });
     double shared_error = 0;
