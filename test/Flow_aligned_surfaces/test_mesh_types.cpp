@@ -19,7 +19,10 @@
 #include <CGAL/Flow_aligned_surfaces/align_to_flow.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
+#include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
+#include <CGAL/Flow_aligned_surfaces/parametrize.h>
+#include <CGAL/Flow_aligned_surfaces/seeds.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
 #include <CGAL/Surface_mesh.h>
@@ -243,6 +246,94 @@ TYPED_TEST(MeshTypes, InteractiveDeformationWithRigidMoveMatchesSurfaceMesh)
   const auto other = run(mesh);
   ASSERT_EQ(other.size(), reference.size());
   EXPECT_LE(largest_distance(other, reference), 1e-9 * 0.8);
+}
+
+// The seeding stages of Section 5 on an aligned orthogonal surface: the free orthogonal
+// parametrization and geodesic distance, the deformation's own parametrization (with its
+// factorization), iso-contours of r and seed points, with the index maps left to their
+// defaults and dynamic property maps for the outputs.
+struct Seeding_outcome {
+  std::vector<double> r, s, shared_r, shared_s, distance;
+  std::vector<std::array<double, 3>> contour_points, seed_points;
+  std::size_t number_of_contours = 0;
+};
+
+template <class Mesh>
+Seeding_outcome seed(const FAS::Point_source_flow<K>& source)
+{
+  using Vpm = decltype(Mesh_access<Mesh>::vpm(std::declval<Mesh&>()));
+  Mesh tm;
+  const auto np = CGAL::parameters::vertex_point_map(Mesh_access<Mesh>::vpm(tm));
+  FAS::make_planar_patch(tm, Point(0, 0.1, 1.5), Vector(0.2, -0.3, 1.0), 0.8, 0.8, 800, np);
+  FAS::Flow_aligned_deformation<Mesh, FAS::Point_source_flow<K>, Vpm> deformation(
+      tm, source, FAS::Alignment::ORTHOGONAL, np);
+  deformation.run();
+  auto r = get(CGAL::dynamic_vertex_property_t<double>(), tm),
+       s = get(CGAL::dynamic_vertex_property_t<double>(), tm),
+       shared_r = get(CGAL::dynamic_vertex_property_t<double>(), tm),
+       shared_s = get(CGAL::dynamic_vertex_property_t<double>(), tm),
+       distance = get(CGAL::dynamic_vertex_property_t<double>(), tm);
+  FAS::parametrize_orthogonal(tm, source, r, s,
+                              FAS::parameters::angle(0.3, FAS::parameters::normalized(true, np)));
+  deformation.parametrize_orthogonal(shared_r, shared_s,
+                                     FAS::parameters::angle(0.3, FAS::parameters::normalized(true)));
+  FAS::compute_geodesic_distance(tm, *vertices(tm).begin(), distance, np);
+  std::vector<std::vector<Point>> contours;
+  FAS::extract_iso_contours(tm, r, std::vector<double>{-0.2, 0.0, 0.2}, std::back_inserter(contours), np);
+  std::vector<Point> seeds;
+  FAS::sample_seed_points(tm, 0.1, std::back_inserter(seeds), np);
+
+  Seeding_outcome outcome;
+  for (auto v : vertices(tm)) {
+    outcome.r.push_back(get(r, v));
+    outcome.s.push_back(get(s, v));
+    outcome.shared_r.push_back(get(shared_r, v));
+    outcome.shared_s.push_back(get(shared_s, v));
+    outcome.distance.push_back(get(distance, v));
+  }
+  outcome.number_of_contours = contours.size();
+  for (const auto& contour : contours)
+    for (const Point& p : contour)
+      outcome.contour_points.push_back({p.x(), p.y(), p.z()});
+  for (const Point& p : seeds)
+    outcome.seed_points.push_back({p.x(), p.y(), p.z()});
+  return outcome;
+}
+
+double largest_difference(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double largest = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    largest = (std::max)(largest, std::abs(a[i] - b[i]));
+  return largest;
+}
+
+TYPED_TEST(MeshTypes, SeedingStagesMatchSurfaceMesh)
+{
+  const FAS::Point_source_flow<K> source(Point(0, 0, 0), 1.0);
+  const Seeding_outcome reference = seed<Surface_mesh>(source);
+  const Seeding_outcome other = seed<TypeParam>(source);
+  // The reference is meaningful: r spans the contour values, three contours cross the patch,
+  // the distance grows to the far corner, and the shared factorization agrees with the free one.
+  ASSERT_FALSE(reference.r.empty());
+  EXPECT_LT(*std::min_element(reference.r.begin(), reference.r.end()), -0.2);
+  EXPECT_GT(*std::max_element(reference.r.begin(), reference.r.end()), 0.2);
+  EXPECT_EQ(reference.number_of_contours, 3u);
+  EXPECT_GT(*std::max_element(reference.distance.begin(), reference.distance.end()), 0.8);
+  EXPECT_LE(largest_difference(reference.shared_r, reference.r), 1e-3);
+  EXPECT_GT(reference.seed_points.size(), 20u);
+
+  ASSERT_EQ(other.r.size(), reference.r.size());
+  EXPECT_LE(largest_difference(other.r, reference.r), 1e-9);
+  EXPECT_LE(largest_difference(other.s, reference.s), 1e-9);
+  EXPECT_LE(largest_difference(other.shared_r, reference.shared_r), 1e-9);
+  EXPECT_LE(largest_difference(other.shared_s, reference.shared_s), 1e-9);
+  EXPECT_LE(largest_difference(other.distance, reference.distance), 1e-9);
+  EXPECT_EQ(other.number_of_contours, reference.number_of_contours);
+  ASSERT_EQ(other.contour_points.size(), reference.contour_points.size());
+  EXPECT_LE(largest_distance(other.contour_points, reference.contour_points), 1e-9);
+  ASSERT_EQ(other.seed_points.size(), reference.seed_points.size());
+  EXPECT_LE(largest_distance(other.seed_points, reference.seed_points), 1e-9);
 }
 
 #ifdef FAS_HAVE_OPENMESH

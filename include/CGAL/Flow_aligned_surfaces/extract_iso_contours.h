@@ -17,6 +17,7 @@
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
@@ -111,7 +112,19 @@ OutputIterator extract_iso_contours(const TriangleMesh& tm, ScalarMap scalar_map
   const std::string caller = "extract_iso_contours";
   const auto [vpm, gt] = internal::checked_mesh_input(tm, np, caller + ": tm");
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const auto eim = CGAL::get_initialized_edge_index_map(tm, np);
+  // Edge numbers: the `edge_index_map` given, or a dense numbering of our own (a Polyhedron_3
+  // without ids, for one, has no edge index of its own).
+  const auto eim = [&] {
+    if constexpr (parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_index_t>::value) {
+      auto own = get(CGAL::dynamic_edge_property_t<std::size_t>(), tm);
+      std::size_t i = 0;
+      for (auto e : edges(tm))
+        put(own, e, i++);
+      return own;
+    }
+    else
+      return parameters::get_parameter(np, CGAL::internal_np::edge_index);
+  }();
   const std::vector<double> f = internal::read_scalars(tm, scalar_map, vim, caller);
   std::vector<double> levels;
   for (const auto& value : values) {
