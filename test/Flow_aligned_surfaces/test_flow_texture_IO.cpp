@@ -2,6 +2,7 @@
 // values round(255 c), top row first), the OBJ by parsing its v/vt/f lines and its MTL, the VTP
 // by VTK's vtkXMLPolyDataReader, which must find the texture coordinates as TCoords.
 
+#include "png_test_reader.h"
 #include "test_files.h"
 #include "test_kernel.h"
 
@@ -12,9 +13,6 @@
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Surface_mesh.h>
 
-#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_PNG
-#include <png.h>
-#endif
 #ifdef FAS_HAVE_VTK
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -51,22 +49,6 @@ Mesh::Property_map<Vertex, UV> textured_patch(Mesh& tm)
 }
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_PNG
-// libpng's reader: the file as 8-bit RGB, rows top first.
-std::vector<unsigned char> read_png(const std::string& filename, png_uint_32& width, png_uint_32& height)
-{
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, filename.c_str()))
-    return {};
-  png.format = PNG_FORMAT_RGB;
-  std::vector<unsigned char> bytes(PNG_IMAGE_SIZE(png));
-  if (!png_image_finish_read(&png, nullptr, bytes.data(), 0, nullptr))
-    return {};
-  width = png.width;
-  height = png.height;
-  return bytes;
-}
-
 TEST(FlowTextureIO, PNGHoldsTheRoundedTexelsTopRowFirst)
 {
   FAS::Texture_image image = FAS::make_noise_texture(20, 6, 3, 1);
@@ -76,10 +58,10 @@ TEST(FlowTextureIO, PNGHoldsTheRoundedTexelsTopRowFirst)
   const std::string file = temporary_file("flow_texture_io_", "noise.png");
   std::string error;
   ASSERT_TRUE(FAS::IO::write_PNG(file, image, &error)) << error;
-  png_uint_32 width = 0, height = 0;
-  const auto bytes = read_png(file, width, height);
-  ASSERT_EQ(width, 20u);
-  ASSERT_EQ(height, 6u);
+  const Png_picture picture = read_png(file);
+  const auto& bytes = picture.rgb;
+  ASSERT_EQ(picture.width, 20u);
+  ASSERT_EQ(picture.height, 6u);
   for (std::size_t row = 0; row < 6; ++row)
     for (std::size_t x = 0; x < 20; ++x)
       for (std::size_t c = 0; c < 3; ++c) {

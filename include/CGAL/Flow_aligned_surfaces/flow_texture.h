@@ -95,6 +95,12 @@ inline Texture_image make_texture_or_throw(std::size_t width, std::size_t height
   return image;
 }
 
+/// A channel value in [0, 1] as a byte: round(255 c), clamped, NaN -> 0.
+inline unsigned char texel_byte(float c)
+{
+  return (unsigned char)(std::isnan(c) ? 0 : std::lround(255 * std::clamp(c, 0.0f, 1.0f)));
+}
+
 /// The weights of a periodic box of length `length` texels centered on a texel: 1 inside,
 /// fractional at the two ends, summing to `length`.
 inline std::vector<double> box_weights(double length)

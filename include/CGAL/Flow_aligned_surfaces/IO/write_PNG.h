@@ -59,9 +59,8 @@ inline bool write_PNG(const std::string& filename, const Texture_image& image, s
                 std::to_string(image.width) + " x " + std::to_string(image.height));
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_PNG
   std::vector<unsigned char> bytes(image.pixels.size());
-  std::transform(image.pixels.begin(), image.pixels.end(), bytes.begin(), [](float c) {
-    return (unsigned char)(std::isnan(c) ? 0 : std::lround(255 * std::clamp(c, 0.0f, 1.0f)));
-  });
+  std::transform(image.pixels.begin(), image.pixels.end(), bytes.begin(),
+                 Flow_aligned_surfaces::internal::texel_byte);
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   png.width = png_uint_32(image.width);
