@@ -5,7 +5,7 @@
 // (u, v) = (r * scale + offset, s * scale); faces where grad r leaves the flow are blended to
 // the texture's mean colour by b(gamma).  Moving the offset animates the texture along the flow.
 //
-//   flow_texture [--faces N] [--output DIR]
+//   flow_texture [--faces N] [--output DIR] [--picture-width W]
 //
 // writes into DIR: surface.vtp (r, s, texture coordinates as TCoords, velocity; per face the
 // mask, the alignment angle and the flux), noise.obj/.mtl/.png and arrows.obj/.mtl/.png, and
@@ -38,12 +38,15 @@ using namespace examples;
 using Vertex = Mesh::Vertex_index;
 using Face = Mesh::Face_index;
 
+// The pictures' width in pixels (the height is 3/4 of it).
+std::size_t picture_width = 640;
+
 // Renders one picture; prints the reason and returns false when it cannot.
 bool render(const std::filesystem::path& file, const Mesh& tm, FAS::IO::Surface_rendering what)
 {
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
-  what.width = 640;
-  what.height = 480;
+  what.width = picture_width;
+  what.height = picture_width * 3 / 4;
   what.camera = FAS::IO::Render_camera{{-2.0, -1.0, 5.0}, {0.0, 2.2, 0.0}, {0, 1, 0}, 1.5, 30};
   std::string error;
   if (FAS::IO::render_surface_PNG(file.string(), tm, what, CGAL::parameters::default_values(), &error))
@@ -68,8 +71,10 @@ int main(int argc, char** argv)
       faces = std::strtoul(argv[++i], nullptr, 10);
     else if (arg == "--output" && i + 1 < argc)
       out = argv[++i];
+    else if (arg == "--picture-width" && i + 1 < argc)
+      picture_width = std::strtoul(argv[++i], nullptr, 10);
     else {
-      std::cerr << "usage: flow_texture [--faces N] [--output DIR]\n";
+      std::cerr << "usage: flow_texture [--faces N] [--output DIR] [--picture-width W]\n";
       return 2;
     }
   }
