@@ -23,14 +23,12 @@
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
-#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
-#include <CGAL/Flow_aligned_surfaces/IO/render_surface_PNG.h>
-#endif
 
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,43 +39,26 @@ using Face = Mesh::Face_index;
 // The pictures' width in pixels (the height is 3/4 of it).
 std::size_t picture_width = 640;
 
-// Renders one picture; prints the reason and returns false when it cannot.
-bool render(const std::filesystem::path& file, const Mesh& tm, FAS::IO::Surface_rendering what)
+// One picture of the example's view (an oblique parallel view of the surface above the cylinder).
+bool render(const std::filesystem::path& file, const Mesh& tm, Surface_rendering what)
 {
-#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
   what.width = picture_width;
   what.height = picture_width * 3 / 4;
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
   what.camera = FAS::IO::Render_camera{{-2.0, -1.0, 5.0}, {0.0, 2.2, 0.0}, {0, 1, 0}, 1.5, 30};
-  std::string error;
-  if (FAS::IO::render_surface_PNG(file.string(), tm, what, CGAL::parameters::default_values(), &error))
-    return true;
-  std::cerr << "pictures not written: " << error << "\n";
-#else
-  (void)tm;
-  (void)what;
-  std::cerr << "pictures not written: " << file.string()
-            << ": built without CGAL::Flow_aligned_surfaces_rendering (VTK rendering, X11)\n";
 #endif
-  return false;
+  return write_picture(file, tm, what);
 }
 
 int main(int argc, char** argv)
 {
-  std::size_t faces = 3000;
-  std::filesystem::path out = "flow_texture_output";
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--faces" && i + 1 < argc)
-      faces = std::strtoul(argv[++i], nullptr, 10);
-    else if (arg == "--output" && i + 1 < argc)
-      out = argv[++i];
-    else if (arg == "--picture-width" && i + 1 < argc)
-      picture_width = std::strtoul(argv[++i], nullptr, 10);
-    else {
-      std::cerr << "usage: flow_texture [--faces N] [--output DIR] [--picture-width W]\n";
-      return 2;
-    }
-  }
+  std::map<std::string, std::string> options{
+      {"faces", "3000"}, {"output", "flow_texture_output"}, {"picture-width", "640"}};
+  if (!parse_options(argc, argv, options, "flow_texture [--faces N] [--output DIR] [--picture-width W]"))
+    return 2;
+  const std::size_t faces = std::strtoul(options["faces"].c_str(), nullptr, 10);
+  const std::filesystem::path out = options["output"];
+  picture_width = std::strtoul(options["picture-width"].c_str(), nullptr, 10);
   std::error_code ec;
   std::filesystem::create_directories(out, ec);
 
@@ -145,7 +126,7 @@ int main(int argc, char** argv)
 
   // 5. The pictures of every stage: the placed and aligned surfaces coloured by flux (the
   // aligned one with seed curves, iso-contours of r), the textured surface, animation frames.
-  FAS::IO::Surface_rendering flux_picture;
+  Surface_rendering flux_picture;
   flux_picture.face_scalars = placed_flux;
   bool pictures = render(out / "flux.png", placed, flux_picture);
   if (pictures) {
@@ -158,7 +139,7 @@ int main(int argc, char** argv)
       for (const Point& p : curve)
         flux_picture.polylines.back().push_back({p.x(), p.y(), p.z()});
     }
-    FAS::IO::Surface_rendering textured;
+    Surface_rendering textured;
     for (Face f : tm.faces())
       textured.face_mask.push_back(mask[f]);
     textured.texture = &noise;

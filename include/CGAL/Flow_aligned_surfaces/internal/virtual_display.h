@@ -10,8 +10,6 @@
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_VIRTUAL_DISPLAY_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_VIRTUAL_DISPLAY_H
 
-#include <X11/Xlib.h>
-
 #include <csignal>
 #include <cstdlib>
 #include <string>
@@ -22,6 +20,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+// The two calls of libX11 needed here, declared as <X11/Xlib.h> declares them: including Xlib.h
+// would define macros such as Success and None that break Eigen and CGAL code after it.
+extern "C" {
+struct _XDisplay;
+_XDisplay* XOpenDisplay(const char*);
+int XCloseDisplay(_XDisplay*);
+}
+
 namespace CGAL {
 namespace Flow_aligned_surfaces {
 namespace internal {
@@ -30,7 +36,7 @@ inline bool display_opens(const char* name)
 {
   if (name == nullptr || *name == '\0')
     return false;
-  Display* display = XOpenDisplay(name);
+  _XDisplay* display = XOpenDisplay(name);
   if (display == nullptr)
     return false;
   XCloseDisplay(display);
