@@ -15,6 +15,8 @@ packages=(
   libtbb-dev                            # parallel loops
   libvtk9-dev                           # VTK XML readers (.vti, .vtu, .vts, .pvd), optional
   zlib1g-dev                            # compressed AmiraMesh (HxZip) and NRRD (gzip) data, optional
+  libpng-dev                            # PNG textures, optional
+  libx11-dev xvfb xauth                 # pictures off screen (VTK under Xvfb where no display exists)
   libgtest-dev libgmock-dev libbenchmark-dev
   doxygen graphviz                      # documentation, built in the tests
   gnuplot-nox                           # the flux plot of replayed sessions (Figure 6)

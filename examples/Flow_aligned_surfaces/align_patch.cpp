@@ -1,7 +1,9 @@
 // The package's main job: place a planar patch in a built-in flow, align it
 // tangentially (a stream surface) or orthogonally (a seeding surface), and write
 // what a user opens afterwards: the initial and aligned surfaces as PLY and VTP
-// (ParaView), the normalized flux of every iteration as CSV, and a JSON summary.
+// (ParaView), the normalized flux of every iteration as CSV, and a JSON summary; and, when built
+// with VTK rendering and a display (or Xvfb) is there, pictures of the initial and aligned
+// surfaces coloured by flux and of the tangential one with its LIC-like texture (PNG).
 //
 // Usage: align_patch [--flow NAME | --field FILE [--array NAME]]
 //                    [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]
@@ -151,6 +153,8 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
                          scene.size, faces);
   if (!write_surface(out / (name + "_initial"), tm, scene.flow))
     return std::nullopt;
+  // Pictures (PNG, through VTK) are extras: without a display the job goes on without them.
+  bool pictures = write_flux_picture(out / (name + "_initial.png"), tm, scene.flow);
 
   std::vector<FAS::Iteration_report> iterations;
   FAS::Flow_aligned_deformation<Mesh, Flow> deformation(
@@ -169,6 +173,9 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   }
   if (!write_surface(out / (name + "_aligned"), tm, scene.flow))
     return std::nullopt;
+  pictures = pictures && write_flux_picture(out / (name + "_aligned.png"), tm, scene.flow);
+  if (pictures && tangential) // the LIC-like texture of the stream surface (Section 6)
+    write_textured_picture(out / (name + "_textured.png"), tm, scene.flow, 2 / scene.size);
 
   auto csv = open_output(out / (name + "_flux.csv"));
   if (!csv)

@@ -14,12 +14,19 @@
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 
+#include <CGAL/Flow_aligned_surfaces/flow_texture.h>
+#include <CGAL/Flow_aligned_surfaces/parametrize.h>
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
+#include <CGAL/Flow_aligned_surfaces/IO/render_surface_PNG.h>
+#endif
+
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <boost/property_map/property_map.hpp>
 
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -117,6 +124,85 @@ inline bool write_surface(const std::filesystem::path& stem, const Mesh& tm, con
     return false;
   }
   return write_surface_VTP(stem.string() + ".vtp", tm, flow);
+}
+
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
+using Surface_rendering = FAS::IO::Surface_rendering;
+#else
+struct Surface_rendering { // what the pictures would need, so that callers compile without VTK
+  std::size_t width = 800, height = 600;
+  std::vector<double> face_scalars, face_mask;
+  const FAS::Texture_image* texture = nullptr;
+  std::vector<std::array<double, 2>> texture_coordinates;
+  std::vector<std::vector<std::array<double, 3>>> polylines;
+};
+#endif
+
+/// Renders `what` of `tm` into the PNG `path`; prints why and returns false when it cannot (no
+/// VTK rendering in the build, no display): the other files of an example do not depend on it.
+inline bool write_picture(const std::filesystem::path& path, const Mesh& tm, const Surface_rendering& what)
+{
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
+  std::string error;
+  if (FAS::IO::render_surface_PNG(path.string(), tm, what, CGAL::parameters::default_values(), &error))
+    return true;
+  std::cerr << "pictures not written: " << error << "\n";
+#else
+  (void)tm;
+  (void)what;
+  std::cerr << "pictures not written: " << path.string()
+            << ": built without CGAL::Flow_aligned_surfaces_rendering (VTK rendering, X11)\n";
+#endif
+  return false;
+}
+
+/// The picture of `tm` coloured by the normalized flux of its faces (blue 0: tangential, red 1:
+/// orthogonal).
+inline bool write_flux_picture(const std::filesystem::path& path, const Mesh& tm, const Flow& flow)
+{
+  Surface_rendering what;
+  what.face_scalars = face_fluxes(tm, flow);
+  return write_picture(path, tm, what);
+}
+
+/// The picture of a stream surface `tm` with the LIC-like texture of its unnormalized tangential
+/// parametrization (`scale` texture repeats per unit of r), masked where grad r leaves the flow.
+inline bool write_textured_picture(const std::filesystem::path& path, const Mesh& tm, const Flow& flow,
+                                   double scale)
+{
+  Mesh copy = tm;
+  auto r = copy.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
+  auto s = copy.add_property_map<Mesh::Vertex_index, double>("v:s", 0).first;
+  auto uv = copy.add_property_map<Mesh::Vertex_index, std::array<double, 2>>("v:uv").first;
+  auto mask = copy.add_property_map<Mesh::Face_index, double>("f:mask", 1).first;
+  FAS::parametrize_tangential(copy, flow, r, s, FAS::parameters::normalized(false));
+  FAS::compute_flow_texture_coordinates(copy, r, s, uv, scale);
+  FAS::compute_flow_texture_mask(copy, flow, r, mask);
+  const FAS::Texture_image noise = FAS::make_noise_texture(128, 128, 24, 1);
+  Surface_rendering what;
+  what.texture = &noise;
+  for (auto v : copy.vertices())
+    what.texture_coordinates.push_back(uv[v]);
+  for (auto f : copy.faces())
+    what.face_mask.push_back(mask[f]);
+  return write_picture(path, copy, what);
+}
+
+/// Reads the options `--NAME VALUE` of the command line into `options` (name -> value, which
+/// holds the defaults); prints `usage` and returns false on an unknown option or a missing value.
+inline bool parse_options(int argc, char** argv, std::map<std::string, std::string>& options,
+                          const std::string& usage)
+{
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto option = arg.rfind("--", 0) == 0 ? options.find(arg.substr(2)) : options.end();
+    if (option == options.end() || i + 1 >= argc) {
+      std::cerr << "usage: " << usage << "\n";
+      return false;
+    }
+    option->second = argv[++i];
+  }
+  return true;
 }
 
 } // namespace examples

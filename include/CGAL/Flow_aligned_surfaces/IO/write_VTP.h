@@ -33,6 +33,9 @@ struct Data_array {
   std::string name;             ///< the array's name, as ParaView shows it
   int number_of_components = 1; ///< 1 for scalars, 3 for vectors
   std::vector<double> values;   ///< `number_of_components` values per element
+  /// Point data only: the array is the texture coordinates (2 components), flagged `TCoords`
+  /// so that ParaView's "Texture" property and VTK's `GetTCoords()` use it.
+  bool texture_coordinates = false;
 };
 
 /*!
@@ -50,7 +53,8 @@ VTK reads as such.
 
 \param filename the output file
 \param tm the mesh (any polygon mesh; faces keep their degree)
-\param point_data arrays with one tuple per vertex, in the order of the vertex index map
+\param point_data arrays with one tuple per vertex, in the order of the vertex index map; the
+       first one with `texture_coordinates` set is flagged as the texture coordinates
 \param cell_data arrays with one tuple per face, in the order of the face index map
 \param np optional named parameters: `vertex_point_map`, `vertex_index_map`, `face_index_map`
        as in `normalized_flux()`, and `stream_precision` (the number of significant digits, default 17)
@@ -146,7 +150,13 @@ bool write_VTP(const std::string& filename, const TriangleMesh& tm,
         for (std::size_t o : offsets)
           os << o << '\n';
         os << "        </DataArray>\n      </Polys>\n";
-        os << "      <PointData>\n";
+        os << "      <PointData";
+        for (const Data_array& a : point_data)
+          if (a.texture_coordinates) {
+            os << " TCoords=\"" << a.name << "\"";
+            break;
+          }
+        os << ">\n";
         write_arrays(os, point_data);
         os << "      </PointData>\n      <CellData>\n";
         write_arrays(os, cell_data);

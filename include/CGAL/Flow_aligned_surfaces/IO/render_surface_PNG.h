@@ -1,0 +1,366 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Pictures of a surface through VTK's OpenGL renderer, off screen, as PNG: the surface coloured
+// by a per-face scalar (e.g. the normalized flux, blue 0 -> red 1, grey where undefined), or
+// textured, the texture blended to its mean colour by a per-face mask b,
+//
+//   shown = (1 - b) * texture(u, v) + b * mean(texture),
+//
+// drawn as a textured layer and, on top of it (polygon offset), a layer of the mean colour with
+// opacity b; polylines (seed curves, stream lines) on top.  Needs the CMake target
+// CGAL::Flow_aligned_surfaces_rendering (VTK RenderingOpenGL2, IOImage, X11).  Without an X
+// display a private Xvfb is started (internal/virtual_display.h); without either, nothing is
+// rendered and the reason is returned.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_RENDER_SURFACE_PNG_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_RENDER_SURFACE_PNG_H
+
+#include <CGAL/Flow_aligned_surfaces/flow_texture.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
+#include <CGAL/Flow_aligned_surfaces/internal/virtual_display.h>
+#include <CGAL/Flow_aligned_surfaces/internal/write_file_atomically.h>
+#include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+
+#include <vtkActor.h>
+#include <vtkAutoInit.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLookupTable.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+VTK_MODULE_INIT(vtkRenderingOpenGL2)
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+namespace IO {
+
+/// \ingroup PkgFlowAlignedSurfacesIO
+/// A camera of `render_surface_PNG()`: where it is, where it looks, which way is up, and the
+/// projection: parallel when `parallel_scale` > 0 (half the picture's height in world units),
+/// else perspective with the vertical `view_angle` (degrees).
+struct Render_camera {
+  std::array<double, 3> position{0, 0, 1};    ///< the eye
+  std::array<double, 3> focal_point{0, 0, 0}; ///< the point at the picture's center
+  std::array<double, 3> view_up{0, 1, 0};     ///< up in the picture (orthogonalized)
+  double parallel_scale = 0;                  ///< > 0: parallel projection
+  double view_angle = 30;                     ///< perspective only
+};
+
+/// \ingroup PkgFlowAlignedSurfacesIO
+/// What `render_surface_PNG()` draws.  Every member is optional; an empty surface colouring
+/// gives a light grey surface.
+struct Surface_rendering {
+  std::size_t width = 800;  ///< picture width, pixels
+  std::size_t height = 600; ///< picture height, pixels
+  /// One value per face (in the order of the face index map), coloured blue (`scalar_range[0]`)
+  /// to red (`scalar_range[1]`); a negative or non-finite value is grey (undefined, as the
+  /// -1 of `compute_face_normalized_flux()`).  Ignored when `texture` is set.
+  std::vector<double> face_scalars;
+  std::array<double, 2> scalar_range{0, 1}; ///< the values of the two ends of the colour map
+  /// The texture, with one \f$ (u, v) \f$ per vertex in `texture_coordinates` (order of the
+  /// vertex index map; non-finite ones are drawn as \f$ (0, 0) \f$ and should be masked).
+  const Texture_image* texture = nullptr;
+  std::vector<std::array<double, 2>> texture_coordinates; ///< per vertex
+  /// Per face, \f$ b \in [0, 1] \f$ of `compute_flow_texture_mask()`; empty: no mask.
+  std::vector<double> face_mask;
+  /// Polylines drawn over the surface (seed curves, stream lines).
+  std::vector<std::vector<std::array<double, 3>>> polylines;
+  std::array<double, 3> polyline_color{0.05, 0.05, 0.05}; ///< their colour
+  double polyline_width = 3;                              ///< their width, pixels
+  std::array<double, 3> background{1, 1, 1};              ///< the background colour
+  /// The camera; none: looking along \f$ -z \f$ at the whole surface (VTK's `ResetCamera()`).
+  std::optional<Render_camera> camera;
+};
+
+namespace internal {
+
+inline vtkSmartPointer<vtkPolyDataMapper> make_mapper(vtkPolyData* polydata)
+{
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(polydata);
+  mapper->ScalarVisibilityOff();
+  return mapper;
+}
+
+inline vtkSmartPointer<vtkActor> make_actor(vtkPolyDataMapper* mapper)
+{
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(0.35);
+  actor->GetProperty()->SetDiffuse(0.65);
+  actor->GetProperty()->SetSpecular(0);
+  return actor;
+}
+
+inline vtkSmartPointer<vtkImageData> make_vtk_image(const Texture_image& t)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(int(t.width), int(t.height), 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* bytes = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (std::size_t i = 0; i < t.pixels.size(); ++i) // VTK's rows run bottom up too
+    bytes[i] = Flow_aligned_surfaces::internal::texel_byte(t.pixels[i]);
+  return image;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Renders `tm` as `what` describes through VTK's OpenGL renderer, off screen, and writes
+the picture to `filename` as PNG.
+
+Coloured by `face_scalars` (blue to red), or textured by `texture` at `texture_coordinates`
+with the texture blended per face to its mean colour by `face_mask`, lit by VTK's head light;
+`polylines` are drawn on top.  The picture's texture follows the surface, so two views of the
+same surface show the same texture at the same surface points (unlike screen-space LIC).
+
+Rendering needs an X display for OpenGL: when `DISPLAY` is unset or does not open, a private
+`Xvfb` is started once per process (stopped at exit; `FAS_NO_XVFB=1` in the environment
+forbids it).  When neither works, nothing is rendered and the function returns `false` with
+the reason, so a program can go on writing its other files.  The PNG is written beside
+`filename` and renamed over it when complete.
+
+\tparam TriangleMesh a model of `FaceListGraph`
+\tparam NamedParameters a sequence of named parameters
+
+\param filename the PNG file
+\param tm the surface (any polygon mesh)
+\param what what to draw (sizes, colouring, texture, mask, polylines, camera)
+\param np optional named parameters: `vertex_point_map`, `vertex_index_map`, `face_index_map`
+       as in `normalized_flux()`
+\param error if not null, receives the reason of a failure
+
+\returns `true` if the picture was written; `false` if an array of `what` has the wrong size,
+a size is zero, there is no display, or the file could not be written.
+\sa `write_PNG()`, `compute_flow_texture_mask()`, `compute_face_normalized_flux()`
+*/
+template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
+bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, const Surface_rendering& what,
+                        const NamedParameters& np = CGAL::parameters::default_values(),
+                        std::string* error = nullptr)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  auto fail = [&](const std::string& reason) {
+    if (error)
+      *error = "render_surface_PNG: " + filename + ": " + reason;
+    return false;
+  };
+  const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
+  if (what.width == 0 || what.height == 0 || what.width > 16384 || what.height > 16384)
+    return fail("width and height must be in [1, 16384] (got " + std::to_string(what.width) + " x " +
+                std::to_string(what.height) + ")");
+  if (!what.face_scalars.empty() && what.face_scalars.size() != nf)
+    return fail("face_scalars has " + std::to_string(what.face_scalars.size()) + " values for " +
+                std::to_string(nf) + " faces");
+  if (!what.face_mask.empty() && what.face_mask.size() != nf)
+    return fail("face_mask has " + std::to_string(what.face_mask.size()) + " values for " +
+                std::to_string(nf) + " faces");
+  if (what.texture != nullptr &&
+      (what.texture_coordinates.size() != nv || what.texture->width == 0 || what.texture->height == 0 ||
+       what.texture->pixels.size() != 3 * what.texture->width * what.texture->height))
+    return fail("the texture is empty or inconsistent, or texture_coordinates has " +
+                std::to_string(what.texture_coordinates.size()) + " values for " + std::to_string(nv) +
+                " vertices");
+  std::string reason;
+  if (!Flow_aligned_surfaces::internal::ensure_display(reason))
+    return fail(reason);
+
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(vtkIdType(nv));
+  for (auto v : vertices(tm)) {
+    const auto& p = get(vpm, v);
+    points->SetPoint(vtkIdType(get(vim, v)), CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                     CGAL::to_double(p.z()));
+  }
+  std::vector<std::vector<vtkIdType>> face_vertices(nf);
+  for (auto f : faces(tm))
+    for (auto v : vertices_around_face(halfedge(f, tm), tm))
+      face_vertices[get(fim, f)].push_back(vtkIdType(get(vim, v)));
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& fv : face_vertices)
+    polys->InsertNextCell(vtkIdType(fv.size()), fv.data());
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->SetPoints(points);
+  surface->SetPolys(polys);
+
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetBackground(what.background[0], what.background[1], what.background[2]);
+  auto mapper = internal::make_mapper(surface);
+  auto actor = internal::make_actor(mapper);
+  renderer->AddActor(actor);
+  if (what.texture != nullptr) {
+    auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
+    tcoords->SetName("texture_coordinates");
+    tcoords->SetNumberOfComponents(2);
+    tcoords->SetNumberOfTuples(vtkIdType(nv));
+    for (std::size_t i = 0; i < nv; ++i) {
+      const auto& t = what.texture_coordinates[i];
+      const bool finite = std::isfinite(t[0]) && std::isfinite(t[1]);
+      tcoords->SetTuple2(vtkIdType(i), finite ? t[0] : 0.0, finite ? t[1] : 0.0);
+    }
+    surface->GetPointData()->SetTCoords(tcoords);
+    auto texture = vtkSmartPointer<vtkTexture>::New();
+    texture->SetInputData(internal::make_vtk_image(*what.texture));
+    texture->RepeatOn();
+    texture->InterpolateOn();
+    actor->SetTexture(texture);
+    actor->GetProperty()->SetColor(1, 1, 1);
+
+    bool any_mask = false;
+    for (double b : what.face_mask)
+      any_mask = any_mask || !(b <= 0);
+    if (any_mask) {
+      // The mean-colour layer, opacity b, pulled in front of the textured one.
+      const std::array<double, 3> mean = what.texture->mean_color();
+      auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      colors->SetNumberOfComponents(4);
+      colors->SetNumberOfTuples(vtkIdType(nf));
+      for (std::size_t j = 0; j < nf; ++j) {
+        const double b = std::isnan(what.face_mask[j]) ? 1.0 : std::clamp(what.face_mask[j], 0.0, 1.0);
+        colors->SetTuple4(vtkIdType(j), std::lround(255 * mean[0]), std::lround(255 * mean[1]),
+                          std::lround(255 * mean[2]), std::lround(255 * b));
+      }
+      auto layer = vtkSmartPointer<vtkPolyData>::New();
+      layer->SetPoints(points);
+      layer->SetPolys(polys);
+      layer->GetCellData()->SetScalars(colors);
+      auto layer_mapper = internal::make_mapper(layer);
+      layer_mapper->ScalarVisibilityOn();
+      layer_mapper->SetScalarModeToUseCellData();
+      layer_mapper->SetColorModeToDirectScalars();
+      layer_mapper->SetResolveCoincidentTopologyToPolygonOffset();
+      layer_mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2, -2);
+      renderer->AddActor(internal::make_actor(layer_mapper));
+    }
+  }
+  else if (!what.face_scalars.empty()) {
+    auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
+    scalars->SetName("face_scalars");
+    scalars->SetNumberOfTuples(vtkIdType(nf));
+    for (std::size_t j = 0; j < nf; ++j) {
+      const double s = what.face_scalars[j];
+      scalars->SetValue(vtkIdType(j), std::isfinite(s) && s >= 0 ? s : -1e300);
+    }
+    surface->GetCellData()->SetScalars(scalars);
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    table->SetHueRange(0.667, 0.0);
+    table->SetTableRange(what.scalar_range[0], what.scalar_range[1]);
+    table->SetBelowRangeColor(0.6, 0.6, 0.6, 1);
+    table->UseBelowRangeColorOn();
+    table->Build();
+    mapper->SetLookupTable(table);
+    mapper->UseLookupTableScalarRangeOn();
+    mapper->SetScalarModeToUseCellData();
+    mapper->ScalarVisibilityOn();
+  }
+  else
+    actor->GetProperty()->SetColor(0.85, 0.85, 0.85);
+
+  if (!what.polylines.empty()) {
+    auto line_points = vtkSmartPointer<vtkPoints>::New();
+    auto lines = vtkSmartPointer<vtkCellArray>::New();
+    for (const auto& polyline : what.polylines) {
+      std::vector<vtkIdType> ids;
+      for (const auto& p : polyline)
+        ids.push_back(line_points->InsertNextPoint(p.data()));
+      if (ids.size() >= 2)
+        lines->InsertNextCell(vtkIdType(ids.size()), ids.data());
+    }
+    auto curves = vtkSmartPointer<vtkPolyData>::New();
+    curves->SetPoints(line_points);
+    curves->SetLines(lines);
+    auto curve_mapper = internal::make_mapper(curves);
+    curve_mapper->SetResolveCoincidentTopologyToPolygonOffset();
+    curve_mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-4, -4);
+    auto curve_actor = vtkSmartPointer<vtkActor>::New();
+    curve_actor->SetMapper(curve_mapper);
+    curve_actor->GetProperty()->SetColor(what.polyline_color[0], what.polyline_color[1],
+                                         what.polyline_color[2]);
+    curve_actor->GetProperty()->SetLineWidth(float(what.polyline_width));
+    curve_actor->GetProperty()->LightingOff();
+    renderer->AddActor(curve_actor);
+  }
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (what.camera) {
+    camera->SetPosition(what.camera->position.data());
+    camera->SetFocalPoint(what.camera->focal_point.data());
+    camera->SetViewUp(what.camera->view_up.data());
+    camera->OrthogonalizeViewUp();
+    if (what.camera->parallel_scale > 0) {
+      camera->ParallelProjectionOn();
+      camera->SetParallelScale(what.camera->parallel_scale);
+    }
+    else
+      camera->SetViewAngle(what.camera->view_angle);
+    renderer->ResetCameraClippingRange();
+  }
+  else
+    renderer->ResetCamera();
+
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+  window->SetSize(int(what.width), int(what.height));
+  window->Render();
+  auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto png = vtkSmartPointer<vtkPNGWriter>::New();
+  png->SetInputConnection(grab->GetOutputPort());
+  png->WriteToMemoryOn();
+  png->Write();
+  vtkUnsignedCharArray* encoded = png->GetResult();
+  if (encoded == nullptr || encoded->GetNumberOfValues() == 0)
+    return fail("VTK's PNG writer produced nothing");
+  if (!Flow_aligned_surfaces::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+        os.write(reinterpret_cast<const char*>(encoded->GetPointer(0)),
+                 std::streamsize(encoded->GetNumberOfValues()));
+      }))
+    return fail(reason);
+  return true;
+}
+
+} // namespace IO
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_RENDER_SURFACE_PNG_H
