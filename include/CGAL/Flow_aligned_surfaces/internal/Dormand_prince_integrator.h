@@ -74,13 +74,19 @@ public:
   /// whether f(x0, t0) exists; when not, `step()` must not be called.
   bool is_start_inside() const { return m_start_inside; }
 
-  /// one accepted step; see `Step_result`.
+  /// one accepted step; see `Step_result`.  Leaving the domain takes two calls: the first
+  /// returns `ACCEPTED` with the step shortened to end within the boundary tolerance of the exit,
+  /// the second confirms it from there with a step of twice the bracket and returns
+  /// `LEFT_DOMAIN` (with a step of length 0, or of at most twice the bracket; `position()` is
+  /// the last point inside), or `ACCEPTED` if that step is inside after all.
   Step_result step()
   {
     if (!m_start_inside || m_k1.norm() <= m_stagnation_speed)
       return Step_result::STAGNATION;
     if (m_h == 0)
       m_h = m_tol.initial_step > 0 ? m_tol.initial_step : starting_step();
+    const bool confirming = m_confirming;
+    m_confirming = false;
 
     // Bisection state once a trial left the domain: a step of length `inside` is an accepted
     // candidate (kept in `candidate`), a step of length `outside` has a stage outside.
@@ -99,11 +105,19 @@ public:
             m_tol.boundary > 0 ? m_tol.boundary : m_tol.absolute + m_tol.relative * m_x.cwiseAbs().maxCoeff();
         if ((outside - inside) * speed <= boundary_tolerance || outside - inside <= m_tol.min_step ||
             m_tau + inside == m_tau + outside) {
-          if (have_candidate)
-            accept(candidate);
-          else
+          if (!have_candidate) { // a step within the tolerance leaves: the boundary is here
             accept_zero_step();
-          return Step_result::LEFT_DOMAIN;
+            return Step_result::LEFT_DOMAIN;
+          }
+          accept(candidate);
+          if (confirming) // located with steps of at most twice the bracket: accurate stages
+            return Step_result::LEFT_DOMAIN;
+          // The bracket was found with the stages of a long step, whose points may leave the
+          // domain before the path does (at a grazing exit); the next call confirms the exit
+          // from the new point with a step of twice the bracket, or goes on if that is inside.
+          m_h = std::max(2. * (outside - inside), 4. * m_tol.min_step);
+          m_confirming = true;
+          return Step_result::ACCEPTED;
         }
       }
       const double h = bisecting ? 0.5 * (inside + outside) : std::min(m_h, m_tol.max_step);
@@ -337,6 +351,7 @@ private:
   double m_tau = 0, m_tau_prev = 0;
   double m_h = 0;
   double m_error_prev = 1e-4;
+  bool m_confirming = false; // the last step ended at a located exit, to be confirmed
   std::size_t m_number_of_accepted = 0, m_number_of_rejected = 0, m_number_of_evaluations = 0;
 };
 
