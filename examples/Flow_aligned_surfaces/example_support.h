@@ -11,7 +11,9 @@
 #include <CGAL/Flow_aligned_surfaces/IO/read_flow_field.h>
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
 #include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/align_to_flow.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
+#include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
@@ -203,6 +205,18 @@ inline bool parse_options(int argc, char** argv, std::map<std::string, std::stri
     option->second = argv[++i];
   }
   return true;
+}
+
+/// The orthogonal surface of the seeding examples: a tilted disk of `faces` triangles beside the
+/// point source `flow`, aligned orthogonally (it becomes a piece of a sphere about the source);
+/// returns the alignment's report.
+inline FAS::Alignment_report make_orthogonal_disk(Mesh& tm, const FAS::Point_source_flow<Kernel>& flow, std::size_t faces)
+{
+  FAS::make_disk_patch(tm, Point(0, 0, 1), Vector(0.3, 0, 1), 0.6, faces);
+  const FAS::Alignment_report report = FAS::align_to_flow(tm, flow, FAS::Alignment::ORTHOGONAL);
+  std::cout << "aligned: flux " << report.normalized_flux << " after " << report.number_of_iterations
+            << " iterations\n";
+  return report;
 }
 
 } // namespace examples

@@ -14,6 +14,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "example_support.h"
+
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
 #include <CGAL/Flow_aligned_surfaces/align_to_flow.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
@@ -88,10 +90,7 @@ int main(int argc, char** argv)
   // 1. An orthogonal surface: a tilted disk beside the source becomes a piece of a sphere.
   const FAS::Point_source_flow<Kernel> flow;
   Mesh tm;
-  FAS::make_disk_patch(tm, Point(0, 0, 1), Vector(0.3, 0, 1), 0.6, faces);
-  const FAS::Alignment_report report = FAS::align_to_flow(tm, flow, FAS::Alignment::ORTHOGONAL);
-  std::cout << "aligned: flux " << report.normalized_flux << " after " << report.number_of_iterations
-            << " iterations\n";
+  const FAS::Alignment_report report = examples::make_orthogonal_disk(tm, flow, faces);
 
   // 2. The orthogonal parametrization (alpha turns the contours) and the circular one.
   auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
