@@ -46,7 +46,7 @@
 namespace CGAL {
 namespace Flow_aligned_surfaces {
 
-/// \ingroup PkgFlowAlignedSurfacesIntegration
+/// \ingroup PkgFlowAlignedSurfacesRef
 /// Why `integrate_stream_surface()` stopped.
 enum class Stream_surface_termination {
   MAX_INTEGRATION_TIME,     ///< the last time line is at `max_integration_time`
@@ -57,7 +57,7 @@ enum class Stream_surface_termination {
   SEED_AT_REST              ///< the field is zero at every point of the seed inside the domain: empty result
 };
 
-/// \ingroup PkgFlowAlignedSurfacesIntegration
+/// \ingroup PkgFlowAlignedSurfacesRef
 /// What `integrate_stream_surface()` did.
 struct Stream_surface_report {
   /// the number of time lines computed after the seed curve
@@ -495,7 +495,7 @@ struct Ignored_vertex_double_map {
 } // namespace internal
 
 /*!
-\ingroup PkgFlowAlignedSurfacesIntegration
+\ingroup PkgFlowAlignedSurfacesRef
 \brief integrates the stream surface (steady field) or path surface (unsteady field) seeded by a
 polyline with an advancing front, and adds it to `tm_out` as a triangle mesh.
 
