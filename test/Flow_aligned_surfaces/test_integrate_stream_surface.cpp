@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -212,6 +213,10 @@ TEST(IntegrateStreamSurface, CylinderSplitsTheFront)
                       0.05, FAS::parameters::max_integration_time(
                                 10.0, FAS::parameters::max_number_of_time_lines(std::size_t(1000)))));
   expect_parametrization(s, seed);
+  std::cout << "cylinder: " << s.report.number_of_time_lines << " time lines, "
+            << s.report.number_of_inserted_particles << " inserted, " << s.report.number_of_removed_particles
+            << " removed, " << s.report.number_of_tears << " tears, " << s.report.number_of_lost_particles
+            << " lost, " << s.report.message << "\n";
   EXPECT_GE(s.report.number_of_tears + s.report.number_of_lost_particles, 1u);
   bool above = false, below = false;
   for (Vertex v : s.tm.vertices()) {
@@ -230,6 +235,7 @@ TEST(IntegrateStreamSurface, CylinderSplitsTheFront)
     const double x = a.x() + s01 * dx, y = a.y() + s01 * dy;
     ASSERT_GE(std::sqrt(x * x + y * y), 0.99) << "edge from " << a << " to " << b;
   }
+  EXPECT_GT(expect_front_spacing(s), 100u); // where the front is not torn
   // The stream function psi = U y (1 - R^2 / rho^2) is a first integral.
   EXPECT_LE(first_integral_drift(s, seed, [&](const Point_3& p) { return cylinder.stream_function(p); }),
             1e-6);
@@ -290,6 +296,21 @@ TEST(IntegrateStreamSurface, SeedOutsideTheDomainGivesAnEmptyResult)
   EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::SEED_OUTSIDE_DOMAIN);
   EXPECT_NE(s.report.message.find("outside"), std::string::npos);
   EXPECT_EQ(s.tm.number_of_vertices(), 0u);
+
+  // A seed across the cylinder: the part inside is dropped, the two parts outside are
+  // integrated as two front pieces.
+  const Polyline across = {Point_3(0, -2, 0), Point_3(0, 2, 0)};
+  const Surface a(FAS::Cylinder_potential_flow<K>(1.0, 1.0), across,
+                  FAS::parameters::front_spacing(0.1, FAS::parameters::max_integration_time(1.0)));
+  expect_parametrization(a, across);
+  EXPECT_GE(a.report.number_of_lost_particles, 19u); // the seed points with |y| < 1
+  bool above = false, below = false;
+  for (Vertex v : a.tm.vertices()) {
+    const Point_3& p = a.tm.point(v);
+    ASSERT_GE(p.x() * p.x() + p.y() * p.y(), 1 - 1e-9);
+    (p.y() > 0 ? above : below) = true;
+  }
+  EXPECT_TRUE(above && below);
 }
 
 TEST(IntegrateStreamSurface, FieldAtRestOnTheSeedGivesAnEmptyResult)
