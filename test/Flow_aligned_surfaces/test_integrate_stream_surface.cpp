@@ -11,7 +11,9 @@
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
+#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <gtest/gtest.h>
@@ -239,6 +241,22 @@ TEST(IntegrateStreamSurface, CylinderSplitsTheFront)
   // The stream function psi = U y (1 - R^2 / rho^2) is a first integral.
   EXPECT_LE(first_integral_drift(s, seed, [&](const Point_3& p) { return cylinder.stream_function(p); }),
             1e-6);
+}
+
+TEST(IntegrateStreamSurface, AnyMutableFaceGraph)
+{
+  // The same surface in a Polyhedron_3 (BGL interface, no u/t maps) as in a Surface_mesh.
+  const FAS::Hill_spherical_vortex<K> hill(1.0, 1.0);
+  const Polyline seed = {Point_3(0.3, 0, 0), Point_3(0.3, 0.3, 0.1)};
+  const auto np = FAS::parameters::front_spacing(0.05, FAS::parameters::max_integration_time(2.0));
+  const Surface s(hill, seed, np);
+  CGAL::Polyhedron_3<K> polyhedron;
+  const FAS::Stream_surface_report report = FAS::integrate_stream_surface(hill, seed, polyhedron, np);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(polyhedron));
+  EXPECT_EQ(report.number_of_refused_faces, 0u);
+  EXPECT_EQ(polyhedron.size_of_vertices(), s.tm.number_of_vertices());
+  EXPECT_EQ(polyhedron.size_of_facets(), s.tm.number_of_faces());
+  EXPECT_GT(polyhedron.size_of_facets(), 100u);
 }
 
 TEST(IntegrateStreamSurface, PathSurfaceInAFlowLinearInTime)

@@ -80,8 +80,10 @@ struct Stream_surface_report {
   double final_parameter = 0;
   /// the seed polyline's length L (the range of the seed parameter is [0, L])
   double seed_length = 0;
-  /// the front spacing h and the time-line step Δ actually used
-  double front_spacing = 0, time_line_step = 0;
+  /// the front spacing h actually used
+  double front_spacing = 0;
+  /// the time-line step Δ actually used
+  double time_line_step = 0;
   /// why the integration stopped
   Stream_surface_termination termination = Stream_surface_termination::NO_PARTICLE_LEFT;
   /// the reason in words
