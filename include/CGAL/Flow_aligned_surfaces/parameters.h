@@ -40,6 +40,15 @@ CGAL_FAS_DECLARE_TAG(normalized)
 CGAL_FAS_DECLARE_TAG(angle)
 CGAL_FAS_DECLARE_TAG(constraint_vertex)
 CGAL_FAS_DECLARE_TAG(resampling_step)
+// integrate_streamline(), integrate_pathline()
+CGAL_FAS_DECLARE_TAG(relative_tolerance)
+CGAL_FAS_DECLARE_TAG(absolute_tolerance)
+CGAL_FAS_DECLARE_TAG(max_length)
+CGAL_FAS_DECLARE_TAG(max_time)
+CGAL_FAS_DECLARE_TAG(max_number_of_steps)
+CGAL_FAS_DECLARE_TAG(integration_direction)
+CGAL_FAS_DECLARE_TAG(output_time_step)
+CGAL_FAS_DECLARE_TAG(output_length_step)
 // integrate_stream_surface()
 CGAL_FAS_DECLARE_TAG(front_spacing)
 CGAL_FAS_DECLARE_TAG(time_line_step)
@@ -126,6 +135,34 @@ CGAL_FAS_NAMED_PARAMETER(angle, double)
 /// Default: the mean edge length of the mesh.
 CGAL_FAS_NAMED_PARAMETER(resampling_step, double)
 
+// Stream lines and path lines (integrate_streamline(), integrate_pathline()).
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The relative tolerance of the local error of each integration step.  Default: `1e-8`.
+CGAL_FAS_NAMED_PARAMETER(relative_tolerance, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The absolute tolerance (a length) of the local error of each integration step.
+/// Default: `1e-10`.
+CGAL_FAS_NAMED_PARAMETER(absolute_tolerance, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The largest arc length of a stream line in each direction.  Default: no limit.
+CGAL_FAS_NAMED_PARAMETER(max_length, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The largest integration time \f$ |t - t_0| \f$ of a stream line or path line in each
+/// direction.  Default: no limit.
+CGAL_FAS_NAMED_PARAMETER(max_time, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The largest number of accepted integration steps of a stream line in each direction.
+/// Default: `100000`.
+CGAL_FAS_NAMED_PARAMETER(max_number_of_steps, std::size_t)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Stream line output sampled every Δt of integration time (on the dense output) instead of at
+/// the integrator's steps.  Default: the steps.
+CGAL_FAS_NAMED_PARAMETER(output_time_step, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Stream line output sampled every Δs of arc length (on the dense output) instead of at the
+/// integrator's steps.  Default: the steps.
+CGAL_FAS_NAMED_PARAMETER(output_length_step, double)
+
 // Stream surfaces (integrate_stream_surface()).
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// h, the requested distance between neighbouring particles of a stream surface's front: a
@@ -209,6 +246,18 @@ constraint_vertex(const VertexDescriptor& v, const NamedParameters& np = NamedPa
 {
   return CGAL::Named_function_parameters<VertexDescriptor, internal_np::constraint_vertex_t, NamedParameters>(
       v, np);
+}
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The direction of a stream line or path line from its seed.  Type:
+/// `CGAL::Flow_aligned_surfaces::Integration_direction` (`FORWARD`, `BACKWARD` or `BOTH`).
+/// Default: `FORWARD`.
+template <typename Direction, typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<Direction, internal_np::integration_direction_t, NamedParameters>
+integration_direction(const Direction& direction, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<Direction, internal_np::integration_direction_t, NamedParameters>(
+      direction, np);
 }
 
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters

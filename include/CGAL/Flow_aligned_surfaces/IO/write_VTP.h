@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A surface mesh with per-vertex and per-face data arrays as a VTK XML PolyData
-// file (.vtp, ASCII), which ParaView and VTK open.  CGAL's own write_VTP needs
+// A surface mesh with per-vertex and per-face data arrays, or polylines with per-point and
+// per-line arrays, as a VTK XML PolyData file (.vtp, ASCII), which ParaView and VTK open.  CGAL's own write_VTP needs
 // the VTK library and writes no data arrays; this writer needs neither.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_VTP_H
@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <ostream>
 #include <string>
@@ -34,6 +35,76 @@ struct Data_array {
   int number_of_components = 1; ///< 1 for scalars, 3 for vectors
   std::vector<double> values;   ///< `number_of_components` values per element
 };
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The check of both writers: every array has `number_of_components` values per element.
+inline bool check_VTP_array_sizes(const std::vector<Data_array>& point_data, std::size_t number_of_points,
+                                  const std::vector<Data_array>& cell_data, std::size_t number_of_cells,
+                                  std::string& reason)
+{
+  for (const auto* arrays : {&point_data, &cell_data})
+    for (const Data_array& a : *arrays) {
+      const std::size_t expected =
+          std::size_t(a.number_of_components) * (arrays == &point_data ? number_of_points : number_of_cells);
+      if (a.number_of_components < 1 || a.values.size() != expected) {
+        reason = "array '" + a.name + "' has " + std::to_string(a.values.size()) + " values, expected " +
+                 std::to_string(expected);
+        return false;
+      }
+    }
+  return true;
+}
+
+// Non-finite values as VTK reads them.
+inline void write_VTP_value(std::ostream& os, double x)
+{
+  if (std::isfinite(x))
+    os << x;
+  else
+    os << (std::isnan(x) ? "NaN" : (x > 0 ? "Infinity" : "-Infinity"));
+}
+
+inline void write_VTP_data_arrays(std::ostream& os, const std::vector<Data_array>& arrays)
+{
+  for (const Data_array& a : arrays) {
+    os << "        <DataArray type=\"Float64\" Name=\"" << a.name << "\" NumberOfComponents=\""
+       << a.number_of_components << "\" format=\"ascii\">\n";
+    for (std::size_t i = 0; i < a.values.size(); ++i) {
+      write_VTP_value(os, a.values[i]);
+      os << ((i + 1) % std::size_t(a.number_of_components) == 0 ? '\n' : ' ');
+    }
+    os << "        </DataArray>\n";
+  }
+}
+
+// The file's head up to the opening of the points' coordinates.
+inline void write_VTP_head(std::ostream& os, std::size_t points, std::size_t lines, std::size_t polys)
+{
+  os << "<?xml version=\"1.0\"?>\n"
+     << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+        "header_type=\"UInt64\">\n"
+     << "  <PolyData>\n"
+     << "    <Piece NumberOfPoints=\"" << points << "\" NumberOfVerts=\"0\" NumberOfLines=\"" << lines
+     << "\" NumberOfStrips=\"0\" NumberOfPolys=\"" << polys << "\">\n"
+     << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+        "format=\"ascii\">\n";
+}
+
+// The point and cell data and the file's tail.
+inline void write_VTP_tail(std::ostream& os, const std::vector<Data_array>& point_data,
+                           const std::vector<Data_array>& cell_data)
+{
+  os << "      <PointData>\n";
+  write_VTP_data_arrays(os, point_data);
+  os << "      </PointData>\n      <CellData>\n";
+  write_VTP_data_arrays(os, cell_data);
+  os << "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+}
+
+} // namespace internal
+/// \endcond
 
 /*!
 \ingroup PkgFlowAlignedSurfacesIO
@@ -78,13 +149,9 @@ bool write_VTP(const std::string& filename, const TriangleMesh& tm,
       *error = "write_VTP: " + filename + ": " + reason;
     return false;
   };
-  for (const auto* arrays : {&point_data, &cell_data})
-    for (const Data_array& a : *arrays) {
-      const std::size_t expected = std::size_t(a.number_of_components) * (arrays == &point_data ? nv : nf);
-      if (a.number_of_components < 1 || a.values.size() != expected)
-        return fail("array '" + a.name + "' has " + std::to_string(a.values.size()) + " values, expected " +
-                    std::to_string(expected));
-    }
+  std::string reason;
+  if (!internal::check_VTP_array_sizes(point_data, nv, cell_data, nf, reason))
+    return fail(reason);
 
   std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> ordered_vertices(nv);
   for (auto v : vertices(tm))
@@ -93,37 +160,10 @@ bool write_VTP(const std::string& filename, const TriangleMesh& tm,
   for (auto f : faces(tm))
     ordered_faces[get(fim, f)] = f;
 
-  auto write_value = [](std::ostream& os, double x) {
-    if (std::isfinite(x))
-      os << x;
-    else
-      os << (std::isnan(x) ? "NaN" : (x > 0 ? "Infinity" : "-Infinity"));
-  };
-  auto write_arrays = [&](std::ostream& os, const std::vector<Data_array>& arrays) {
-    for (const Data_array& a : arrays) {
-      os << "        <DataArray type=\"Float64\" Name=\"" << a.name << "\" NumberOfComponents=\""
-         << a.number_of_components << "\" format=\"ascii\">\n";
-      for (std::size_t i = 0; i < a.values.size(); ++i) {
-        write_value(os, a.values[i]);
-        os << ((i + 1) % std::size_t(a.number_of_components) == 0 ? '\n' : ' ');
-      }
-      os << "        </DataArray>\n";
-    }
-  };
-
-  std::string reason;
   const bool written =
       Flow_aligned_surfaces::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
         os.precision(precision);
-        os << "<?xml version=\"1.0\"?>\n"
-           << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-              "header_type=\"UInt64\">\n"
-           << "  <PolyData>\n"
-           << "    <Piece NumberOfPoints=\"" << nv
-           << "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\""
-           << " NumberOfPolys=\"" << nf << "\">\n"
-           << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-              "format=\"ascii\">\n";
+        internal::write_VTP_head(os, nv, 0, nf);
         for (auto v : ordered_vertices) {
           const auto& p = get(vpm, v);
           os << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z())
@@ -146,13 +186,68 @@ bool write_VTP(const std::string& filename, const TriangleMesh& tm,
         for (std::size_t o : offsets)
           os << o << '\n';
         os << "        </DataArray>\n      </Polys>\n";
-        os << "      <PointData>\n";
-        write_arrays(os, point_data);
-        os << "      </PointData>\n      <CellData>\n";
-        write_arrays(os, cell_data);
-        os << "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+        internal::write_VTP_tail(os, point_data, cell_data);
       });
   return written ? true : fail(reason);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief Writes polylines (stream lines, seed curves) with optional per-point and per-line arrays
+to `filename` as a VTK XML PolyData file (ASCII `.vtp`) of `Lines` cells, one per polyline.
+
+The points are numbered polyline after polyline, in order; `point_data` arrays follow that
+order, `cell_data` arrays have one tuple per polyline.  Written atomically as `write_VTP()`.
+
+\tparam Polyline a range of points of a CGAL kernel (`std::vector<Point_3>`)
+
+\param filename the output file
+\param polylines the polylines (an empty one gives a line without points)
+\param point_data arrays with one tuple per point, in the order above
+\param cell_data arrays with one tuple per polyline
+\param error if not null, receives the reason of a failure
+\param precision the number of significant digits
+
+\returns `true` on success; `false` if an array has the wrong size or the file could not be
+written, with the reason in `error` when it is not null.
+\sa `write_VTP()`, `integrate_streamline()`
+*/
+template <class Polyline>
+bool write_VTP_polylines(const std::string& filename, const std::vector<Polyline>& polylines,
+                         const std::vector<Data_array>& point_data = {},
+                         const std::vector<Data_array>& cell_data = {}, std::string* error = nullptr,
+                         int precision = 17)
+{
+  std::size_t np = 0;
+  for (const Polyline& line : polylines)
+    np += std::size_t(std::distance(line.begin(), line.end()));
+  std::string reason;
+  const bool written =
+      internal::check_VTP_array_sizes(point_data, np, cell_data, polylines.size(), reason) &&
+      Flow_aligned_surfaces::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+        os.precision(precision);
+        internal::write_VTP_head(os, np, polylines.size(), 0);
+        for (const Polyline& line : polylines)
+          for (const auto& p : line)
+            os << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z())
+               << '\n';
+        os << "        </DataArray>\n      </Points>\n      <Lines>\n"
+           << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+        for (std::size_t i = 0; i < np; ++i)
+          os << i << '\n';
+        os << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+        std::size_t offset = 0;
+        for (const Polyline& line : polylines) {
+          offset += std::size_t(std::distance(line.begin(), line.end()));
+          os << offset << '\n';
+        }
+        os << "        </DataArray>\n      </Lines>\n";
+        internal::write_VTP_tail(os, point_data, cell_data);
+      });
+  if (!written && error)
+    *error = "write_VTP_polylines: " + filename + ": " + reason;
+  return written;
 }
 
 } // namespace IO

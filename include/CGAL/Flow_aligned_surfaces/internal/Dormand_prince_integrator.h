@@ -173,6 +173,23 @@ public:
            theta * (m_dense[1] + theta1 * (m_dense[2] + theta * (m_dense[3] + theta1 * m_dense[4])));
   }
 
+  /// dx/dτ of the continuous extension at `tau` (clamped as in `dense_output()`): the
+  /// derivative of a degree-4 polynomial, the tangent for arc lengths within the step.
+  Eigen::Vector3d dense_derivative(double tau) const
+  {
+    const double h = m_tau - m_tau_prev;
+    if (!(h > 0))
+      return m_k1;
+    const double theta = std::clamp((tau - m_tau_prev) / h, 0., 1.);
+    const double theta1 = 1. - theta;
+    // x = r0 + θ u,  u = r1 + (1 - θ) q,  q = r2 + θ (r3 + (1 - θ) r4)
+    const Eigen::Vector3d q = m_dense[2] + theta * (m_dense[3] + theta1 * m_dense[4]);
+    const Eigen::Vector3d dq = m_dense[3] + (theta1 - theta) * m_dense[4];
+    const Eigen::Vector3d u = m_dense[1] + theta1 * q;
+    const Eigen::Vector3d du = -q + theta1 * dq;
+    return (u + theta * du) / h;
+  }
+
   std::size_t number_of_accepted_steps() const { return m_number_of_accepted; }
   std::size_t number_of_rejected_steps() const { return m_number_of_rejected; }
   /// field evaluations so far
