@@ -212,7 +212,7 @@ int main(int argc, char** argv)
           field, fine, tm,
           FAS::parameters::front_spacing(
               h, FAS::parameters::arc_length_time_lines(
-                     true, FAS::parameters::max_integration_time(
+                     true, FAS::parameters::max_length(
                                length, FAS::parameters::max_number_of_time_lines(std::size_t(100000))))));
       Soup soup;
       soup.positions.resize(Eigen::Index(tm.number_of_vertices()), 3);

@@ -77,12 +77,12 @@ int main(int argc, char** argv)
     auto u = tm.add_property_map<Mesh::Vertex_index, double>("v:u", 0).first;
     auto t = tm.add_property_map<Mesh::Vertex_index, double>("v:t", 0).first;
     const auto np = FAS::parameters::front_spacing(
-        spacing, FAS::parameters::max_integration_time(
+        spacing, FAS::parameters::max_time(
                      time, FAS::parameters::seed_parameter_map(u, FAS::parameters::integration_time_map(t))));
     const FAS::Stream_surface_report forward = FAS::integrate_stream_surface(flow, seed, tm, np);
     const std::size_t forward_vertices = tm.number_of_vertices();
-    const FAS::Stream_surface_report backward =
-        FAS::integrate_stream_surface(flow, seed, tm, FAS::parameters::integrate_backward(true, np));
+    const FAS::Stream_surface_report backward = FAS::integrate_stream_surface(
+        flow, seed, tm, FAS::parameters::integration_direction(FAS::Integration_direction::BACKWARD, np));
     for (Mesh::Vertex_index v : tm.vertices()) // the time of the backward half is negative
       if (std::size_t(v) >= forward_vertices)
         t[v] = -t[v];

@@ -122,7 +122,7 @@ TEST(IntegrateStreamSurface, UniformFlowTranslatesTheSeed)
   const Vector_3 U(0.5, 1, 0.25);
   const Polyline seed = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 0, 1)};
   const Surface s(FAS::Uniform_flow<K>(U), seed,
-                  FAS::parameters::front_spacing(0.1, FAS::parameters::max_integration_time(2.0)));
+                  FAS::parameters::front_spacing(0.1, FAS::parameters::max_time(2.0)));
   expect_parametrization(s, seed);
   EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
   EXPECT_DOUBLE_EQ(s.report.final_parameter, 2.0);
@@ -143,7 +143,7 @@ TEST(IntegrateStreamSurface, LinearFlowMatchesTheExponentialAndInsertsReintegrat
   // A = diag(1, 1, -2): x(u, t) = (x0 e^t, y0 e^t, z0 e^-2t) with (x0, y0, z0) = c(u).
   const Polyline seed = {Point_3(0.2, 0.1, 1.0), Point_3(0.4, 0.5, 0.8)};
   const Surface s(FAS::Linear_flow<K>(), seed,
-                  FAS::parameters::front_spacing(0.05, FAS::parameters::max_integration_time(2.0)));
+                  FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(2.0)));
   expect_parametrization(s, seed);
   EXPECT_GT(s.report.number_of_inserted_particles, 20u); // the front is stretched e^2 times
   EXPECT_EQ(s.report.number_of_tears, 0u);
@@ -174,7 +174,7 @@ TEST(IntegrateStreamSurface, HillsVortexKeepsTheStreamFunctionAndHasNoFlux)
       hill, seed,
       FAS::parameters::front_spacing(
           h, FAS::parameters::time_line_step(
-                 h / 12 / speed, FAS::parameters::max_integration_time(
+                 h / 12 / speed, FAS::parameters::max_time(
                                      5.0, FAS::parameters::max_number_of_time_lines(std::size_t(3000))))));
   expect_parametrization(s, seed);
   EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
@@ -194,10 +194,9 @@ TEST(IntegrateStreamSurface, ABCFlowWithoutCKeepsItsFirstIntegralAndHasNoFlux)
   const Polyline seed = {Point_3(0.5, 0, 0.5), Point_3(1.0, 1.0, 0.7), Point_3(1.5, 2.0, 1.0)};
   // Time lines about h/5 apart (|v| is 1 to 2.2 here): the flux of the flat triangles is first
   // order in their extent along the stream lines.
-  const Surface s(
-      abc, seed,
-      FAS::parameters::front_spacing(
-          0.05, FAS::parameters::time_line_step(0.01, FAS::parameters::max_integration_time(2.0))));
+  const Surface s(abc, seed,
+                  FAS::parameters::front_spacing(
+                      0.05, FAS::parameters::time_line_step(0.01, FAS::parameters::max_time(2.0))));
   expect_parametrization(s, seed);
   const double scale = std::sqrt(3.) + std::sqrt(2.); // the range of A cos z + B sin x
   EXPECT_LE(first_integral_drift(s, seed, [&](const Point_3& p) { return abc.first_integral(p); }),
@@ -212,7 +211,7 @@ TEST(IntegrateStreamSurface, CylinderSplitsTheFront)
   const Polyline seed = {Point_3(-3, -0.6, 0.2), Point_3(-3, 0.6, 0.2)};
   const Surface s(cylinder, seed,
                   FAS::parameters::front_spacing(
-                      0.05, FAS::parameters::max_integration_time(
+                      0.05, FAS::parameters::max_time(
                                 10.0, FAS::parameters::max_number_of_time_lines(std::size_t(1000)))));
   expect_parametrization(s, seed);
   std::cout << "cylinder: " << s.report.number_of_time_lines << " time lines, "
@@ -248,7 +247,7 @@ TEST(IntegrateStreamSurface, AnyMutableFaceGraph)
   // The same surface in a Polyhedron_3 (BGL interface, no u/t maps) as in a Surface_mesh.
   const FAS::Hill_spherical_vortex<K> hill(1.0, 1.0);
   const Polyline seed = {Point_3(0.3, 0, 0), Point_3(0.3, 0.3, 0.1)};
-  const auto np = FAS::parameters::front_spacing(0.05, FAS::parameters::max_integration_time(2.0));
+  const auto np = FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(2.0));
   const Surface s(hill, seed, np);
   CGAL::Polyhedron_3<K> polyhedron;
   const FAS::Stream_surface_report report = FAS::integrate_stream_surface(hill, seed, polyhedron, np);
@@ -287,7 +286,8 @@ TEST(IntegrateStreamSurface, BackwardIntegrationReversesTheFlow)
   const Vector_3 U(1, 0, 0);
   const Polyline seed = {Point_3(0, 0, 0), Point_3(0, 1, 0)};
   const Surface s(FAS::Uniform_flow<K>(U), seed,
-                  FAS::parameters::integrate_backward(true, FAS::parameters::max_integration_time(1.0)));
+                  FAS::parameters::integration_direction(FAS::Integration_direction::BACKWARD,
+                                                         FAS::parameters::max_time(1.0)));
   expect_parametrization(s, seed);
   for (Vertex v : s.tm.vertices())
     ASSERT_LE(std::sqrt(CGAL::squared_distance(s.tm.point(v), seed_point(seed, s.u[v]) - s.t[v] * U)), 1e-12);
@@ -299,7 +299,7 @@ TEST(IntegrateStreamSurface, ArcLengthTimeLines)
   // from the seed is t.  For the stream line of (x0, 0, 0) it is x0 (e^s - 1) at time s.
   const Polyline seed = {Point_3(0.5, 0, 0), Point_3(0.5, 0.5, 0)};
   const Surface s(FAS::Linear_flow<K>(), seed,
-                  FAS::parameters::arc_length_time_lines(true, FAS::parameters::max_integration_time(1.0)));
+                  FAS::parameters::arc_length_time_lines(true, FAS::parameters::max_length(1.0)));
   expect_parametrization(s, seed);
   for (Vertex v : s.tm.vertices()) { // radial motion in z = 0: |x - c(u)| is the arc length
     const Point_3 c = seed_point(seed, s.u[v]);
@@ -319,7 +319,7 @@ TEST(IntegrateStreamSurface, SeedOutsideTheDomainGivesAnEmptyResult)
   // integrated as two front pieces.
   const Polyline across = {Point_3(0, -2, 0), Point_3(0, 2, 0)};
   const Surface a(FAS::Cylinder_potential_flow<K>(1.0, 1.0), across,
-                  FAS::parameters::front_spacing(0.1, FAS::parameters::max_integration_time(1.0)));
+                  FAS::parameters::front_spacing(0.1, FAS::parameters::max_time(1.0)));
   expect_parametrization(a, across);
   EXPECT_GE(a.report.number_of_lost_particles, 19u); // the seed points with |y| < 1
   bool above = false, below = false;
@@ -365,6 +365,15 @@ TEST(IntegrateStreamSurface, BadSeedsAndParametersAreNamed)
   expect_invalid_argument(
       [&] { FAS::integrate_stream_surface(flow, seed, tm, FAS::parameters::time_line_step(nan)); },
       {"time_line_step", "nan"});
+  expect_invalid_argument(
+      [&] { FAS::integrate_stream_surface(flow, seed, tm, FAS::parameters::max_time(0.)); },
+      {"integrate_stream_surface", "max_time", "0"});
+  expect_invalid_argument(
+      [&] {
+        FAS::integrate_stream_surface(
+            flow, seed, tm, FAS::parameters::integration_direction(FAS::Integration_direction::BOTH));
+      },
+      {"integration_direction", "BOTH"});
   const FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>> unsteady({0.}, {flow});
   expect_invalid_argument(
       [&] {

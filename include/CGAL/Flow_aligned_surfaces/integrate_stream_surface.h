@@ -17,6 +17,7 @@
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTEGRATE_STREAM_SURFACE_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTEGRATE_STREAM_SURFACE_H
 
+#include <CGAL/Flow_aligned_surfaces/integrate_streamline.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Dormand_prince_integrator.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
@@ -49,7 +50,7 @@ namespace Flow_aligned_surfaces {
 /// \ingroup PkgFlowAlignedSurfacesRef
 /// Why `integrate_stream_surface()` stopped.
 enum class Stream_surface_termination {
-  MAX_INTEGRATION_TIME,     ///< the last time line is at `max_integration_time`
+  MAX_INTEGRATION_TIME, ///< the last time line is at `max_time` (or `max_length` with arc-length time lines)
   MAX_NUMBER_OF_TIME_LINES, ///< `max_number_of_time_lines` time lines were computed
   NO_PARTICLE_LEFT,         ///< every front piece left the domain, stagnated or was torn to single particles
   MAX_NUMBER_OF_VERTICES,   ///< the surface reached `max_number_of_vertices`
@@ -171,12 +172,7 @@ private:
 
 inline double checked_positive(double value, const char* name)
 {
-  if (!(value > 0) || !std::isfinite(value)) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "integrate_stream_surface: " << name << " is " << value << "; expected a finite positive number";
-    throw std::invalid_argument(os.str());
-  }
+  check_positive_finite("integrate_stream_surface", name, value);
   return value;
 }
 
@@ -193,8 +189,9 @@ class Stream_surface_front {
 public:
   struct Settings {
     double spacing, step, max_parameter, t0, tear_cosine, min_gap;
-    std::size_t max_time_lines, max_vertices;
+    std::size_t max_time_lines, max_vertices, max_steps;
     int direction;
+    Integration_tolerances tolerances;
   };
 
   Stream_surface_front(const FlowField& field, bool normalize, const Seed_curve& seed,
@@ -217,7 +214,8 @@ public:
         return finish(Stream_surface_termination::MAX_NUMBER_OF_TIME_LINES,
                       "max_number_of_time_lines reached");
       if (m_parameter >= m_s.max_parameter)
-        return finish(Stream_surface_termination::MAX_INTEGRATION_TIME, "max_integration_time reached");
+        return finish(Stream_surface_termination::MAX_INTEGRATION_TIME,
+                      m_field.normalize ? "max_length reached" : "max_time reached");
       if (m_report.number_of_vertices >= m_s.max_vertices || m_nodes.size() >= 2 * m_s.max_vertices)
         return finish(Stream_surface_termination::MAX_NUMBER_OF_VERTICES, "max_number_of_vertices reached");
       m_parameter = std::min(double(k) * m_s.step, m_s.max_parameter);
@@ -285,7 +283,7 @@ private:
   // does not get there.
   std::optional<Particle> release(double u)
   {
-    Integrator integrator(m_field, m_seed(u), m_s.t0, m_s.direction);
+    Integrator integrator(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances);
     if (!integrator.is_start_inside())
       return std::nullopt;
     Particle p{u, std::move(integrator)};
@@ -294,16 +292,13 @@ private:
     return p;
   }
 
-  // Advances `p` to the current time line; false if it leaves the domain, stagnates, or needs
-  // too many steps (every loop has a bound: integration steps per unit of τ).
+  // Advances `p` to the current time line; false if it leaves the domain, stagnates, or has
+  // taken max_number_of_steps steps since the seed (so every loop has a bound).
   bool advance(Particle& p)
   {
-    constexpr std::size_t max_steps_per_time_line = 100000;
-    const std::size_t max_steps =
-        max_steps_per_time_line * (1 + static_cast<std::size_t>(std::ceil(m_parameter / m_s.step)));
     Integrator& it = p.integrator;
-    for (std::size_t steps = 0; it.parameter() < m_parameter; ++steps) {
-      if (p.exhausted || steps >= max_steps)
+    while (it.parameter() < m_parameter) {
+      if (p.exhausted || it.number_of_accepted_steps() >= m_s.max_steps)
         return false;
       const Step_result r = it.step();
       if (r == Step_result::LEFT_DOMAIN)
@@ -330,7 +325,7 @@ private:
     std::size_t inside = 0, moving = 0;
     for (std::size_t i = 0; i <= n; ++i) {
       const double u = i == n ? m_seed.length() : m_seed.length() * double(i) / double(n);
-      Integrator integrator(m_field, m_seed(u), m_s.t0, m_s.direction);
+      Integrator integrator(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances);
       Particle p{u, std::move(integrator)};
       bool usable = p.integrator.is_start_inside();
       if (usable) {
@@ -504,23 +499,23 @@ polyline with an advancing front, and adds it to `tm_out` as a triangle mesh.
 The surface \f$ x(u, \tau) \f$ solves
 \f$ \partial_\tau x = \sigma v(x, t_0 + \sigma \tau) \f$ with \f$ x(u, 0) = c(u) \f$, the seed
 polyline parametrized by its arc length \f$ u \in [0, L] \f$, \f$ \sigma = -1 \f$ with
-`integrate_backward(true)`.  The front, a polyline of particles resampled from the seed at
+`integration_direction(Integration_direction::BACKWARD)`.  The front, a polyline of particles resampled from the seed at
 spacing at most \f$ h \f$, advances in lock-step of \f$ \tau \f$ by the time-line step
 \f$ \Delta \f$; each particle is integrated by the embedded Runge–Kutta pair of Dormand and
-Prince, 5(4), with relative tolerance \f$ 10^{-8} \f$ and absolute tolerance \f$ 10^{-10} \f$,
-and evaluated on the time line by dense output.  Between consecutive time lines:
+Prince, 5(4) (`relative_tolerance`, `absolute_tolerance`, as `integrate_streamline()`), and
+evaluated on the time line by dense output.  Between consecutive time lines:
 - where two neighbours are farther than \f$ 2h \f$ apart, or farther than \f$ h \f$ with flow
   directions more than `tear_angle` apart, a particle integrated anew from
   \f$ c((u_i + u_{i+1})/2) \f$ (not interpolated on the front) is inserted, recursively;
 - where two neighbours are closer than \f$ h/2 \f$, one is removed (not the end of a piece);
-- the front tears (its pieces continue independently) where a particle leaves the domain or
-  stagnates, where a particle re-integrated for an insertion does, and where the refinement
+- the front tears (its pieces continue independently) where a particle leaves the domain,
+  stagnates or has taken `max_number_of_steps` steps, where a particle re-integrated for an insertion does, and where the refinement
   would need seed parameters closer than \f$ 10^{-9} L \f$ (neighbours separating at an
   obstacle or a critical point), or two neighbours closer than \f$ h \f$ have flow directions
   more than `tear_angle` apart;
 - the strip is triangulated by the shorter-diagonal rule (Hultquist).
 
-Integration stops at `max_integration_time`, after `max_number_of_time_lines`, at
+Integration stops at `max_time` (`max_length` with arc-length time lines), after `max_number_of_time_lines`, at
 `max_number_of_vertices`, or when no piece of two particles is left.  A particle that leaves the
 domain ends on the last time line it reached: the surface stops up to \f$ \Delta \f$ short of
 the boundary.  A closed seed (first point = last point) gives a surface with a seam.
@@ -555,8 +550,14 @@ Vertices and faces are added to `tm_out`; what it held before is kept.
     \cgalParamType{`double`}
     \cgalParamDefault{\f$ h \f$ over the median speed at the seed points (with arc-length time lines: \f$ h \f$)}
   \cgalParamNEnd
-  \cgalParamNBegin{max_integration_time}
-    \cgalParamDescription{`FAS::parameters::max_integration_time()`: the largest \f$ \tau \f$}
+  \cgalParamNBegin{max_time}
+    \cgalParamDescription{`FAS::parameters::max_time()`: the largest \f$ \tau \f$ (time time lines)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{no limit}
+  \cgalParamNEnd
+  \cgalParamNBegin{max_length}
+    \cgalParamDescription{`FAS::parameters::max_length()`: the largest \f$ \tau \f$ with arc-length time
+      lines (ignored otherwise)}
     \cgalParamType{`double`}
     \cgalParamDefault{no limit}
   \cgalParamNEnd
@@ -571,10 +572,15 @@ Vertices and faces are added to `tm_out`; what it held before is kept.
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
-  \cgalParamNBegin{integrate_backward}
-    \cgalParamDescription{`FAS::parameters::integrate_backward()`: \f$ \sigma = -1 \f$}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
+  \cgalParamNBegin{integration_direction}
+    \cgalParamDescription{`FAS::parameters::integration_direction()`: `FORWARD` or `BACKWARD`
+      (\f$ \sigma = -1 \f$); `BOTH` is refused}
+    \cgalParamType{`Integration_direction`}
+    \cgalParamDefault{`Integration_direction::FORWARD`}
+  \cgalParamNEnd
+  \cgalParamNBegin{relative_tolerance, absolute_tolerance, max_number_of_steps}
+    \cgalParamDescription{the integrator's, per particle, as in `integrate_streamline()`}
+    \cgalParamDefault{`1e-8`, `1e-10`, `100000`}
   \cgalParamNEnd
   \cgalParamNBegin{start_time}
     \cgalParamDescription{`FAS::parameters::start_time()`: \f$ t_0 \f$ (unsteady fields)}
@@ -614,7 +620,7 @@ Vertices and faces are added to `tm_out`; what it held before is kept.
 
 \throws std::invalid_argument naming the input if `seed_polyline` has fewer than two points, a
   non-finite point or two equal consecutive points, if a parameter is not positive, or if
-  `arc_length_time_lines(true)` is given with an unsteady field.
+  `arc_length_time_lines(true)` is given with an unsteady field, or the direction is `BOTH`.
 
 \sa `extract_iso_contours()` for seed curves, `normalized_flux()` to check the result
 */
@@ -638,10 +644,14 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
       internal::checked_positive(choose_parameter(get_parameter(np, internal_np::front_spacing_t()),
                                                   seed.length() / double(seed.number_of_segments())),
                                  "front_spacing");
-  const double max_parameter = choose_parameter(get_parameter(np, internal_np::max_integration_time_t()),
-                                                std::numeric_limits<double>::infinity());
-  if (!(max_parameter > 0))
-    internal::checked_positive(max_parameter, "max_integration_time");
+  // The stream lines' own options: tolerances, max_time / max_length, steps, direction.
+  const internal::Streamline_options lines =
+      internal::read_streamline_options(np, "integrate_stream_surface");
+  if (lines.direction == Integration_direction::BOTH)
+    throw std::invalid_argument(
+        "integrate_stream_surface: integration_direction is BOTH; expected FORWARD or "
+        "BACKWARD (integrate the two halves with two calls)");
+  const double max_parameter = arc_length ? lines.max_length : lines.max_time;
   const double t0 = choose_parameter(get_parameter(np, internal_np::start_time_t()), 0.);
   if (!std::isfinite(t0))
     internal::checked_positive(t0, "start_time");
@@ -651,8 +661,7 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
       double(
           choose_parameter(get_parameter(np, internal_np::max_number_of_vertices_t()), std::size_t(1000000))),
       "max_number_of_vertices"));
-  const int direction =
-      choose_parameter(get_parameter(np, internal_np::integrate_backward_t()), false) ? -1 : 1;
+  const int direction = lines.direction == Integration_direction::BACKWARD ? -1 : 1;
 
   double step;
   if constexpr (!parameters::is_default_parameter<NamedParameters, internal_np::time_line_step_t>::value)
@@ -694,7 +703,9 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
       1e-9 * seed.length(),
       choose_parameter(get_parameter(np, internal_np::max_number_of_time_lines_t()), std::size_t(100)),
       max_vertices,
-      direction};
+      lines.max_number_of_steps,
+      direction,
+      lines.tolerances};
   Front front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map);
   return front.run(std::move(report));
 }

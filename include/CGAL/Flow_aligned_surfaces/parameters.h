@@ -53,9 +53,7 @@ CGAL_FAS_DECLARE_TAG(output_length_step)
 CGAL_FAS_DECLARE_TAG(front_spacing)
 CGAL_FAS_DECLARE_TAG(time_line_step)
 CGAL_FAS_DECLARE_TAG(max_number_of_time_lines)
-CGAL_FAS_DECLARE_TAG(max_integration_time)
 CGAL_FAS_DECLARE_TAG(arc_length_time_lines)
-CGAL_FAS_DECLARE_TAG(integrate_backward)
 CGAL_FAS_DECLARE_TAG(start_time)
 CGAL_FAS_DECLARE_TAG(tear_angle)
 CGAL_FAS_DECLARE_TAG(max_number_of_vertices)
@@ -171,23 +169,17 @@ CGAL_FAS_NAMED_PARAMETER(output_length_step, double)
 CGAL_FAS_NAMED_PARAMETER(front_spacing, double)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// Δ, the integration time (or arc length, with `arc_length_time_lines(true)`) between
-/// consecutive time lines of a stream surface.  Default: h divided by the median speed on the
+/// consecutive time lines of a stream surface; its last time line is at `max_time()`
+/// (`max_length()`).  Default: h divided by the median speed on the
 /// seed (time lines about h apart), or h with `arc_length_time_lines(true)`.
 CGAL_FAS_NAMED_PARAMETER(time_line_step, double)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
-/// The largest number of time lines after the seed curve.  Default: `100`.
+/// The largest number of time lines of a stream surface after its seed curve.  Default: `100`.
 CGAL_FAS_NAMED_PARAMETER(max_number_of_time_lines, std::size_t)
-/// \ingroup PkgFlowAlignedSurfacesNamedParameters
-/// The integration time (or arc length, with `arc_length_time_lines(true)`) of the last time
-/// line of a stream surface.  Default: no limit.
-CGAL_FAS_NAMED_PARAMETER(max_integration_time, double)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// Whether the particles of a stream surface advance in lock-step of arc length (the field is
 /// normalized) instead of integration time.  Steady fields only.  Default: `false`.
 CGAL_FAS_NAMED_PARAMETER(arc_length_time_lines, bool)
-/// \ingroup PkgFlowAlignedSurfacesNamedParameters
-/// Whether a stream surface is integrated backward (along \f$ -v \f$).  Default: `false`.
-CGAL_FAS_NAMED_PARAMETER(integrate_backward, bool)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// The time \f$ t_0 \f$ at which the seed of a path surface is released in an unsteady field.
 /// Default: `0`.
