@@ -72,8 +72,8 @@ struct Stream_surface_report {
   std::size_t number_of_tears = 0;
   /// particles that left the domain, stagnated or could not be integrated
   std::size_t number_of_lost_particles = 0;
-  /// triangles that `CGAL::Euler::add_face()` refused (0 unless the output mesh was not empty
-  /// and shares vertices; kept for honesty)
+  /// triangles that `CGAL::Euler::add_face()` refused because they would make the mesh
+  /// non-manifold (the strips are built so that this does not happen: 0 in every test)
   std::size_t number_of_refused_faces = 0;
   std::size_t number_of_vertices = 0; ///< vertices added to the output mesh
   std::size_t number_of_faces = 0;    ///< triangles added to the output mesh
