@@ -13,9 +13,9 @@
 #include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/align_to_flow.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
+#include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
-
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
@@ -28,6 +28,7 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <string>
@@ -106,13 +107,16 @@ inline std::vector<double> vertex_velocities(const Mesh& tm, const Flow& flow)
   return values;
 }
 
-/// Writes `tm` to `path` as VTP, with the velocity at the vertices and the per-face flux.
-inline bool write_surface_VTP(const std::filesystem::path& path, const Mesh& tm, const Flow& flow)
+/// Writes `tm` to `path` as VTP, with the velocity at the vertices, the per-face flux and the
+/// `extra` vertex arrays.
+inline bool write_surface_VTP(const std::filesystem::path& path, const Mesh& tm, const Flow& flow,
+                              std::vector<FAS::IO::Data_array> extra = {})
 {
   std::string error;
-  const bool vtp = FAS::IO::write_VTP(path.string(), tm, {{"velocity", 3, vertex_velocities(tm, flow)}},
-                                      {{"normalized_flux", 1, face_fluxes(tm, flow)}},
-                                      CGAL::parameters::default_values(), &error);
+  extra.insert(extra.begin(), {"velocity", 3, vertex_velocities(tm, flow)});
+  const bool vtp =
+      FAS::IO::write_VTP(path.string(), tm, extra, {{"normalized_flux", 1, face_fluxes(tm, flow)}},
+                         CGAL::parameters::default_values(), &error);
   if (!vtp)
     std::cerr << "error: " << error << "\n";
   return vtp;
@@ -217,6 +221,33 @@ inline FAS::Alignment_report make_orthogonal_disk(Mesh& tm, const FAS::Point_sou
   std::cout << "aligned: flux " << report.normalized_flux << " after " << report.number_of_iterations
             << " iterations\n";
   return report;
+}
+
+/// Seed curves that cross the flow, the way of the paper's Figure 4 (top): a disk patch is
+/// aligned tangentially to the flow (a piece of stream surface), parametrized tangentially, and
+/// the iso-contours of its r (along the flow) are the seed curves.
+struct Tangential_seed_curves {
+  Mesh surface;                           ///< the aligned patch
+  FAS::Alignment_report alignment;        ///< how well it is aligned
+  std::vector<std::vector<Point>> curves; ///< the iso-contours of r
+};
+
+/// The seed curves of a disk of `faces` triangles at `center` with `normal` and `radius`, aligned
+/// tangentially to `flow`: `number_of_curves` evenly spaced iso-contours of r.
+inline Tangential_seed_curves make_tangential_seed_curves(const Flow& flow, const Point& center,
+                                                          const Vector& normal, double radius,
+                                                          std::size_t faces, std::size_t number_of_curves)
+{
+  Tangential_seed_curves seeds;
+  Mesh& tm = seeds.surface;
+  FAS::make_disk_patch(tm, center, normal, radius, faces);
+  seeds.alignment = FAS::align_to_flow(tm, flow, FAS::Alignment::TANGENTIAL);
+  auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
+  auto s = tm.add_property_map<Mesh::Vertex_index, double>("v:s", 0).first;
+  FAS::parametrize_tangential(tm, flow, r, s);
+  FAS::extract_iso_contours(tm, r, FAS::evenly_spaced_iso_values(tm, r, number_of_curves),
+                            std::back_inserter(seeds.curves));
+  return seeds;
 }
 
 } // namespace examples

@@ -25,6 +25,8 @@
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
 #include <CGAL/Flow_aligned_surfaces/seeds.h>
 
+#include "example_support.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -120,19 +122,13 @@ int main(int argc, char** argv)
   // 4. A tangential surface (a stream surface of the Burgers vortex): the iso-contours of its
   // tangential parametrization's r cross the flow within the surface.
   const FAS::Burgers_vortex<Kernel> vortex;
-  Mesh stream_surface;
-  FAS::make_disk_patch(stream_surface, Point(1.0, 0.0, 0.5), Vector(0.0, 1.0, 0.3), 0.5, faces);
-  const FAS::Alignment_report tangential =
-      FAS::align_to_flow(stream_surface, vortex, FAS::Alignment::TANGENTIAL);
-  auto tr = stream_surface.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
-  auto ts = stream_surface.add_property_map<Mesh::Vertex_index, double>("v:s", 0).first;
-  FAS::parametrize_tangential(stream_surface, vortex, tr, ts);
-  std::vector<Polyline> crossing_curves;
-  FAS::extract_iso_contours(stream_surface, tr, FAS::evenly_spaced_iso_values(stream_surface, tr, 5),
-                            std::back_inserter(crossing_curves));
+  const examples::Tangential_seed_curves tangential = examples::make_tangential_seed_curves(
+      vortex, Point(1.0, 0.0, 0.5), Vector(0.0, 1.0, 0.3), 0.5, faces, 5);
+  const std::vector<Polyline>& crossing_curves = tangential.curves;
   const double crossing_cosine = mean_cosine_to_flow(vortex, {&crossing_curves});
-  std::cout << "stream surface: flux " << tangential.normalized_flux << ", " << crossing_curves.size()
-            << " seed curves, mean |cos(segment, flow)| " << crossing_cosine << "\n";
+  std::cout << "stream surface: flux " << tangential.alignment.normalized_flux << ", "
+            << crossing_curves.size() << " seed curves, mean |cos(segment, flow)| " << crossing_cosine
+            << "\n";
 
   std::error_code ec;
   std::filesystem::create_directories(out, ec);
@@ -158,7 +154,7 @@ int main(int argc, char** argv)
             << "/surface.vtp, seed_curves.csv, circular_seeds.csv, seed_points.csv, "
                "stream_surface_seed_curves.csv\n";
   return report.normalized_flux >= 0.99 && !seed_curves.empty() && circular_seeds.size() == 4 &&
-                 cosine < 0.05 && tangential.normalized_flux <= 0.01 && !crossing_curves.empty() &&
+                 cosine < 0.05 && tangential.alignment.normalized_flux <= 0.01 && !crossing_curves.empty() &&
                  crossing_cosine < 0.1
              ? 0
              : 1;

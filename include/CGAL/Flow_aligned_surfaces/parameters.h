@@ -49,6 +49,16 @@ CGAL_FAS_DECLARE_TAG(max_number_of_steps)
 CGAL_FAS_DECLARE_TAG(integration_direction)
 CGAL_FAS_DECLARE_TAG(output_time_step)
 CGAL_FAS_DECLARE_TAG(output_length_step)
+// integrate_stream_surface()
+CGAL_FAS_DECLARE_TAG(front_spacing)
+CGAL_FAS_DECLARE_TAG(time_line_step)
+CGAL_FAS_DECLARE_TAG(max_number_of_time_lines)
+CGAL_FAS_DECLARE_TAG(arc_length_time_lines)
+CGAL_FAS_DECLARE_TAG(start_time)
+CGAL_FAS_DECLARE_TAG(tear_angle)
+CGAL_FAS_DECLARE_TAG(max_number_of_vertices)
+CGAL_FAS_DECLARE_TAG(seed_parameter_map)
+CGAL_FAS_DECLARE_TAG(integration_time_map)
 #undef CGAL_FAS_DECLARE_TAG
 } // namespace internal_np
 /// \endcond
@@ -151,6 +161,38 @@ CGAL_FAS_NAMED_PARAMETER(output_time_step, double)
 /// integrator's steps.  Default: the steps.
 CGAL_FAS_NAMED_PARAMETER(output_length_step, double)
 
+// Stream surfaces (integrate_stream_surface()).
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// h, the requested distance between neighbouring particles of a stream surface's front: a
+/// particle is inserted where neighbours are farther than 2h apart, one is removed where they
+/// are closer than h/2.  Default: the mean segment length of the seed polyline.
+CGAL_FAS_NAMED_PARAMETER(front_spacing, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Δ, the integration time (or arc length, with `arc_length_time_lines(true)`) between
+/// consecutive time lines of a stream surface; its last time line is at `max_time()`
+/// (`max_length()`).  Default: h divided by the median speed on the
+/// seed (time lines about h apart), or h with `arc_length_time_lines(true)`.
+CGAL_FAS_NAMED_PARAMETER(time_line_step, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The largest number of time lines of a stream surface after its seed curve.  Default: `100`.
+CGAL_FAS_NAMED_PARAMETER(max_number_of_time_lines, std::size_t)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Whether the particles of a stream surface advance in lock-step of arc length (the field is
+/// normalized) instead of integration time.  Steady fields only.  Default: `false`.
+CGAL_FAS_NAMED_PARAMETER(arc_length_time_lines, bool)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The time \f$ t_0 \f$ at which the seed of a path surface is released in an unsteady field.
+/// Default: `0`.
+CGAL_FAS_NAMED_PARAMETER(start_time, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The angle (radians) between the flow directions at neighbouring front particles above which
+/// the front is refined, and torn where it cannot be refined.  Default: `π/4`.
+CGAL_FAS_NAMED_PARAMETER(tear_angle, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// The largest number of vertices a stream surface may have (a bound on memory and time).
+/// Default: `1000000`.
+CGAL_FAS_NAMED_PARAMETER(max_number_of_vertices, std::size_t)
+
 #undef CGAL_FAS_NAMED_PARAMETER
 
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
@@ -208,6 +250,31 @@ integration_direction(const Direction& direction, const NamedParameters& np = Na
 {
   return CGAL::Named_function_parameters<Direction, internal_np::integration_direction_t, NamedParameters>(
       direction, np);
+}
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// `integrate_stream_surface()` writes the seed parameter \f$ u \f$ (arc length along the seed
+/// polyline from its first point) of every vertex it adds through this map.  Type: a model of
+/// `WritablePropertyMap` with the mesh's `vertex_descriptor` as key and `double` as value.
+/// Default: not written.
+template <typename VertexDoubleMap, typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<VertexDoubleMap, internal_np::seed_parameter_map_t, NamedParameters>
+seed_parameter_map(const VertexDoubleMap& map, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<VertexDoubleMap, internal_np::seed_parameter_map_t, NamedParameters>(
+      map, np);
+}
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// `integrate_stream_surface()` writes the time-line parameter \f$ \tau \f$ (integration time
+/// since the seed, or arc length with `arc_length_time_lines(true)`) of every vertex it adds
+/// through this map.  Type: as `seed_parameter_map()`.  Default: not written.
+template <typename VertexDoubleMap, typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<VertexDoubleMap, internal_np::integration_time_map_t, NamedParameters>
+integration_time_map(const VertexDoubleMap& map, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<VertexDoubleMap, internal_np::integration_time_map_t,
+                                         NamedParameters>(map, np);
 }
 
 } // namespace parameters

@@ -1,0 +1,716 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Stream surfaces and path surfaces by an advancing front (Hultquist 1992, with the refinements
+// of Garth et al. 2004/2008): the surface x(u, τ) with
+//
+//   ∂x/∂τ (u, τ) = σ v(x(u, τ), t0 + σ τ),   x(u, 0) = c(u),   u in [0, L], τ ≥ 0, σ = ±1,
+//
+// where c is the seed polyline parametrized by arc length u, is sampled on the time lines
+// τ_k = k Δ (k = 0, 1, ...) at particles u_0 < u_1 < ... whose neighbours stay between h/2 and
+// 2h apart: a particle re-integrated from c((u_i + u_{i+1}) / 2) is inserted where neighbours
+// diverge, one is removed where they converge, and the front tears where it cannot be refined
+// (a particle leaves the domain or stagnates, neighbours separate at a critical point or an
+// obstacle).  The strip between two time lines is triangulated by the shorter-diagonal rule.
+// With arc-length time lines v is replaced by v / |v| (steady fields), so τ is the arc length.
+
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTEGRATE_STREAM_SURFACE_H
+#define CGAL_FLOW_ALIGNED_SURFACES_INTEGRATE_STREAM_SURFACE_H
+
+#include <CGAL/Flow_aligned_surfaces/integrate_streamline.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Dormand_prince_integrator.h>
+#include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
+#include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Flow_aligned_surfaces {
+
+/// \ingroup PkgFlowAlignedSurfacesRef
+/// Why `integrate_stream_surface()` stopped.
+enum class Stream_surface_termination {
+  MAX_INTEGRATION_TIME, ///< the last time line is at `max_time` (or `max_length` with arc-length time lines)
+  MAX_NUMBER_OF_TIME_LINES, ///< `max_number_of_time_lines` time lines were computed
+  NO_PARTICLE_LEFT,         ///< every front piece left the domain, stagnated or was torn to single particles
+  MAX_NUMBER_OF_VERTICES,   ///< the surface reached `max_number_of_vertices`
+  SEED_OUTSIDE_DOMAIN,      ///< no point of the seed is inside the field's domain: empty result
+  SEED_AT_REST              ///< the field is zero at every point of the seed inside the domain: empty result
+};
+
+/// \ingroup PkgFlowAlignedSurfacesRef
+/// What `integrate_stream_surface()` did.
+struct Stream_surface_report {
+  /// the number of time lines computed after the seed curve
+  std::size_t number_of_time_lines = 0;
+  /// particles inserted (re-integrated from the seed) where neighbours diverged
+  std::size_t number_of_inserted_particles = 0;
+  /// particles removed where neighbours converged
+  std::size_t number_of_removed_particles = 0;
+  /// places where the front was torn into pieces (not counting particles that left the domain
+  /// at the end of a piece)
+  std::size_t number_of_tears = 0;
+  /// particles that left the domain, stagnated or could not be integrated
+  std::size_t number_of_lost_particles = 0;
+  /// triangles that `CGAL::Euler::add_face()` refused because they would make the mesh
+  /// non-manifold (the strips are built so that this does not happen: 0 in every test)
+  std::size_t number_of_refused_faces = 0;
+  std::size_t number_of_vertices = 0; ///< vertices added to the output mesh
+  std::size_t number_of_faces = 0;    ///< triangles added to the output mesh
+  /// the time-line parameter τ of the last time line
+  double final_parameter = 0;
+  /// the seed polyline's length L (the range of the seed parameter is [0, L])
+  double seed_length = 0;
+  /// the front spacing h actually used
+  double front_spacing = 0;
+  /// the time-line step Δ actually used
+  double time_line_step = 0;
+  /// why the integration stopped
+  Stream_surface_termination termination = Stream_surface_termination::NO_PARTICLE_LEFT;
+  /// the reason in words
+  std::string message;
+};
+
+namespace internal {
+
+// The field seen by the integrator: std::optional<Eigen::Vector3d>(x, t); zero at critical
+// points (the integrator stagnates there), std::nullopt outside the domain or for NaN vectors.
+template <class FlowField, class Point_3>
+struct Front_field {
+  const FlowField* field;
+  bool normalize;
+
+  static constexpr bool is_unsteady = std::is_invocable_v<const FlowField&, const Point_3&, double>;
+
+  std::optional<Eigen::Vector3d> operator()(const Eigen::Vector3d& x, double t) const
+  {
+    using FT = typename CGAL::Kernel_traits<Point_3>::Kernel::FT;
+    const Point_3 p{FT(x[0]), FT(x[1]), FT(x[2])};
+    Flow_sample s;
+    if constexpr (is_unsteady)
+      s = sample_flow([&](const Point_3& q) { return (*field)(q, t); }, p);
+    else
+      s = sample_flow(*field, p);
+    if (s.kind == Sample_kind::OUTSIDE || s.kind == Sample_kind::INVALID)
+      return std::nullopt;
+    if (s.kind == Sample_kind::ZERO)
+      return Eigen::Vector3d::Zero();
+    return normalize ? s.direction : s.velocity;
+  }
+};
+
+// The seed polyline with its arc-length parametrization c(u).
+class Seed_curve {
+public:
+  template <class PointRange>
+  explicit Seed_curve(const PointRange& polyline)
+  {
+    std::size_t i = 0;
+    for (const auto& p : polyline) {
+      const Eigen::Vector3d x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      if (!x.allFinite())
+        fail("point " + std::to_string(i) + " is " + printable(x) + "; expected finite coordinates");
+      if (!m_points.empty() && x == m_points.back())
+        fail("points " + std::to_string(i - 1) + " and " + std::to_string(i) + " are both " + printable(x) +
+             "; expected distinct consecutive points");
+      m_arc.push_back(m_points.empty() ? 0. : m_arc.back() + (x - m_points.back()).norm());
+      m_points.push_back(x);
+      ++i;
+    }
+    if (m_points.size() < 2)
+      fail("has " + std::to_string(m_points.size()) + " point(s); expected at least 2");
+  }
+
+  double length() const { return m_arc.back(); }
+  std::size_t number_of_segments() const { return m_points.size() - 1; }
+
+  Eigen::Vector3d operator()(double u) const
+  {
+    const std::size_t j = std::clamp<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(m_arc.begin(), m_arc.end(), u) - m_arc.begin()), 1,
+        m_points.size() - 1);
+    const double s = std::clamp((u - m_arc[j - 1]) / (m_arc[j] - m_arc[j - 1]), 0., 1.);
+    return (1. - s) * m_points[j - 1] + s * m_points[j];
+  }
+
+private:
+  static std::string printable(const Eigen::Vector3d& x)
+  {
+    std::ostringstream os;
+    os.precision(17);
+    os << "(" << x[0] << ", " << x[1] << ", " << x[2] << ")";
+    return os.str();
+  }
+  [[noreturn]] static void fail(const std::string& what)
+  {
+    throw std::invalid_argument("integrate_stream_surface: seed_polyline " + what);
+  }
+
+  std::vector<Eigen::Vector3d> m_points;
+  std::vector<double> m_arc;
+};
+
+inline double checked_positive(double value, const char* name)
+{
+  check_positive_finite("integrate_stream_surface", name, value);
+  return value;
+}
+
+// The advancing front.  Nodes are the samples of the time lines; a node becomes a vertex of the
+// output mesh only when a triangle uses it, so particles lost at once leave no isolated vertex.
+template <class FlowField, class Point_3, class TriangleMesh, class VPM, class UMap, class TMap>
+class Stream_surface_front {
+  using Field = Front_field<FlowField, Point_3>;
+  using Integrator = Dormand_prince_integrator<Field>;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Mesh_point = typename boost::property_traits<VPM>::value_type;
+  using Mesh_FT = typename CGAL::Kernel_traits<Mesh_point>::Kernel::FT;
+
+public:
+  struct Settings {
+    double spacing, step, max_parameter, t0, tear_cosine, min_gap;
+    std::size_t max_time_lines, max_vertices, max_steps;
+    int direction;
+    Integration_tolerances tolerances;
+  };
+
+  Stream_surface_front(const FlowField& field, bool normalize, const Seed_curve& seed,
+                       const Settings& settings, TriangleMesh& tm, VPM vpm, UMap u_map, TMap t_map)
+      : m_field{&field, normalize}, m_seed(seed), m_s(settings), m_tm(tm), m_vpm(vpm), m_u_map(u_map),
+        m_t_map(t_map)
+  {
+  }
+
+  Stream_surface_report run(Stream_surface_report report)
+  {
+    m_report = std::move(report);
+    seed_front();
+    if (m_pieces.empty())
+      return m_report;
+    for (std::size_t k = 1;; ++k) {
+      if (m_pieces.empty())
+        return finish(Stream_surface_termination::NO_PARTICLE_LEFT, "no particle left");
+      if (k > m_s.max_time_lines)
+        return finish(Stream_surface_termination::MAX_NUMBER_OF_TIME_LINES,
+                      "max_number_of_time_lines reached");
+      if (m_parameter >= m_s.max_parameter)
+        return finish(Stream_surface_termination::MAX_INTEGRATION_TIME,
+                      m_field.normalize ? "max_length reached" : "max_time reached");
+      if (m_report.number_of_vertices >= m_s.max_vertices || m_nodes.size() >= 2 * m_s.max_vertices)
+        return finish(Stream_surface_termination::MAX_NUMBER_OF_VERTICES, "max_number_of_vertices reached");
+      m_parameter = std::min(double(k) * m_s.step, m_s.max_parameter);
+      std::vector<std::vector<Particle>> next;
+      for (std::vector<Particle>& piece : m_pieces)
+        advance_piece(piece, next);
+      m_pieces = std::move(next);
+      m_report.number_of_time_lines = k;
+      m_report.final_parameter = m_parameter;
+    }
+  }
+
+private:
+  struct Particle {
+    double u;
+    Integrator integrator;
+    bool exhausted = false; // the integrator left the domain on its last step
+    std::size_t node = 0;   // the particle's sample on the current time line
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero(); // of the flow at x
+  };
+  struct Node {
+    Eigen::Vector3d x;
+    double u, tau;
+    std::optional<vertex_descriptor> vertex;
+  };
+
+  const Stream_surface_report& finish(Stream_surface_termination why, const char* message)
+  {
+    m_report.termination = why;
+    m_report.message = message;
+    return m_report;
+  }
+
+  std::size_t add_node(const Eigen::Vector3d& x, double u)
+  {
+    m_nodes.push_back(Node{x, u, m_parameter, std::nullopt});
+    return m_nodes.size() - 1;
+  }
+
+  vertex_descriptor vertex(std::size_t n)
+  {
+    Node& node = m_nodes[n];
+    if (!node.vertex) {
+      const vertex_descriptor v = add_vertex(m_tm);
+      put(m_vpm, v, Mesh_point(Mesh_FT(node.x[0]), Mesh_FT(node.x[1]), Mesh_FT(node.x[2])));
+      put(m_u_map, v, node.u);
+      put(m_t_map, v, node.tau);
+      node.vertex = v;
+      ++m_report.number_of_vertices;
+    }
+    return *node.vertex;
+  }
+
+  void add_triangle(std::size_t a, std::size_t b, std::size_t c)
+  {
+    const std::array<vertex_descriptor, 3> v = {vertex(a), vertex(b), vertex(c)};
+    if (CGAL::Euler::add_face(v, m_tm) == boost::graph_traits<TriangleMesh>::null_face())
+      ++m_report.number_of_refused_faces;
+    else
+      ++m_report.number_of_faces;
+  }
+
+  // A particle released from the seed at c(u), advanced to the current time line; nothing if it
+  // does not get there.
+  std::optional<Particle> release(double u)
+  {
+    Integrator integrator(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances);
+    if (!integrator.is_start_inside())
+      return std::nullopt;
+    Particle p{u, std::move(integrator)};
+    if (!advance(p))
+      return std::nullopt;
+    return p;
+  }
+
+  // Advances `p` to the current time line; false if it leaves the domain, stagnates, or has
+  // taken max_number_of_steps steps since the seed (so every loop has a bound).
+  bool advance(Particle& p)
+  {
+    Integrator& it = p.integrator;
+    while (it.parameter() < m_parameter) {
+      if (p.exhausted || it.number_of_accepted_steps() >= m_s.max_steps)
+        return false;
+      const Step_result r = it.step();
+      if (r == Step_result::LEFT_DOMAIN)
+        p.exhausted = true;
+      else if (r != Step_result::ACCEPTED)
+        return false;
+    }
+    p.x = it.dense_output(m_parameter);
+    const std::optional<Eigen::Vector3d> v = m_field(p.x, m_s.t0 + m_s.direction * m_parameter);
+    if (!v)
+      return false;
+    const double speed = v->norm();
+    p.direction = speed > 0 ? Eigen::Vector3d(*v / speed) : Eigen::Vector3d::Zero();
+    return speed > 0;
+  }
+
+  void seed_front()
+  {
+    // Resample the seed at spacing at most h; runs of seed points inside the domain and not at
+    // rest make the first front pieces.
+    const std::size_t n = static_cast<std::size_t>(
+        std::min(std::ceil(m_seed.length() / m_s.spacing), double(m_s.max_vertices)));
+    std::vector<Particle> piece;
+    std::size_t inside = 0, moving = 0;
+    for (std::size_t i = 0; i <= n; ++i) {
+      const double u = i == n ? m_seed.length() : m_seed.length() * double(i) / double(n);
+      Integrator integrator(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances);
+      Particle p{u, std::move(integrator)};
+      bool usable = p.integrator.is_start_inside();
+      if (usable) {
+        ++inside;
+        usable = advance(p); // τ = 0: the flow direction at the seed point
+        moving += usable ? 1 : 0;
+      }
+      if (usable) {
+        p.node = add_node(p.x, u);
+        piece.push_back(std::move(p));
+      }
+      else if (!piece.empty()) {
+        m_pieces.push_back(std::move(piece));
+        piece.clear();
+      }
+    }
+    if (!piece.empty())
+      m_pieces.push_back(std::move(piece));
+    m_report.number_of_lost_particles = (n + 1) - moving;
+    if (inside == 0) {
+      m_pieces.clear();
+      finish(Stream_surface_termination::SEED_OUTSIDE_DOMAIN,
+             "every point of the seed is outside the domain");
+    }
+    else if (moving == 0) {
+      m_pieces.clear();
+      finish(Stream_surface_termination::SEED_AT_REST,
+             "the field is zero at every point of the seed inside the domain");
+    }
+  }
+
+  double cosine(const Particle& a, const Particle& b) const { return a.direction.dot(b.direction); }
+
+  // Appends `b` after the last particle of `out.back()`, inserting re-integrated particles
+  // while the gap is too wide or the flow turns too much between them, and tearing where that
+  // is not possible.  The recursion depth is bounded by log2(2h / min_gap).
+  void connect(std::vector<std::vector<Particle>>& out, Particle&& b)
+  {
+    const Particle& a = out.back().back();
+    const double d = (b.x - a.x).norm();
+    const bool wide = d > 2 * m_s.spacing;
+    const bool turning = cosine(a, b) < m_s.tear_cosine;
+    if (!wide && !turning) {
+      out.back().push_back(std::move(b));
+      return;
+    }
+    const bool refinable =
+        b.u - a.u > m_s.min_gap && (wide || d > m_s.spacing) && m_nodes.size() < 2 * m_s.max_vertices;
+    std::optional<Particle> m = refinable ? release(0.5 * (a.u + b.u)) : std::nullopt;
+    if (refinable && !m)
+      ++m_report.number_of_lost_particles;
+    if (!m) {
+      ++m_report.number_of_tears;
+      out.emplace_back();
+      out.back().push_back(std::move(b));
+      return;
+    }
+    ++m_report.number_of_inserted_particles;
+    connect(out, std::move(*m));
+    connect(out, std::move(b));
+  }
+
+  // Removes particles closer than h/2 to their predecessor (an interior one of the two).
+  void remove_converging(std::vector<Particle>& run)
+  {
+    for (std::size_t i = 0; i + 1 < run.size();) {
+      if ((run[i + 1].x - run[i].x).norm() >= 0.5 * m_s.spacing) {
+        ++i;
+        continue;
+      }
+      const std::size_t victim = (i + 2 < run.size() || i == 0) ? i + 1 : i;
+      run.erase(run.begin() + std::ptrdiff_t(victim));
+      ++m_report.number_of_removed_particles;
+      if (victim == i && i > 0)
+        --i;
+    }
+  }
+
+  // The strip between the old time line `old_chain` and the new one `new_chain` (nodes in order
+  // of u), by the shorter-diagonal rule.
+  void zip(const std::vector<std::size_t>& o, const std::vector<std::size_t>& n)
+  {
+    if (o.empty() || n.empty() || o.size() + n.size() < 3)
+      return;
+    std::size_t i = 0, j = 0;
+    while (i + 1 < o.size() || j + 1 < n.size()) {
+      const bool along_old = j + 1 == n.size() ||
+                             (i + 1 < o.size() && (m_nodes[o[i + 1]].x - m_nodes[n[j]].x).squaredNorm() <=
+                                                      (m_nodes[o[i]].x - m_nodes[n[j + 1]].x).squaredNorm());
+      if (along_old) {
+        add_triangle(o[i], o[i + 1], n[j]);
+        ++i;
+      }
+      else {
+        add_triangle(o[i], n[j + 1], n[j]);
+        ++j;
+      }
+    }
+  }
+
+  void advance_piece(std::vector<Particle>& piece, std::vector<std::vector<Particle>>& next)
+  {
+    std::vector<std::pair<double, std::size_t>> old_line; // (u, node) of the previous time line
+    for (const Particle& p : piece)
+      old_line.emplace_back(p.u, p.node);
+
+    // Runs of particles that reach the new time line.
+    std::vector<std::vector<Particle>> runs(1);
+    for (Particle& p : piece) {
+      if (advance(p))
+        runs.back().push_back(std::move(p));
+      else {
+        ++m_report.number_of_lost_particles;
+        if (!runs.back().empty())
+          runs.emplace_back();
+      }
+    }
+    for (std::vector<Particle>& run : runs) {
+      if (run.empty())
+        continue;
+      remove_converging(run);
+      std::vector<std::vector<Particle>> pieces(1);
+      pieces.back().push_back(std::move(run.front()));
+      for (std::size_t i = 1; i < run.size(); ++i)
+        connect(pieces, std::move(run[i]));
+      for (std::vector<Particle>& new_piece : pieces) {
+        std::vector<std::size_t> old_chain, new_chain;
+        for (Particle& p : new_piece) {
+          p.node = add_node(p.x, p.u);
+          new_chain.push_back(p.node);
+        }
+        const double first = new_piece.front().u, last = new_piece.back().u;
+        for (const auto& [u, node] : old_line)
+          if (u >= first && u <= last)
+            old_chain.push_back(node);
+        zip(old_chain, new_chain);
+        if (new_piece.size() >= 2)
+          next.push_back(std::move(new_piece));
+      }
+    }
+  }
+
+  Field m_field;
+  const Seed_curve& m_seed;
+  Settings m_s;
+  TriangleMesh& m_tm;
+  VPM m_vpm;
+  UMap m_u_map;
+  TMap m_t_map;
+  Stream_surface_report m_report;
+  std::vector<Node> m_nodes;
+  std::vector<std::vector<Particle>> m_pieces;
+  double m_parameter = 0;
+};
+
+// A writable property map that drops what it is given (the default of the u and t maps).
+struct Ignored_vertex_double_map {
+  template <class Key>
+  friend void put(const Ignored_vertex_double_map&, const Key&, double)
+  {
+  }
+};
+
+} // namespace internal
+
+/*!
+\ingroup PkgFlowAlignedSurfacesRef
+\brief integrates the stream surface (steady field) or path surface (unsteady field) seeded by a
+polyline with an advancing front, and adds it to `tm_out` as a triangle mesh.
+
+The surface \f$ x(u, \tau) \f$ solves
+\f$ \partial_\tau x = \sigma v(x, t_0 + \sigma \tau) \f$ with \f$ x(u, 0) = c(u) \f$, the seed
+polyline parametrized by its arc length \f$ u \in [0, L] \f$, \f$ \sigma = -1 \f$ with
+`integration_direction(Integration_direction::BACKWARD)`.  The front, a polyline of particles resampled from the seed at
+spacing at most \f$ h \f$, advances in lock-step of \f$ \tau \f$ by the time-line step
+\f$ \Delta \f$; each particle is integrated by the embedded Runge–Kutta pair of Dormand and
+Prince, 5(4) (`relative_tolerance`, `absolute_tolerance`, as `integrate_streamline()`), and
+evaluated on the time line by dense output.  Between consecutive time lines:
+- where two neighbours are farther than \f$ 2h \f$ apart, or farther than \f$ h \f$ with flow
+  directions more than `tear_angle` apart, a particle integrated anew from
+  \f$ c((u_i + u_{i+1})/2) \f$ (not interpolated on the front) is inserted, recursively;
+- where two neighbours are closer than \f$ h/2 \f$, one is removed (not the end of a piece);
+- the front tears (its pieces continue independently) where a particle leaves the domain,
+  stagnates or has taken `max_number_of_steps` steps, where a particle re-integrated for an insertion does, and where the refinement
+  would need seed parameters closer than \f$ 10^{-9} L \f$ (neighbours separating at an
+  obstacle or a critical point), or two neighbours closer than \f$ h \f$ have flow directions
+  more than `tear_angle` apart;
+- the strip is triangulated by the shorter-diagonal rule (Hultquist).
+
+Integration stops at `max_time` (`max_length` with arc-length time lines), after `max_number_of_time_lines`, at
+`max_number_of_vertices`, or when no piece of two particles is left.  A particle that leaves the
+domain ends on the last time line it reached: the surface stops up to \f$ \Delta \f$ short of
+the boundary.  A closed seed (first point = last point) gives a surface with a seam.
+
+Every vertex carries the seed parameter \f$ u \f$ of its particle (`seed_parameter_map`) and the
+time-line parameter \f$ \tau \f$ (`integration_time_map`): the time-line / stream-line
+parametrization of the paper's Figure 3 — the curves of constant \f$ \tau \f$ are the time lines,
+those of constant \f$ u \f$ are stream lines (path lines).  All vertices of a time line have the
+same \f$ \tau = k \Delta \f$ exactly.
+
+Vertices and faces are added to `tm_out`; what it held before is kept.
+
+\tparam FlowField a model of `FlowField_3` (a stream surface) or of `UnsteadyFlowField_3` (a path
+        surface: it is called with `(p, t)`)
+\tparam PointRange a range of points of a CGAL kernel (`FlowField`'s point type)
+\tparam TriangleMesh a model of `MutableFaceGraph`
+\tparam NamedParameters a sequence of named parameters
+
+\param field the flow field
+\param seed_polyline the seed curve, at least two points, finite, no two consecutive points equal
+\param tm_out receives the surface
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{front_spacing}
+    \cgalParamDescription{`FAS::parameters::front_spacing()`: \f$ h \f$}
+    \cgalParamType{`double`}
+    \cgalParamDefault{the mean segment length of `seed_polyline`}
+  \cgalParamNEnd
+  \cgalParamNBegin{time_line_step}
+    \cgalParamDescription{`FAS::parameters::time_line_step()`: \f$ \Delta \f$}
+    \cgalParamType{`double`}
+    \cgalParamDefault{\f$ h \f$ over the median speed at the seed points (with arc-length time lines: \f$ h \f$)}
+  \cgalParamNEnd
+  \cgalParamNBegin{max_time}
+    \cgalParamDescription{`FAS::parameters::max_time()`: the largest \f$ \tau \f$ (time time lines)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{no limit}
+  \cgalParamNEnd
+  \cgalParamNBegin{max_length}
+    \cgalParamDescription{`FAS::parameters::max_length()`: the largest \f$ \tau \f$ with arc-length time
+      lines (ignored otherwise)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{no limit}
+  \cgalParamNEnd
+  \cgalParamNBegin{max_number_of_time_lines}
+    \cgalParamDescription{`FAS::parameters::max_number_of_time_lines()`}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`100`}
+  \cgalParamNEnd
+  \cgalParamNBegin{arc_length_time_lines}
+    \cgalParamDescription{`FAS::parameters::arc_length_time_lines()`: whether \f$ \tau \f$ is the arc
+      length (the field is normalized); steady fields only}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+  \cgalParamNBegin{integration_direction}
+    \cgalParamDescription{`FAS::parameters::integration_direction()`: `FORWARD` or `BACKWARD`
+      (\f$ \sigma = -1 \f$); `BOTH` is refused}
+    \cgalParamType{`Integration_direction`}
+    \cgalParamDefault{`Integration_direction::FORWARD`}
+  \cgalParamNEnd
+  \cgalParamNBegin{relative_tolerance, absolute_tolerance, max_number_of_steps}
+    \cgalParamDescription{the integrator's, per particle, as in `integrate_streamline()`}
+    \cgalParamDefault{`1e-8`, `1e-10`, `100000`}
+  \cgalParamNEnd
+  \cgalParamNBegin{start_time}
+    \cgalParamDescription{`FAS::parameters::start_time()`: \f$ t_0 \f$ (unsteady fields)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{tear_angle}
+    \cgalParamDescription{`FAS::parameters::tear_angle()`: radians}
+    \cgalParamType{`double`}
+    \cgalParamDefault{\f$ \pi/4 \f$}
+  \cgalParamNEnd
+  \cgalParamNBegin{max_number_of_vertices}
+    \cgalParamDescription{`FAS::parameters::max_number_of_vertices()`}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{`1000000`}
+  \cgalParamNEnd
+  \cgalParamNBegin{seed_parameter_map}
+    \cgalParamDescription{`FAS::parameters::seed_parameter_map()`: receives \f$ u \f$ of every new vertex}
+    \cgalParamType{a model of `WritablePropertyMap` from `vertex_descriptor` to `double`}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{integration_time_map}
+    \cgalParamDescription{`FAS::parameters::integration_time_map()`: receives \f$ \tau \f$ of every new vertex}
+    \cgalParamType{a model of `WritablePropertyMap` from `vertex_descriptor` to `double`}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{the points of the vertices of `tm_out`}
+    \cgalParamType{a model of `WritablePropertyMap`}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm_out)`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the report: time lines, inserted and removed particles, tears, the termination reason.
+  A seed entirely outside the domain, or at rest, gives an empty result
+  (`SEED_OUTSIDE_DOMAIN`, `SEED_AT_REST`) and leaves `tm_out` untouched.
+
+\throws std::invalid_argument naming the input if `seed_polyline` has fewer than two points, a
+  non-finite point or two equal consecutive points, if a parameter is not positive, or if
+  `arc_length_time_lines(true)` is given with an unsteady field, or the direction is `BOTH`.
+
+\sa `extract_iso_contours()` for seed curves, `normalized_flux()` to check the result
+*/
+template <class FlowField, class PointRange, class TriangleMesh,
+          class NamedParameters = parameters::Default_named_parameters>
+Stream_surface_report integrate_stream_surface(const FlowField& field, const PointRange& seed_polyline,
+                                               TriangleMesh& tm_out,
+                                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Point_3 = typename std::iterator_traits<decltype(std::begin(seed_polyline))>::value_type;
+  using Field = internal::Front_field<FlowField, Point_3>;
+
+  const internal::Seed_curve seed(seed_polyline);
+  const bool arc_length = choose_parameter(get_parameter(np, internal_np::arc_length_time_lines_t()), false);
+  if (arc_length && Field::is_unsteady)
+    throw std::invalid_argument("integrate_stream_surface: arc_length_time_lines(true) needs a steady field; "
+                                "the field is unsteady (called with a point and a time)");
+  const double spacing =
+      internal::checked_positive(choose_parameter(get_parameter(np, internal_np::front_spacing_t()),
+                                                  seed.length() / double(seed.number_of_segments())),
+                                 "front_spacing");
+  // The stream lines' own options: tolerances, max_time / max_length, steps, direction.
+  const internal::Streamline_options lines =
+      internal::read_streamline_options(np, "integrate_stream_surface");
+  if (lines.direction == Integration_direction::BOTH)
+    throw std::invalid_argument(
+        "integrate_stream_surface: integration_direction is BOTH; expected FORWARD or "
+        "BACKWARD (integrate the two halves with two calls)");
+  const double max_parameter = arc_length ? lines.max_length : lines.max_time;
+  const double t0 = choose_parameter(get_parameter(np, internal_np::start_time_t()), 0.);
+  if (!std::isfinite(t0))
+    internal::checked_positive(t0, "start_time");
+  const double tear_angle = choose_parameter(get_parameter(np, internal_np::tear_angle_t()), CGAL_PI / 4);
+  internal::checked_positive(tear_angle, "tear_angle");
+  const std::size_t max_vertices = std::size_t(internal::checked_positive(
+      double(
+          choose_parameter(get_parameter(np, internal_np::max_number_of_vertices_t()), std::size_t(1000000))),
+      "max_number_of_vertices"));
+  const int direction = lines.direction == Integration_direction::BACKWARD ? -1 : 1;
+
+  double step;
+  if constexpr (!parameters::is_default_parameter<NamedParameters, internal_np::time_line_step_t>::value)
+    step = internal::checked_positive(get_parameter(np, internal_np::time_line_step_t()), "time_line_step");
+  else if (arc_length)
+    step = spacing;
+  else {
+    // h over the median speed at the seed points: time lines about h apart.
+    const Field f{&field, false};
+    std::vector<double> speeds;
+    const std::size_t n = std::min<std::size_t>(64, seed.number_of_segments());
+    for (std::size_t i = 0; i <= n; ++i)
+      if (const std::optional<Eigen::Vector3d> v = f(seed(seed.length() * double(i) / double(n)), t0))
+        if (v->norm() > 0)
+          speeds.push_back(v->norm());
+    std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 2), speeds.end());
+    step = speeds.empty() ? spacing : spacing / speeds[speeds.size() / 2];
+  }
+
+  Stream_surface_report report;
+  report.seed_length = seed.length();
+  report.front_spacing = spacing;
+  report.time_line_step = step;
+
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, tm_out));
+  const auto u_map = choose_parameter(get_parameter(np, internal_np::seed_parameter_map_t()),
+                                      internal::Ignored_vertex_double_map());
+  const auto t_map = choose_parameter(get_parameter(np, internal_np::integration_time_map_t()),
+                                      internal::Ignored_vertex_double_map());
+  using Front = internal::Stream_surface_front<FlowField, Point_3, TriangleMesh, std::decay_t<decltype(vpm)>,
+                                               std::decay_t<decltype(u_map)>, std::decay_t<decltype(t_map)>>;
+  typename Front::Settings settings{
+      spacing,
+      step,
+      max_parameter,
+      t0,
+      std::cos(std::min(tear_angle, CGAL_PI)),
+      1e-9 * seed.length(),
+      choose_parameter(get_parameter(np, internal_np::max_number_of_time_lines_t()), std::size_t(100)),
+      max_vertices,
+      lines.max_number_of_steps,
+      direction,
+      lines.tolerances};
+  Front front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map);
+  return front.run(std::move(report));
+}
+
+} // namespace Flow_aligned_surfaces
+} // namespace CGAL
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_INTEGRATE_STREAM_SURFACE_H

@@ -1,0 +1,386 @@
+// integrate_stream_surface against what is known independently: the exact surfaces of the
+// uniform and linear flows and of a path surface in a flow linear in time (closed forms of
+// x(u, τ)); first integrals (Hill's vortex: the Stokes stream function; ABC with C = 0:
+// A cos z + B sin x; the cylinder: its stream function) constant from the seed point c(u) of
+// every vertex; the front spacing in [h/2, 2h]; a front split by a cylinder; bad input.
+
+#include "expect_invalid_argument.h"
+#include "test_kernel.h"
+
+#include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
+#include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
+#include <CGAL/Flow_aligned_surfaces/measure.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace {
+
+using namespace fas_test;
+using Mesh = CGAL::Surface_mesh<Point_3>;
+using Vertex = Mesh::Vertex_index;
+using Polyline = std::vector<Point_3>;
+
+// The output mesh with its u and t maps.
+struct Surface {
+  Mesh tm;
+  Mesh::Property_map<Vertex, double> u, t;
+  FAS::Stream_surface_report report;
+
+  Surface()
+  {
+    u = tm.add_property_map<Vertex, double>("v:u", -1).first;
+    t = tm.add_property_map<Vertex, double>("v:t", -1).first;
+  }
+  template <class Field, class NP>
+  explicit Surface(const Field& field, const Polyline& seed, const NP& np) : Surface()
+  {
+    report = FAS::integrate_stream_surface(
+        field, seed, tm,
+        FAS::parameters::seed_parameter_map(u, FAS::parameters::integration_time_map(t, np)));
+  }
+};
+
+// c(u): the seed polyline at arc length u, computed here independently of the header.
+Point_3 seed_point(const Polyline& seed, double u)
+{
+  for (std::size_t i = 1; i < seed.size(); ++i) {
+    const double length = std::sqrt(CGAL::squared_distance(seed[i - 1], seed[i]));
+    if (u <= length || i + 1 == seed.size())
+      return seed[i - 1] + (u / length) * (seed[i] - seed[i - 1]);
+    u -= length;
+  }
+  return seed.front();
+}
+
+// Every vertex's t is a whole number of time-line steps (or the last time line's, at the
+// maximal integration time), its u is in [0, L], and the vertices
+// with t = 0 are their seed points.
+void expect_parametrization(const Surface& s, const Polyline& seed)
+{
+  ASSERT_GT(s.tm.number_of_faces(), 0u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(s.tm));
+  EXPECT_EQ(s.report.number_of_refused_faces, 0u);
+  EXPECT_EQ(s.report.number_of_vertices, s.tm.number_of_vertices());
+  EXPECT_EQ(s.report.number_of_faces, s.tm.number_of_faces());
+  const double step = s.report.time_line_step;
+  for (Vertex v : s.tm.vertices()) {
+    const double k = s.t[v] / step;
+    if (s.t[v] != s.report.final_parameter) {
+      ASSERT_NEAR(k, std::round(k), 1e-9) << "t = " << s.t[v];
+    }
+    ASSERT_GE(s.u[v], 0.);
+    ASSERT_LE(s.u[v], s.report.seed_length * (1 + 1e-15));
+    if (s.t[v] == 0.) {
+      ASSERT_LE(CGAL::squared_distance(s.tm.point(v), seed_point(seed, s.u[v])), 1e-24);
+    }
+  }
+}
+
+// The time-line edges (both ends on one time line) are between h/2 and 2h long; returns their
+// number.
+std::size_t expect_front_spacing(const Surface& s)
+{
+  const double h = s.report.front_spacing;
+  std::size_t n = 0;
+  for (auto e : s.tm.edges()) {
+    const Vertex a = s.tm.vertex(e, 0), b = s.tm.vertex(e, 1);
+    if (s.t[a] != s.t[b])
+      continue;
+    const double d = std::sqrt(CGAL::squared_distance(s.tm.point(a), s.tm.point(b)));
+    EXPECT_GE(d, 0.5 * h) << "at t = " << s.t[a];
+    EXPECT_LE(d, 2 * h) << "at t = " << s.t[a];
+    ++n;
+  }
+  return n;
+}
+
+// The largest |I(x) - I(c(u))| over the vertices.
+template <class FirstIntegral>
+double first_integral_drift(const Surface& s, const Polyline& seed, const FirstIntegral& first_integral)
+{
+  double drift = 0;
+  for (Vertex v : s.tm.vertices())
+    drift =
+        std::max(drift, std::abs(first_integral(s.tm.point(v)) - first_integral(seed_point(seed, s.u[v]))));
+  return drift;
+}
+
+TEST(IntegrateStreamSurface, UniformFlowTranslatesTheSeed)
+{
+  const Vector_3 U(0.5, 1, 0.25);
+  const Polyline seed = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 0, 1)};
+  const Surface s(FAS::Uniform_flow<K>(U), seed,
+                  FAS::parameters::front_spacing(0.1, FAS::parameters::max_time(2.0)));
+  expect_parametrization(s, seed);
+  EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
+  EXPECT_DOUBLE_EQ(s.report.final_parameter, 2.0);
+  EXPECT_DOUBLE_EQ(s.report.time_line_step, 0.1 / std::sqrt(U.squared_length()));
+  for (Vertex v : s.tm.vertices()) // x(u, t) = c(u) + t U
+    ASSERT_LE(std::sqrt(CGAL::squared_distance(s.tm.point(v), seed_point(seed, s.u[v]) + s.t[v] * U)), 1e-12);
+  EXPECT_EQ(s.report.number_of_inserted_particles, 0u);
+  EXPECT_EQ(s.report.number_of_removed_particles, 0u);
+  // 21 particles (20 segments of 0.1) on 1 + 2.0 / step time lines.
+  const std::size_t lines = 1 + static_cast<std::size_t>(std::round(2.0 / s.report.time_line_step));
+  EXPECT_EQ(s.tm.number_of_vertices(), 21 * lines);
+  EXPECT_EQ(s.tm.number_of_faces(), 2 * 20 * (lines - 1));
+  EXPECT_GT(expect_front_spacing(s), 0u);
+}
+
+TEST(IntegrateStreamSurface, LinearFlowMatchesTheExponentialAndInsertsReintegratedParticles)
+{
+  // A = diag(1, 1, -2): x(u, t) = (x0 e^t, y0 e^t, z0 e^-2t) with (x0, y0, z0) = c(u).
+  const Polyline seed = {Point_3(0.2, 0.1, 1.0), Point_3(0.4, 0.5, 0.8)};
+  const Surface s(FAS::Linear_flow<K>(), seed,
+                  FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(2.0)));
+  expect_parametrization(s, seed);
+  EXPECT_GT(s.report.number_of_inserted_particles, 20u); // the front is stretched e^2 times
+  EXPECT_EQ(s.report.number_of_tears, 0u);
+  for (Vertex v : s.tm.vertices()) {
+    const Point_3 c = seed_point(seed, s.u[v]);
+    const double e = std::exp(s.t[v]);
+    const Point_3 exact(c.x() * e, c.y() * e, c.z() / (e * e));
+    ASSERT_LE(std::sqrt(CGAL::squared_distance(s.tm.point(v), exact)),
+              1e-7 * std::sqrt(exact.x() * exact.x() + exact.y() * exact.y() + exact.z() * exact.z()))
+        << "u = " << s.u[v] << " t = " << s.t[v];
+  }
+  EXPECT_GT(expect_front_spacing(s), 100u);
+}
+
+TEST(IntegrateStreamSurface, HillsVortexKeepsTheStreamFunctionAndHasNoFlux)
+{
+  // An arc rho = 0.3 in the plane z = 0 inside the vortex: its surface is a piece of a vortex
+  // torus psi = const; the particles move in their meridional planes out to rho = 0.955 and
+  // back, so the front is stretched and compressed with rho (insertions and removals).  The
+  // flux of the flat triangles is first order in their extent along the stream lines (whose
+  // curvature is up to about 5 here): time lines h/12 apart.
+  const FAS::Hill_spherical_vortex<K> hill(1.0, 1.0);
+  Polyline seed;
+  for (int i = 0; i <= 20; ++i)
+    seed.push_back(Point_3(0.3 * std::cos(0.05 * i), 0.3 * std::sin(0.05 * i), 0.));
+  const double h = 0.03, speed = 1.5 * (1 - 2 * 0.09); // |v| on the seed
+  const Surface s(
+      hill, seed,
+      FAS::parameters::front_spacing(
+          h, FAS::parameters::time_line_step(
+                 h / 12 / speed, FAS::parameters::max_time(
+                                     5.0, FAS::parameters::max_number_of_time_lines(std::size_t(3000))))));
+  expect_parametrization(s, seed);
+  EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
+  EXPECT_EQ(s.report.number_of_tears, 0u);
+  EXPECT_GT(s.report.number_of_inserted_particles, 0u);
+  EXPECT_GT(s.report.number_of_removed_particles, 0u);
+  const double psi0 = std::abs(hill.stokes_stream_function(seed.front()));
+  EXPECT_LE(first_integral_drift(s, seed, [&](const Point_3& p) { return hill.stokes_stream_function(p); }),
+            1e-5 * psi0);
+  EXPECT_LE(FAS::normalized_flux(s.tm, hill), 1e-3);
+  EXPECT_GT(expect_front_spacing(s), 100u);
+}
+
+TEST(IntegrateStreamSurface, ABCFlowWithoutCKeepsItsFirstIntegralAndHasNoFlux)
+{
+  const FAS::ABC_flow<K> abc(std::sqrt(3.), std::sqrt(2.), 0.);
+  const Polyline seed = {Point_3(0.5, 0, 0.5), Point_3(1.0, 1.0, 0.7), Point_3(1.5, 2.0, 1.0)};
+  // Time lines about h/5 apart (|v| is 1 to 2.2 here): the flux of the flat triangles is first
+  // order in their extent along the stream lines.
+  const Surface s(abc, seed,
+                  FAS::parameters::front_spacing(
+                      0.05, FAS::parameters::time_line_step(0.01, FAS::parameters::max_time(2.0))));
+  expect_parametrization(s, seed);
+  const double scale = std::sqrt(3.) + std::sqrt(2.); // the range of A cos z + B sin x
+  EXPECT_LE(first_integral_drift(s, seed, [&](const Point_3& p) { return abc.first_integral(p); }),
+            1e-5 * scale);
+  EXPECT_LE(FAS::normalized_flux(s.tm, abc), 1e-3);
+  EXPECT_GT(expect_front_spacing(s), 100u);
+}
+
+TEST(IntegrateStreamSurface, CylinderSplitsTheFront)
+{
+  const FAS::Cylinder_potential_flow<K> cylinder(1.0, 1.0);
+  const Polyline seed = {Point_3(-3, -0.6, 0.2), Point_3(-3, 0.6, 0.2)};
+  const Surface s(cylinder, seed,
+                  FAS::parameters::front_spacing(
+                      0.05, FAS::parameters::max_time(
+                                10.0, FAS::parameters::max_number_of_time_lines(std::size_t(1000)))));
+  expect_parametrization(s, seed);
+  std::cout << "cylinder: " << s.report.number_of_time_lines << " time lines, "
+            << s.report.number_of_inserted_particles << " inserted, " << s.report.number_of_removed_particles
+            << " removed, " << s.report.number_of_tears << " tears, " << s.report.number_of_lost_particles
+            << " lost, " << s.report.message << "\n";
+  EXPECT_GE(s.report.number_of_tears + s.report.number_of_lost_particles, 1u);
+  bool above = false, below = false;
+  for (Vertex v : s.tm.vertices()) {
+    const Point_3& p = s.tm.point(v);
+    ASSERT_GE(p.x() * p.x() + p.y() * p.y(), 1 - 1e-9);
+    if (p.x() > 1.5)
+      (p.y() > 0 ? above : below) = true;
+  }
+  EXPECT_TRUE(above && below) << "the front passes on both sides";
+  // No edge cuts the cylinder: each edge's segment stays (almost: chords of the wall) outside.
+  for (auto e : s.tm.edges()) {
+    const Point_3 a = s.tm.point(s.tm.vertex(e, 0)), b = s.tm.point(s.tm.vertex(e, 1));
+    const double dx = b.x() - a.x(), dy = b.y() - a.y();
+    const double l2 = dx * dx + dy * dy;
+    const double s01 = l2 > 0 ? std::clamp(-(a.x() * dx + a.y() * dy) / l2, 0., 1.) : 0.;
+    const double x = a.x() + s01 * dx, y = a.y() + s01 * dy;
+    ASSERT_GE(std::sqrt(x * x + y * y), 0.99) << "edge from " << a << " to " << b;
+  }
+  EXPECT_GT(expect_front_spacing(s), 100u); // where the front is not torn
+  // The stream function psi = U y (1 - R^2 / rho^2) is a first integral.
+  EXPECT_LE(first_integral_drift(s, seed, [&](const Point_3& p) { return cylinder.stream_function(p); }),
+            1e-6);
+}
+
+TEST(IntegrateStreamSurface, AnyMutableFaceGraph)
+{
+  // The same surface in a Polyhedron_3 (BGL interface, no u/t maps) as in a Surface_mesh.
+  const FAS::Hill_spherical_vortex<K> hill(1.0, 1.0);
+  const Polyline seed = {Point_3(0.3, 0, 0), Point_3(0.3, 0.3, 0.1)};
+  const auto np = FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(2.0));
+  const Surface s(hill, seed, np);
+  CGAL::Polyhedron_3<K> polyhedron;
+  const FAS::Stream_surface_report report = FAS::integrate_stream_surface(hill, seed, polyhedron, np);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(polyhedron));
+  EXPECT_EQ(report.number_of_refused_faces, 0u);
+  EXPECT_EQ(polyhedron.size_of_vertices(), s.tm.number_of_vertices());
+  EXPECT_EQ(polyhedron.size_of_facets(), s.tm.number_of_faces());
+  EXPECT_GT(polyhedron.size_of_facets(), 100u);
+}
+
+TEST(IntegrateStreamSurface, PathSurfaceInAFlowLinearInTime)
+{
+  // v(t) = U0 + (t / 2) (U1 - U0) on t in [0, 2]: x(u, tau) = c(u) + U0 tau + (U1 - U0)
+  // ((t0 + tau)^2 - t0^2) / 4.  After t = 2 the field has no value: the particles leave.
+  const Vector_3 U0(1, 0, 0), U1(1, 2, 0);
+  const FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>> flow(
+      {0., 2.}, {FAS::Uniform_flow<K>(U0), FAS::Uniform_flow<K>(U1)});
+  const Polyline seed = {Point_3(0, 0, 0), Point_3(0, 0, 1)};
+  const double t0 = 0.5;
+  const Surface s(flow, seed,
+                  FAS::parameters::front_spacing(
+                      0.1, FAS::parameters::start_time(t0, FAS::parameters::time_line_step(0.1))));
+  expect_parametrization(s, seed);
+  EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::NO_PARTICLE_LEFT);
+  EXPECT_NEAR(s.report.final_parameter, 1.5, 1e-12);
+  for (Vertex v : s.tm.vertices()) {
+    const double tau = s.t[v];
+    const Point_3 exact =
+        seed_point(seed, s.u[v]) + tau * U0 + ((t0 + tau) * (t0 + tau) - t0 * t0) / 4 * (U1 - U0);
+    ASSERT_LE(std::sqrt(CGAL::squared_distance(s.tm.point(v), exact)), 1e-9);
+  }
+}
+
+TEST(IntegrateStreamSurface, BackwardIntegrationReversesTheFlow)
+{
+  const Vector_3 U(1, 0, 0);
+  const Polyline seed = {Point_3(0, 0, 0), Point_3(0, 1, 0)};
+  const Surface s(FAS::Uniform_flow<K>(U), seed,
+                  FAS::parameters::integration_direction(FAS::Integration_direction::BACKWARD,
+                                                         FAS::parameters::max_time(1.0)));
+  expect_parametrization(s, seed);
+  for (Vertex v : s.tm.vertices())
+    ASSERT_LE(std::sqrt(CGAL::squared_distance(s.tm.point(v), seed_point(seed, s.u[v]) - s.t[v] * U)), 1e-12);
+}
+
+TEST(IntegrateStreamSurface, ArcLengthTimeLines)
+{
+  // In the linear flow the speed varies; with arc-length time lines each stream line's length
+  // from the seed is t.  For the stream line of (x0, 0, 0) it is x0 (e^s - 1) at time s.
+  const Polyline seed = {Point_3(0.5, 0, 0), Point_3(0.5, 0.5, 0)};
+  const Surface s(FAS::Linear_flow<K>(), seed,
+                  FAS::parameters::arc_length_time_lines(true, FAS::parameters::max_length(1.0)));
+  expect_parametrization(s, seed);
+  for (Vertex v : s.tm.vertices()) { // radial motion in z = 0: |x - c(u)| is the arc length
+    const Point_3 c = seed_point(seed, s.u[v]);
+    ASSERT_NEAR(std::sqrt(CGAL::squared_distance(s.tm.point(v), c)), s.t[v], 1e-8);
+  }
+}
+
+TEST(IntegrateStreamSurface, SeedOutsideTheDomainGivesAnEmptyResult)
+{
+  const Polyline seed = {Point_3(-0.5, 0, 0), Point_3(0.5, 0, 0)}; // inside the cylinder
+  Surface s(FAS::Cylinder_potential_flow<K>(1.0, 1.0), seed, CGAL::parameters::default_values());
+  EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::SEED_OUTSIDE_DOMAIN);
+  EXPECT_NE(s.report.message.find("outside"), std::string::npos);
+  EXPECT_EQ(s.tm.number_of_vertices(), 0u);
+
+  // A seed across the cylinder: the part inside is dropped, the two parts outside are
+  // integrated as two front pieces.
+  const Polyline across = {Point_3(0, -2, 0), Point_3(0, 2, 0)};
+  const Surface a(FAS::Cylinder_potential_flow<K>(1.0, 1.0), across,
+                  FAS::parameters::front_spacing(0.1, FAS::parameters::max_time(1.0)));
+  expect_parametrization(a, across);
+  EXPECT_GE(a.report.number_of_lost_particles, 19u); // the seed points with |y| < 1
+  bool above = false, below = false;
+  for (Vertex v : a.tm.vertices()) {
+    const Point_3& p = a.tm.point(v);
+    ASSERT_GE(p.x() * p.x() + p.y() * p.y(), 1 - 1e-9);
+    (p.y() > 0 ? above : below) = true;
+  }
+  EXPECT_TRUE(above && below);
+}
+
+TEST(IntegrateStreamSurface, FieldAtRestOnTheSeedGivesAnEmptyResult)
+{
+  // Zero near the seed (the plane x = 0), moving elsewhere: no particle can start.
+  const std::function<std::optional<Vector_3>(const Point_3&)> field = [](const Point_3& p) {
+    return std::optional<Vector_3>(Vector_3(p.x(), 0, 0));
+  };
+  const Polyline seed = {Point_3(0, 0, 0), Point_3(0, 1, 0)};
+  Surface s(field, seed, CGAL::parameters::default_values());
+  EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::SEED_AT_REST);
+  EXPECT_EQ(s.tm.number_of_vertices(), 0u);
+}
+
+TEST(IntegrateStreamSurface, BadSeedsAndParametersAreNamed)
+{
+  const FAS::Uniform_flow<K> flow;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Mesh tm;
+  const auto call = [&](const Polyline& seed) {
+    return [&, seed] { FAS::integrate_stream_surface(flow, seed, tm); };
+  };
+  expect_invalid_argument(call({Point_3(0, 0, 0), Point_3(0, 1, 0), Point_3(0, 1, 0)}),
+                          {"seed_polyline", "points 1 and 2", "distinct"});
+  expect_invalid_argument(call({Point_3(0, 0, 0), Point_3(nan, 1, 0)}),
+                          {"seed_polyline", "point 1", "finite"});
+  expect_invalid_argument(call({Point_3(0, 0, 0)}), {"seed_polyline", "1 point", "at least 2"});
+  expect_invalid_argument(call({}), {"seed_polyline", "0 point", "at least 2"});
+  expect_invalid_argument(call({Point_3(1, 2, 3), Point_3(1, 2, 3)}), {"seed_polyline", "points 0 and 1"});
+  const Polyline seed = {Point_3(0, 0, 0), Point_3(0, 1, 0)};
+  expect_invalid_argument(
+      [&] { FAS::integrate_stream_surface(flow, seed, tm, FAS::parameters::front_spacing(-1.)); },
+      {"front_spacing", "-1"});
+  expect_invalid_argument(
+      [&] { FAS::integrate_stream_surface(flow, seed, tm, FAS::parameters::time_line_step(nan)); },
+      {"time_line_step", "nan"});
+  expect_invalid_argument(
+      [&] { FAS::integrate_stream_surface(flow, seed, tm, FAS::parameters::max_time(0.)); },
+      {"integrate_stream_surface", "max_time", "0"});
+  expect_invalid_argument(
+      [&] {
+        FAS::integrate_stream_surface(
+            flow, seed, tm, FAS::parameters::integration_direction(FAS::Integration_direction::BOTH));
+      },
+      {"integration_direction", "BOTH"});
+  const FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>> unsteady({0.}, {flow});
+  expect_invalid_argument(
+      [&] {
+        FAS::integrate_stream_surface(unsteady, seed, tm, FAS::parameters::arc_length_time_lines(true));
+      },
+      {"arc_length_time_lines", "unsteady"});
+  EXPECT_EQ(tm.number_of_vertices(), 0u); // nothing was added
+}
+
+} // namespace
