@@ -4,6 +4,11 @@
 // (ParaView), the normalized flux of every iteration as CSV, and a JSON summary; and, when built
 // with VTK rendering and a display (or Xvfb) is there, pictures of the initial and aligned
 // surfaces coloured by flux and of the tangential one with its LIC-like texture (PNG).
+// Then the seeding workflow of the paper's Figures 4 and 5 on each aligned surface: its
+// parametrization (with the deformation's own factorization) gives seed curves (iso-contours of
+// r, VTP), each seeds a stream surface integrated forward and backward (VTP with the seed
+// parameter u and the time t), and on the orthogonal surface seed points seed stream lines (VTP);
+// pictures of the seed curves on the surface and of the stream surfaces.
 //
 // Usage: align_patch [--flow NAME | --field FILE [--array NAME]]
 //                    [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]
@@ -17,6 +22,11 @@
 #include "example_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
+#include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
+#include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
+#include <CGAL/Flow_aligned_surfaces/integrate_streamline.h>
+#include <CGAL/Flow_aligned_surfaces/seeds.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 
 #include <array>
@@ -134,6 +144,112 @@ std::optional<std::ofstream> open_output(const std::filesystem::path& path)
   return os;
 }
 
+using Polyline = std::vector<Point>;
+
+// The seeding workflow on the aligned surface `tm` of `deformation`: seed curves from its
+// parametrization, a stream surface from each (forward and backward, arc-length time lines up to
+// twice the patch size), and stream lines from seed points on an orthogonal surface; all written
+// as VTP, with pictures when `pictures`.  Returns false when a file cannot be written.
+bool seed_and_integrate(const std::string& name, Mesh& tm,
+                        const FAS::Flow_aligned_deformation<Mesh, Flow>& deformation, const Scene& scene,
+                        const std::filesystem::path& out, bool pictures)
+{
+  const bool tangential = deformation.alignment() == FAS::Alignment::TANGENTIAL;
+  auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
+  auto s = tm.add_property_map<Mesh::Vertex_index, double>("v:s", 0).first;
+  if (tangential)
+    deformation.parametrize_tangential(r, s);
+  else
+    deformation.parametrize_orthogonal(r, s);
+  std::vector<Polyline> seed_curves;
+  FAS::extract_iso_contours(tm, r, FAS::evenly_spaced_iso_values(tm, r, 3), std::back_inserter(seed_curves));
+
+  Mesh surfaces;
+  auto u = surfaces.add_property_map<Mesh::Vertex_index, double>("v:u", 0).first;
+  auto t = surfaces.add_property_map<Mesh::Vertex_index, double>("v:t", 0).first;
+  const auto np = FAS::parameters::front_spacing(
+      scene.size / 30, FAS::parameters::arc_length_time_lines(
+                           true, FAS::parameters::max_length(
+                                     2 * scene.size, FAS::parameters::seed_parameter_map(
+                                                         u, FAS::parameters::integration_time_map(t)))));
+  for (const Polyline& seed : seed_curves) {
+    if (seed.size() < 2)
+      continue;
+    try {
+      FAS::integrate_stream_surface(scene.flow, seed, surfaces, np);
+      const std::size_t forward_end = surfaces.number_of_vertices();
+      FAS::integrate_stream_surface(
+          scene.flow, seed, surfaces,
+          FAS::parameters::integration_direction(FAS::Integration_direction::BACKWARD, np));
+      for (Mesh::Vertex_index v : surfaces.vertices()) // the backward half has negative t
+        if (std::size_t(v) >= forward_end)
+          t[v] = -t[v];
+    } catch (const std::exception& e) { // a degenerate contour: skip it, say why
+      std::cerr << name << ": seed curve skipped: " << e.what() << "\n";
+    }
+  }
+  // Where a front tore, two pieces can share a vertex; split it so that the surface is a
+  // manifold the measures accept (the copies keep u and t).
+  std::vector<std::vector<Mesh::Vertex_index>> split;
+  CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(
+      surfaces, CGAL::parameters::output_iterator(std::back_inserter(split)));
+  for (const auto& copies : split)
+    for (Mesh::Vertex_index v : copies) {
+      u[v] = u[copies.front()];
+      t[v] = t[copies.front()];
+    }
+  std::vector<double> us, ts;
+  for (Mesh::Vertex_index v : surfaces.vertices()) {
+    us.push_back(u[v]);
+    ts.push_back(t[v]);
+  }
+  std::string error;
+  bool ok =
+      FAS::IO::write_VTP_polylines((out / (name + "_seed_curves.vtp")).string(), seed_curves, {}, {}, &error);
+  ok = ok && (surfaces.is_empty() || write_surface_VTP(out / (name + "_stream_surfaces.vtp"), surfaces,
+                                                       scene.flow, {{"u", 1, us}, {"t", 1, ts}}));
+  std::size_t number_of_lines = 0;
+  if (ok && !tangential) { // seed points on the orthogonal surface seed stream lines (Figure 5)
+    std::vector<Point> seed_points;
+    FAS::sample_seed_points(tm, scene.size / 6, std::back_inserter(seed_points));
+    std::vector<Polyline> lines;
+    for (const Point& seed : seed_points) {
+      Polyline line;
+      FAS::integrate_streamline(
+          scene.flow, seed, std::back_inserter(line),
+          FAS::parameters::max_length(
+              2 * scene.size, FAS::parameters::integration_direction(FAS::Integration_direction::BOTH)));
+      if (line.size() > 1)
+        lines.push_back(std::move(line));
+    }
+    number_of_lines = lines.size();
+    ok = FAS::IO::write_VTP_polylines((out / (name + "_stream_lines.vtp")).string(), lines, {}, {}, &error);
+  }
+  if (!ok) {
+    std::cerr << "error: " << error << "\n";
+    return false;
+  }
+  std::cout << name << ": " << seed_curves.size() << " seed curves, stream surfaces of "
+            << surfaces.number_of_faces() << " triangles (flux "
+            << (surfaces.is_empty() ? 0.0 : FAS::normalized_flux(surfaces, scene.flow)) << ")"
+            << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
+            << "\n";
+  if (pictures) {
+    Surface_rendering with_seeds;
+    with_seeds.face_scalars = face_fluxes(tm, scene.flow);
+    for (const Polyline& curve : seed_curves) {
+      with_seeds.polylines.emplace_back();
+      for (const Point& p : curve)
+        with_seeds.polylines.back().push_back({p.x(), p.y(), p.z()});
+    }
+    if (write_picture(out / (name + "_seed_curves.png"), tm, with_seeds) && !surfaces.is_empty())
+      write_flux_picture(out / (name + "_stream_surfaces.png"), surfaces, scene.flow);
+  }
+  tm.remove_property_map(r);
+  tm.remove_property_map(s);
+  return true;
+}
+
 struct Run_summary {
   std::string alignment;
   std::size_t faces = 0;
@@ -176,6 +292,8 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   pictures = pictures && write_flux_picture(out / (name + "_aligned.png"), tm, scene.flow);
   if (pictures && tangential) // the LIC-like texture of the stream surface (Section 6)
     write_textured_picture(out / (name + "_textured.png"), tm, scene.flow, 2 / scene.size);
+  if (!seed_and_integrate(name, tm, deformation, scene, out, pictures))
+    return std::nullopt;
 
   auto csv = open_output(out / (name + "_flux.csv"));
   if (!csv)
