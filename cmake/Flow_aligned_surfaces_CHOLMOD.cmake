@@ -14,7 +14,7 @@ if(FAS_CHOLMOD_INCLUDE_DIR AND FAS_CHOLMOD_LIBRARY)
     INTERFACE_LINK_LIBRARIES "${FAS_CHOLMOD_LIBRARY}"
     INTERFACE_COMPILE_DEFINITIONS "CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD")
   if(NOT Flow_aligned_surfaces_FIND_QUIETLY)
-    message(STATUS "CHOLMOD found: ${FAS_CHOLMOD_LIBRARY} (sparse Cholesky: CHOLMOD simplicial LDL^T)")
+    message(STATUS "CHOLMOD found: ${FAS_CHOLMOD_LIBRARY} (sparse Cholesky: CHOLMOD, supernodal or simplicial factorization, simplicial LDL^T solves)")
   endif()
 else()
   set(FAS_CHOLMOD_FOUND FALSE)
