@@ -242,8 +242,20 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
       for (const Point& p : curve)
         with_seeds.polylines.back().push_back({p.x(), p.y(), p.z()});
     }
-    if (write_picture(out / (name + "_seed_curves.png"), tm, with_seeds) && !surfaces.is_empty())
-      write_flux_picture(out / (name + "_stream_surfaces.png"), surfaces, scene.flow);
+    if (write_picture(out / (name + "_seed_curves.png"), tm, with_seeds) && !surfaces.is_empty()) {
+      // The stream surfaces coloured by their time-line parameter |t| (Figure 3's time lines).
+      Surface_rendering by_time;
+      double largest = 0;
+      for (Mesh::Face_index f : surfaces.faces()) {
+        double mean = 0;
+        for (Mesh::Vertex_index v : vertices_around_face(surfaces.halfedge(f), surfaces))
+          mean += std::abs(t[v]) / 3;
+        by_time.face_scalars.push_back(mean);
+        largest = std::max(largest, mean);
+      }
+      by_time.scalar_range = {0, largest > 0 ? largest : 1};
+      write_picture(out / (name + "_stream_surfaces.png"), surfaces, by_time);
+    }
   }
   tm.remove_property_map(r);
   tm.remove_property_map(s);

@@ -25,6 +25,7 @@
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -138,19 +139,49 @@ using Surface_rendering = FAS::IO::Surface_rendering;
 struct Surface_rendering { // what the pictures would need, so that callers compile without VTK
   std::size_t width = 800, height = 600;
   std::vector<double> face_scalars, face_mask;
+  std::array<double, 2> scalar_range{0, 1};
   const FAS::Texture_image* texture = nullptr;
   std::vector<std::array<double, 2>> texture_coordinates;
   std::vector<std::vector<std::array<double, 3>>> polylines;
 };
 #endif
 
-/// Renders `what` of `tm` into the PNG `path`; prints why and returns false when it cannot (no
+/// Renders `what` of `tm` into the PNG `path`, seen along the surface's mean normal unless `what`
+/// has a camera; prints why and returns false when it cannot (no
 /// VTK rendering in the build, no display): the other files of an example do not depend on it.
 inline bool write_picture(const std::filesystem::path& path, const Mesh& tm, const Surface_rendering& what)
 {
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
   std::string error;
-  if (FAS::IO::render_surface_PNG(path.string(), tm, what, CGAL::parameters::default_values(), &error))
+  Surface_rendering facing = what;
+  if (!facing.camera && !tm.is_empty()) { // look at the surface along its area-weighted mean normal
+    Vector normal(0, 0, 0);
+    Vector sum(0, 0, 0);
+    double area = 0;
+    for (auto f : tm.faces()) {
+      const auto h = tm.halfedge(f);
+      const Point &a = tm.point(tm.source(h)), &b = tm.point(tm.target(h)),
+                  &c = tm.point(tm.target(tm.next(h)));
+      const Vector n = CGAL::cross_product(b - a, c - a) / 2;
+      normal = normal + n;
+      const double face_area = std::sqrt(n.squared_length());
+      sum = sum + face_area * ((a - CGAL::ORIGIN) + (b - CGAL::ORIGIN) + (c - CGAL::ORIGIN)) / 3;
+      area += face_area;
+    }
+    const CGAL::Bbox_3 box = CGAL::bbox_3(tm.points().begin(), tm.points().end());
+    const double diagonal =
+        std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                  CGAL::square(box.zmax() - box.zmin()));
+    const double length = std::sqrt(normal.squared_length());
+    if (area > 0 && length > 1e-3 * area) { // a surface that faces some way (not a closed one)
+      const Point center = CGAL::ORIGIN + sum / area;
+      const Point eye = center + (2 * diagonal / length) * normal;
+      const Vector up = std::abs(normal.z()) < 0.9 * length ? Vector(0, 0, 1) : Vector(0, 1, 0);
+      facing.camera = FAS::IO::Render_camera{
+          {eye.x(), eye.y(), eye.z()}, {center.x(), center.y(), center.z()}, {up.x(), up.y(), up.z()}, 0, 30};
+    }
+  }
+  if (FAS::IO::render_surface_PNG(path.string(), tm, facing, CGAL::parameters::default_values(), &error))
     return true;
   std::cerr << "pictures not written: " << error << "\n";
 #else
@@ -214,7 +245,8 @@ inline bool parse_options(int argc, char** argv, std::map<std::string, std::stri
 /// The orthogonal surface of the seeding examples: a tilted disk of `faces` triangles beside the
 /// point source `flow`, aligned orthogonally (it becomes a piece of a sphere about the source);
 /// returns the alignment's report.
-inline FAS::Alignment_report make_orthogonal_disk(Mesh& tm, const FAS::Point_source_flow<Kernel>& flow, std::size_t faces)
+inline FAS::Alignment_report make_orthogonal_disk(Mesh& tm, const FAS::Point_source_flow<Kernel>& flow,
+                                                  std::size_t faces)
 {
   FAS::make_disk_patch(tm, Point(0, 0, 1), Vector(0.3, 0, 1), 0.6, faces);
   const FAS::Alignment_report report = FAS::align_to_flow(tm, flow, FAS::Alignment::ORTHOGONAL);
