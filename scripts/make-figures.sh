@@ -30,5 +30,6 @@ if [ ! -f "$work/main_job/orthogonal_stream_surfaces.png" ]; then
 fi
 cp "$work/main_job/orthogonal_seed_curves.png" "$fig/fas_seeding_seed_curves.png"
 cp "$work/main_job/orthogonal_stream_surfaces.png" "$fig/fas_seeding_stream_surfaces.png"
+cp "$work/main_job/orthogonal_stream_lines.png" "$fig/fas_seeding_stream_lines.png"
 echo "make-figures: wrote $fig/fas_texture_noise.png, fas_texture_arrows.png, fas_texture_seed_curves.png,"
-echo "  fas_seeding_seed_curves.png, fas_seeding_stream_surfaces.png"
+echo "  fas_seeding_seed_curves.png, fas_seeding_stream_surfaces.png, fas_seeding_stream_lines.png"

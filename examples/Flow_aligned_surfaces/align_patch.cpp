@@ -224,6 +224,16 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
     }
     number_of_lines = lines.size();
     ok = FAS::IO::write_VTP_polylines((out / (name + "_stream_lines.vtp")).string(), lines, {}, {}, &error);
+    if (ok && pictures) { // the stream lines through the seeding surface (Figure 5)
+      Surface_rendering with_lines;
+      with_lines.face_scalars = face_fluxes(tm, scene.flow);
+      for (const Polyline& line : lines) {
+        with_lines.polylines.emplace_back();
+        for (const Point& p : line)
+          with_lines.polylines.back().push_back({p.x(), p.y(), p.z()});
+      }
+      write_picture(out / (name + "_stream_lines.png"), tm, with_lines);
+    }
   }
   if (!ok) {
     std::cerr << "error: " << error << "\n";
