@@ -146,6 +146,19 @@ std::optional<std::ofstream> open_output(const std::filesystem::path& path)
 
 using Polyline = std::vector<Point>;
 
+// A picture of `tm` coloured by per-face flux with `lines` drawn on it.
+Surface_rendering flux_with_polylines(const Mesh& tm, const Flow& flow, const std::vector<Polyline>& lines)
+{
+  Surface_rendering what;
+  what.face_scalars = face_fluxes(tm, flow);
+  for (const Polyline& line : lines) {
+    what.polylines.emplace_back();
+    for (const Point& p : line)
+      what.polylines.back().push_back({p.x(), p.y(), p.z()});
+  }
+  return what;
+}
+
 // The seeding workflow on the aligned surface `tm` of `deformation`: seed curves from its
 // parametrization, a stream surface from each (forward and backward, arc-length time lines up to
 // twice the patch size), and stream lines from seed points on an orthogonal surface; all written
@@ -225,14 +238,7 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
     number_of_lines = lines.size();
     ok = FAS::IO::write_VTP_polylines((out / (name + "_stream_lines.vtp")).string(), lines, {}, {}, &error);
     if (ok && pictures) { // the stream lines through the seeding surface (Figure 5)
-      Surface_rendering with_lines;
-      with_lines.face_scalars = face_fluxes(tm, scene.flow);
-      for (const Polyline& line : lines) {
-        with_lines.polylines.emplace_back();
-        for (const Point& p : line)
-          with_lines.polylines.back().push_back({p.x(), p.y(), p.z()});
-      }
-      write_picture(out / (name + "_stream_lines.png"), tm, with_lines);
+      write_picture(out / (name + "_stream_lines.png"), tm, flux_with_polylines(tm, scene.flow, lines));
     }
   }
   if (!ok) {
@@ -245,14 +251,9 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
             << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
             << "\n";
   if (pictures) {
-    Surface_rendering with_seeds;
-    with_seeds.face_scalars = face_fluxes(tm, scene.flow);
-    for (const Polyline& curve : seed_curves) {
-      with_seeds.polylines.emplace_back();
-      for (const Point& p : curve)
-        with_seeds.polylines.back().push_back({p.x(), p.y(), p.z()});
-    }
-    if (write_picture(out / (name + "_seed_curves.png"), tm, with_seeds) && !surfaces.is_empty()) {
+    if (write_picture(out / (name + "_seed_curves.png"), tm,
+                      flux_with_polylines(tm, scene.flow, seed_curves)) &&
+        !surfaces.is_empty()) {
       // The stream surfaces coloured by their time-line parameter |t| (Figure 3's time lines).
       Surface_rendering by_time;
       double largest = 0;
