@@ -124,6 +124,20 @@ void BM_Grid_masked_random(benchmark::State& state)
   run_queries(state, grid(true), points);
 }
 
+void BM_Grid_tricubic_coherent(benchmark::State& state)
+{
+  static const std::vector<Point_3> points = coherent_points();
+  static const Grid cubic = grid(false).with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+  run_queries(state, cubic, points);
+}
+
+void BM_Grid_tricubic_random(benchmark::State& state)
+{
+  static const std::vector<Point_3> points = random_points();
+  static const Grid cubic = grid(false).with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+  run_queries(state, cubic, points);
+}
+
 // The grid's copy is what a deformation holds; it must cost a few pointer copies.
 void BM_Grid_copy(benchmark::State& state)
 {
@@ -140,4 +154,6 @@ BENCHMARK(BM_Grid_coherent)->Repetitions(7)->ReportAggregatesOnly(true);
 BENCHMARK(BM_Grid_random)->Repetitions(7)->ReportAggregatesOnly(true);
 BENCHMARK(BM_Grid_masked_coherent)->Repetitions(7)->ReportAggregatesOnly(true);
 BENCHMARK(BM_Grid_masked_random)->Repetitions(7)->ReportAggregatesOnly(true);
+BENCHMARK(BM_Grid_tricubic_coherent)->Repetitions(7)->ReportAggregatesOnly(true);
+BENCHMARK(BM_Grid_tricubic_random)->Repetitions(7)->ReportAggregatesOnly(true);
 BENCHMARK(BM_Grid_copy)->Repetitions(7)->ReportAggregatesOnly(true);

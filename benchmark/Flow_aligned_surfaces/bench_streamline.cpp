@@ -302,6 +302,11 @@ int main(int argc, char** argv)
               "drift_med", "drift_max", "deviation", "mean_len", "reasons");
   print("FAS grid (rtol 1e-8, default)", run_ours(grid, seeds, max_length, runs, 1e-8, &reference));
   print("FAS grid (rtol 1e-6)", run_ours(grid, seeds, max_length, runs, 1e-6, &reference));
+  // The same samples interpolated tricubically: its own reference lines (the field differs).
+  const auto cubic = grid.with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+  const std::vector<Line> cubic_reference = our_lines(cubic, seeds, max_length, 1e-12, unused, 1e-3);
+  print("FAS tricubic grid (rtol 1e-8)", run_ours(cubic, seeds, max_length, runs, 1e-8, &cubic_reference));
+  print("FAS tricubic grid (rtol 1e-6)", run_ours(cubic, seeds, max_length, runs, 1e-6, &cubic_reference));
 #ifdef FAS_HAVE_VTK_FLOW_PATHS
   print("VTK RK45 grid (MaximumError 1e-6)", run_vtk(grid, h, seeds, max_length, runs, 1e-6, &reference));
   print("VTK RK45 grid (MaximumError 1e-8)", run_vtk(grid, h, seeds, max_length, runs, 1e-8, &reference));

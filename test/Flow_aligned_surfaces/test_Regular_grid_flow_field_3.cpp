@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Regular_grid_flow_field_3: trilinear interpolation against closed-form trilinear fields, the
-// closed domain box, the node mask, sampling, shared storage and the messages for bad input.
+// closed domain box, the node mask, sampling, shared storage and the messages for bad input;
+// the tricubic interpolation against fields quadratic in each coordinate, its order of
+// convergence, its continuous derivatives and its fallback next to solid nodes.
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 
@@ -403,3 +405,188 @@ TEST(RegularGridFlowField3, BadInputThrowsWithTheArgumentsName)
 }
 
 } // namespace
+
+// --- Grid_interpolation::TRICUBIC --------------------------------------------------------------
+
+namespace {
+
+// A field quadratic in each coordinate (products of quadratics and a general quadratic), which
+// the Catmull–Rom blend with quadratic extrapolation at the box reproduces exactly.
+Vector_3 triquadratic(double x, double y, double z)
+{
+  return Vector_3((1. + 0.5 * x - 0.3 * x * x) * (2. - y + 0.2 * y * y) * (0.7 + 0.4 * z - 0.25 * z * z),
+                  x * x - 2. * x * y + 0.5 * y * z + 0.3 * z * z - x + 1.,
+                  (x - 0.2) * (x + 1.1) * (y * y - 0.5) + 2. * z * z * x);
+}
+
+Vector_3 smooth_field(double x, double y, double z)
+{
+  return Vector_3(std::sin(x) * std::cos(y), std::sin(y + z), std::cos(x * z));
+}
+
+// The largest component error at `count` random points of the grid's box.
+double max_error_at_random_points(const Grid& g, const std::function<Vector_3(double, double, double)>& f,
+                                  int count, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  double worst = 0;
+  for (int s = 0; s < count; ++s) {
+    const Point_3 p = random_point_in(g.bbox(), rng);
+    const std::optional<Vector_3> v = g(p);
+    EXPECT_TRUE(v.has_value()) << p;
+    if (!v)
+      continue;
+    const Vector_3 d = *v - f(p.x(), p.y(), p.z());
+    worst = std::max({worst, std::abs(d.x()), std::abs(d.y()), std::abs(d.z())});
+  }
+  return worst;
+}
+
+Grid smooth_grid(std::size_t nodes_per_axis)
+{
+  const Point_3 o(0., 0., 0.);
+  const double h = 2. / double(nodes_per_axis - 1);
+  const Dimensions n = {nodes_per_axis, nodes_per_axis, nodes_per_axis};
+  return Grid(o, Vector_3(h, h, h), n, node_values(o, Vector_3(h, h, h), n, smooth_field));
+}
+
+} // namespace
+
+TEST(RegularGridFlowField3Tricubic, IsOptInAndSharesTheNodeArrays)
+{
+  const Grid g = smooth_grid(5);
+  EXPECT_EQ(g.interpolation(), FAS::Grid_interpolation::TRILINEAR);
+  const Grid c = g.with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+  EXPECT_EQ(c.interpolation(), FAS::Grid_interpolation::TRICUBIC);
+  EXPECT_EQ(g.interpolation(), FAS::Grid_interpolation::TRILINEAR);
+  EXPECT_EQ(c.values().data(), g.values().data());
+  EXPECT_EQ(c.with_interpolation(FAS::Grid_interpolation::TRILINEAR)(Point_3(0.3, 0.7, 1.1)),
+            g(Point_3(0.3, 0.7, 1.1)));
+}
+
+TEST(RegularGridFlowField3Tricubic, ReproducesFieldsQuadraticInEachCoordinateUpToTheBox)
+{
+  // Trilinear interpolation cannot do this (it is exact for trilinear fields only), so the test
+  // sees whether the cubic blend and the extrapolation at the faces are right, in every cell.
+  for (const Dimensions& n : {kDims, Dimensions{3, 4, 6}}) {
+    const Grid g = Grid(kOrigin, kSpacing, n, node_values(kOrigin, kSpacing, n, triquadratic))
+                       .with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+    const double scale = max_abs_node_value(g);
+    EXPECT_LE(max_error_at_random_points(g, triquadratic, 4000, 11), 5e-6 * scale);
+    // The trilinear blend of the same nodes is off by far more.
+    EXPECT_GE(max_error_at_random_points(g.with_interpolation(FAS::Grid_interpolation::TRILINEAR),
+                                         triquadratic, 4000, 11),
+              1e-3 * scale);
+  }
+}
+
+TEST(RegularGridFlowField3Tricubic, TwoNodesAlongAnAxisAreLinearAlongIt)
+{
+  // With 2 nodes along z, z is blended linearly: a field quadratic in x and y, linear in z, is
+  // reproduced.
+  const auto f = [](double x, double y, double z) {
+    return Vector_3(x * x * (1. + z), y * y - x * z, 2. - z + x * y);
+  };
+  const Dimensions n = {5, 4, 2};
+  const Grid g = Grid(kOrigin, kSpacing, n, node_values(kOrigin, kSpacing, n, f))
+                     .with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+  EXPECT_LE(max_error_at_random_points(g, f, 2000, 5), 5e-6 * max_abs_node_value(g));
+}
+
+TEST(RegularGridFlowField3Tricubic, ReturnsTheNodeValuesAtTheNodes)
+{
+  // A dyadic grid, so that the node positions give cell fractions of exactly 0 (a non-dyadic
+  // one gives fractions of a few ulps, and values within rounding of the node's).
+  const Grid g = smooth_grid(9).with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+  for (std::size_t k = 0; k < 9; ++k)
+    for (std::size_t j = 0; j < 9; ++j)
+      for (std::size_t i = 0; i < 9; ++i) {
+        const std::optional<Vector_3> v = g(g.node_point(i, j, k));
+        ASSERT_TRUE(v.has_value());
+        EXPECT_EQ(*v, g.node_value(i, j, k)) << i << " " << j << " " << k;
+      }
+}
+
+TEST(RegularGridFlowField3Tricubic, ConvergesWithThirdOrder)
+{
+  // Halving h divides the error of a third-order interpolation by 8 (of the trilinear one by 4);
+  // the error is measured over the whole box, boundary cells included (their one-sided
+  // extrapolation has a larger constant, so the coarsest grid here is already fine: 17^3).
+  const auto error = [](std::size_t n, FAS::Grid_interpolation interpolation) {
+    return max_error_at_random_points(smooth_grid(n).with_interpolation(interpolation), smooth_field, 4000, 3);
+  };
+  const double e17 = error(17, FAS::Grid_interpolation::TRICUBIC);
+  const double e33 = error(33, FAS::Grid_interpolation::TRICUBIC);
+  const double e65 = error(65, FAS::Grid_interpolation::TRICUBIC);
+  EXPECT_GE(e17 / e33, 5.5) << e17 << " " << e33;
+  EXPECT_GE(e33 / e65, 6.5) << e33 << " " << e65;
+  const double linear33 = error(33, FAS::Grid_interpolation::TRILINEAR);
+  const double linear65 = error(65, FAS::Grid_interpolation::TRILINEAR);
+  EXPECT_LE(linear33 / linear65, 4.5) << "the trilinear blend is second order";
+  EXPECT_LE(e65, linear65 / 20.) << e65 << " against " << linear65;
+}
+
+TEST(RegularGridFlowField3Tricubic, IsContinuouslyDifferentiableAcrossCellFaces)
+{
+  // One-sided difference quotients ε apart on both sides of a node plane: the trilinear field's
+  // derivative jumps there by O(h f''), the tricubic one's agree to O(ε f'').
+  const Grid linear = smooth_grid(9);
+  const Grid cubic = linear.with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+  const double h = 0.25, eps = 1e-6;
+  const auto jump = [&](const Grid& g, const Point_3& p, const Vector_3& axis) {
+    const Vector_3 right = (*g(p + eps * axis) - *g(p)) / eps;
+    const Vector_3 left = (*g(p) - *g(p - eps * axis)) / eps;
+    return std::sqrt((right - left).squared_length());
+  };
+  const Vector_3 axes[3] = {Vector_3(1, 0, 0), Vector_3(0, 1, 0), Vector_3(0, 0, 1)};
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(0.1, 1.9);
+  std::uniform_int_distribution<int> node(1, 7); // interior node planes; 1 and 7 border the boundary cells
+  double cubic_total = 0, linear_total = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int a = trial % 3;
+    double x[3] = {u(rng), u(rng), u(rng)};
+    x[a] = h * node(rng);
+    const Point_3 p(x[0], x[1], x[2]);
+    const double cubic_jump = jump(cubic, p, axes[a]);
+    const double linear_jump = jump(linear, p, axes[a]);
+    EXPECT_LE(cubic_jump, 1e-4) << p << " axis " << a;
+    cubic_total += cubic_jump;
+    linear_total += linear_jump;
+  }
+  EXPECT_GE(linear_total / 60., 1e-2) << "the trilinear derivative should jump: the test would see nothing";
+  EXPECT_LE(cubic_total, 1e-3 * linear_total);
+}
+
+TEST(RegularGridFlowField3Tricubic, NextToSolidNodesFallsBackToTrilinear)
+{
+  // 9^3 nodes, node (4, 4, 4) solid: the domain is the trilinear one; cells with the solid node in
+  // their 4^3 stencil are trilinear, the others are the tricubic blend of the unmasked grid.
+  const Dimensions n = {9, 9, 9};
+  const Point_3 o(0., 0., 0.);
+  const Vector_3 h(0.25, 0.25, 0.25);
+  std::vector<float> values = node_values(o, h, n, smooth_field);
+  std::vector<unsigned char> mask(9 * 9 * 9, 1);
+  mask[4 + 9 * (4 + 9 * 4)] = 0;
+  const Grid unmasked_cubic = Grid(o, h, n, values).with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+  const Grid masked_linear(o, h, n, values, mask);
+  const Grid masked_cubic = masked_linear.with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> u(0.05, 0.95);
+  for (int k = 0; k < 8; ++k)
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 8; ++i) {
+        const Point_3 p(0.25 * (i + u(rng)), 0.25 * (j + u(rng)), 0.25 * (k + u(rng)));
+        const std::optional<Vector_3> v = masked_cubic(p);
+        ASSERT_EQ(v.has_value(), masked_linear(p).has_value()) << p;
+        if (!v)
+          continue;
+        const auto near_solid = [](int c) { return c >= 2 && c <= 5; }; // 4 in {c-1, ..., c+2}
+        if (near_solid(i) && near_solid(j) && near_solid(k))
+          EXPECT_EQ(*v, *masked_linear(p)) << p;
+        else
+          EXPECT_EQ(*v, *unmasked_cubic(p)) << p;
+      }
+  EXPECT_FALSE(masked_cubic(Point_3(1.1, 1.1, 1.1)).has_value());
+  EXPECT_FALSE(masked_cubic(Point_3(2.01, 1.1, 1.1)).has_value()) << "outside the box";
+}

@@ -12,6 +12,7 @@
 #include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 #include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -71,6 +72,10 @@ void expect_parametrization(const Surface& s, const Polyline& seed)
 {
   ASSERT_GT(s.tm.number_of_faces(), 0u);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(s.tm));
+  std::size_t pinched = 0; // vertices where two pieces of the surface touch in one point only
+  for (Vertex v : s.tm.vertices())
+    pinched += CGAL::Polygon_mesh_processing::is_non_manifold_vertex(v, s.tm);
+  EXPECT_EQ(pinched, 0u) << "the surface must be a manifold, also where the front tore";
   EXPECT_EQ(s.report.number_of_refused_faces, 0u);
   EXPECT_EQ(s.report.number_of_vertices, s.tm.number_of_vertices());
   EXPECT_EQ(s.report.number_of_faces, s.tm.number_of_faces());

@@ -1,10 +1,11 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A model of `FlowField_3` sampled on a uniform grid: v(p) is the trilinear interpolation of
-// the velocities stored at the nx × ny × nz nodes  origin + (i hx, j hy, k hz), and std::nullopt
-// outside the closed box [origin, origin + ((nx-1) hx, (ny-1) hy, (nz-1) hz)] or where an
-// optional node mask marks the interpolation stencil as solid.
+// A model of `FlowField_3` sampled on a uniform grid: v(p) is the trilinear (or, on request,
+// tricubic) interpolation of the velocities stored at the nx × ny × nz nodes
+// origin + (i hx, j hy, k hz), and std::nullopt outside the closed box
+// [origin, origin + ((nx-1) hx, (ny-1) hy, (nz-1) hz)] or where an optional node mask marks the
+// cell as solid.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_REGULAR_GRID_FLOW_FIELD_3_H
 #define CGAL_FLOW_ALIGNED_SURFACES_REGULAR_GRID_FLOW_FIELD_3_H
@@ -14,6 +15,8 @@
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
+#include <CGAL/Flow_aligned_surfaces/Grid_interpolation.h>
+#include <CGAL/Flow_aligned_surfaces/internal/tricubic_grid.h>
 #include <CGAL/Flow_aligned_surfaces/internal/trilinear_grid.h>
 
 #include <algorithm>
@@ -33,8 +36,8 @@ namespace CGAL {
 namespace Flow_aligned_surfaces {
 
 /// \ingroup PkgFlowAlignedSurfacesFlows
-/// A velocity field given at the nodes of a uniform grid and trilinearly interpolated, a model
-/// of `FlowField_3`.
+/// A velocity field given at the nodes of a uniform grid and interpolated trilinearly (by
+/// default) or tricubically, a model of `FlowField_3`.
 ///
 /// The grid has `nx × ny × nz` nodes (at least 2 along each axis) at
 /// `origin + (i·hx, j·hy, k·hz)`.  The velocities are stored as 32-bit floats, interleaved
@@ -48,6 +51,16 @@ namespace Flow_aligned_surfaces {
 /// give a nonzero weight to a solid node.  So the interior of every cell touching a solid node is
 /// outside, and every closed cell whose 8 nodes are fluid is inside, including the faces it
 /// shares with solid cells.
+///
+/// `with_interpolation(Grid_interpolation::TRICUBIC)` returns the same field interpolated by
+/// tensor-product Catmull–Rom splines over the 4 × 4 × 4 nodes around each cell: continuously
+/// differentiable, exact for fields quadratic in each coordinate and third-order accurate, where
+/// the trilinear blend is second-order and has derivatives that jump at every cell face.  Stream
+/// lines and stream surfaces integrated on it keep the first integrals of the sampled flow an
+/// order of magnitude better (see the benchmarks in the manual), and the adaptive integrators
+/// reject fewer steps.  The domain is the same; a cell with a solid node among the 64 of its
+/// stencil is interpolated trilinearly, so next to solid nodes the field is continuous within a
+/// cell but may jump by O(h²) across the faces between such cells and tricubic ones.
 ///
 /// Copies share the node arrays (through `std::shared_ptr`), so copying a field is cheap and
 /// the arrays are never duplicated.  A query performs no allocation and no virtual call.
@@ -156,8 +169,9 @@ public:
   /// \name Evaluation
   /// @{
 
-  /// returns the trilinearly interpolated velocity at `p`, or `std::nullopt` if `p` is outside
-  /// the closed box or its interpolation stencil touches a solid node with a nonzero weight.
+  /// returns the interpolated velocity at `p` (see `interpolation()`), or `std::nullopt` if `p`
+  /// is outside the closed box or its trilinear stencil touches a solid node with a nonzero
+  /// weight.
   std::optional<Vector_3> operator()(const Point_3& p) const
   {
     const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
@@ -177,8 +191,33 @@ public:
       f[a] = (std::min)(t - static_cast<double>(c[a]), 1.);
       g[a] = 1. - f[a];
     }
+    if (interpolation_ == Grid_interpolation::TRICUBIC) {
+      const internal::Cubic_axis_stencil stencil[3] = {internal::cubic_axis_stencil(c[0], f[0], n_[0]),
+                                                       internal::cubic_axis_stencil(c[1], f[1], n_[1]),
+                                                       internal::cubic_axis_stencil(c[2], f[2], n_[2])};
+      double r[3];
+      if (internal::masked_tricubic_blend(v_, m_, stride_y_, stride_z_, stencil, r))
+        return Vector_3(FT(r[0]), FT(r[1]), FT(r[2]));
+    }
     return internal::masked_trilinear_vector<Vector_3, FT>(v_, m_, c[0] + stride_y_ * c[1] + stride_z_ * c[2],
                                                            stride_y_, stride_z_, f, g);
+  }
+
+  /// @}
+
+  /// \name Interpolation
+  /// @{
+
+  /// the interpolation of the node values, `Grid_interpolation::TRILINEAR` unless this field
+  /// was made by `with_interpolation()`
+  Grid_interpolation interpolation() const { return interpolation_; }
+
+  /// returns this field with the interpolation `interpolation`: a copy sharing the node arrays
+  Regular_grid_flow_field_3 with_interpolation(Grid_interpolation interpolation) const
+  {
+    Regular_grid_flow_field_3 r(*this);
+    r.interpolation_ = interpolation;
+    return r;
   }
 
   /// @}
@@ -341,6 +380,7 @@ private:
   // shared pointers keep alive in every copy).
   double lo_[3], hi_[3], h_[3], inv_h_[3];
   std::size_t stride_y_ = 0, stride_z_ = 0;
+  Grid_interpolation interpolation_ = Grid_interpolation::TRILINEAR;
   const float* v_ = nullptr;
   const unsigned char* m_ = nullptr;
 };
