@@ -9,6 +9,10 @@
 #include <cmath>
 #include <optional>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_Dormand_prince_integrator {
+
 namespace {
 
 using CGAL::Flow_aligned_surfaces::internal::Dormand_prince_integrator;
@@ -204,3 +208,5 @@ TEST(Dormand_prince_integrator, sink_stagnates)
 }
 
 } // namespace
+
+} // namespace test_Dormand_prince_integrator

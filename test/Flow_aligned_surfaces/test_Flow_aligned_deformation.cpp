@@ -19,6 +19,10 @@
 #include <limits>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_Flow_aligned_deformation {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -376,3 +380,5 @@ TEST(FlowAlignedDeformation, ParallelIterationsGiveTheSerialSurfaces)
 }
 
 } // namespace
+
+} // namespace test_Flow_aligned_deformation

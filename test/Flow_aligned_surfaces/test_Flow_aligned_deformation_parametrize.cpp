@@ -23,6 +23,10 @@
 #include <functional>
 #include <limits>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_Flow_aligned_deformation_parametrize {
+
 namespace {
 
 using namespace fas_test;
@@ -197,3 +201,5 @@ TEST(DeformationParametrize, BadInputIsRefusedAndTheMapsUntouched)
 }
 
 } // namespace
+
+} // namespace test_Flow_aligned_deformation_parametrize

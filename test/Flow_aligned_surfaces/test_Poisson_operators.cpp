@@ -13,6 +13,10 @@
 #include <cmath>
 #include <random>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_Poisson_operators {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -130,3 +134,5 @@ TEST(PoissonOperators, DegenerateFaceIsReported)
 }
 
 } // namespace
+
+} // namespace test_Poisson_operators

@@ -23,6 +23,10 @@
 #include <random>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_Rectilinear_grid_flow_field_3 {
+
 namespace {
 
 using namespace fas_test;
@@ -231,3 +235,5 @@ TEST(RectilinearGridFlowField3, BadInputThrowsWithTheAxisAndIndex)
 }
 
 } // namespace
+
+} // namespace test_Rectilinear_grid_flow_field_3

@@ -25,6 +25,10 @@
 #include <string>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_Regular_grid_flow_field_3 {
+
 namespace {
 
 using namespace fas_test;
@@ -590,3 +594,5 @@ TEST(RegularGridFlowField3Tricubic, NextToSolidNodesFallsBackToTrilinear)
   EXPECT_FALSE(masked_cubic(Point_3(1.1, 1.1, 1.1)).has_value());
   EXPECT_FALSE(masked_cubic(Point_3(2.01, 1.1, 1.1)).has_value()) << "outside the box";
 }
+
+} // namespace test_Regular_grid_flow_field_3

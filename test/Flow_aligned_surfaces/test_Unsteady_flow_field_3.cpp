@@ -24,6 +24,10 @@
 #include <random>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_Unsteady_flow_field_3 {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -213,3 +217,5 @@ TEST(UnsteadyFlowField, BadTimesAreRefusedWithIndexAndValues)
 }
 
 } // namespace
+
+} // namespace test_Unsteady_flow_field_3

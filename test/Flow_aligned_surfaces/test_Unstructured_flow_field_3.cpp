@@ -28,6 +28,10 @@
 #include <thread>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_Unstructured_flow_field_3 {
+
 namespace {
 
 using namespace fas_test;
@@ -606,3 +610,5 @@ TEST(UnstructuredFlowField3, FaceNeighboursAreFound)
 }
 
 } // namespace
+
+} // namespace test_Unstructured_flow_field_3

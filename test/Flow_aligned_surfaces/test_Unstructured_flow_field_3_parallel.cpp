@@ -27,6 +27,10 @@
 #include <random>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_Unstructured_flow_field_3_parallel {
+
 namespace {
 
 using namespace fas_test;
@@ -121,3 +125,5 @@ TEST(UnstructuredFlowField3Parallel, FaceNeighboursOfJitteredHexahedra)
 }
 
 } // namespace
+
+} // namespace test_Unstructured_flow_field_3_parallel

@@ -22,6 +22,10 @@
 #include <random>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_Unstructured_flow_field_3_walk {
+
 namespace {
 
 using namespace fas_test;
@@ -89,3 +93,5 @@ TEST(UnstructuredFlowField3Walk, PathsThroughTetrahedraGetTheLinearField)
 }
 
 } // namespace
+
+} // namespace test_Unstructured_flow_field_3_walk

@@ -17,6 +17,10 @@
 #include <type_traits>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_analytic_flow_fields {
+
 namespace {
 
 namespace FAS = CGAL::Flow_aligned_surfaces;
@@ -553,3 +557,5 @@ TEST(AnalyticFlowFields, CrawfisTornadoDomain)
 }
 
 } // namespace
+
+} // namespace test_analytic_flow_fields

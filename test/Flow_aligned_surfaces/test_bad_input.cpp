@@ -24,6 +24,10 @@
 #include <string>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_bad_input {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -498,3 +502,5 @@ TEST(BadInput, DisconnectedMeshAlignsEveryComponentTangentially)
 }
 
 } // namespace
+
+} // namespace test_bad_input

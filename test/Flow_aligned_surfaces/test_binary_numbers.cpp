@@ -13,6 +13,10 @@
 #include <cstddef>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_binary_numbers {
+
 namespace {
 
 namespace FI = CGAL::Flow_aligned_surfaces::internal;
@@ -100,3 +104,5 @@ TEST(BinaryNumbers, RunDecoderAgreesWithSingleValuesAtUnalignedPositions)
 }
 
 } // namespace
+
+} // namespace test_binary_numbers

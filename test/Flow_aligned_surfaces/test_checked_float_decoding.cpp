@@ -23,6 +23,10 @@
 #include <utility>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_checked_float_decoding {
+
 namespace {
 
 using namespace fas_test;
@@ -207,3 +211,5 @@ TEST(CheckedFloatDecoding, BinaryLegacyFileOfSeveralBlocks)
 }
 
 } // namespace
+
+} // namespace test_checked_float_decoding

@@ -19,6 +19,10 @@
 #include <limits>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_extract_iso_contours {
+
 namespace {
 
 using namespace fas_test;
@@ -236,3 +240,5 @@ TEST(ExtractIsoContours, BadInputIsRefusedAndNothingWritten)
 }
 
 } // namespace
+
+} // namespace test_extract_iso_contours

@@ -18,6 +18,10 @@
 #include <limits>
 #include <optional>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_flow_texture {
+
 namespace {
 
 using namespace fas_test;
@@ -272,3 +276,5 @@ TEST(FlowTexture, BadInputIsNamed)
 }
 
 } // namespace
+
+} // namespace test_flow_texture

@@ -30,6 +30,10 @@
 #include <sstream>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_flow_texture_IO {
+
 namespace {
 
 using namespace fas_test;
@@ -197,3 +201,5 @@ TEST(FlowTextureIO, VTKFindsTheTextureCoordinatesAndTheMaskInTheVTP)
 #endif
 
 } // namespace
+
+} // namespace test_flow_texture_IO

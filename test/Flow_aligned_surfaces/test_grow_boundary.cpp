@@ -41,6 +41,10 @@
 #include <limits>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_grow_boundary {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -500,3 +504,5 @@ TEST(GrowBoundaryBadInput, DeformationRejectsAcrossFlowWhenOrthogonalAndKeepsIts
 }
 
 } // namespace
+
+} // namespace test_grow_boundary

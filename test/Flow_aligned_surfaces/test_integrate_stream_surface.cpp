@@ -26,6 +26,10 @@
 #include <optional>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_integrate_stream_surface {
+
 namespace {
 
 using namespace fas_test;
@@ -389,3 +393,5 @@ TEST(IntegrateStreamSurface, BadSeedsAndParametersAreNamed)
 }
 
 } // namespace
+
+} // namespace test_integrate_stream_surface

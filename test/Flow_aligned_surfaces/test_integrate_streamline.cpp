@@ -22,6 +22,10 @@
 #include <optional>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_integrate_streamline {
+
 namespace {
 
 using namespace fas_test;
@@ -360,3 +364,5 @@ TEST(integrate_streamline, bad_input_is_refused_naming_the_parameter)
 }
 
 } // namespace
+
+} // namespace test_integrate_streamline

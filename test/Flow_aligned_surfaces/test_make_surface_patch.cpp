@@ -28,6 +28,10 @@
 #include <string>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_make_surface_patch {
+
 namespace {
 
 namespace FAS = CGAL::Flow_aligned_surfaces;
@@ -541,3 +545,5 @@ TEST(MakeSurfacePatch, BadInputThrowsNamingTheParameter)
 }
 
 } // namespace
+
+} // namespace test_make_surface_patch

@@ -12,6 +12,10 @@
 #include <cmath>
 #include <optional>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_measure {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -81,3 +85,5 @@ TEST(Measure, NoUsableSampleGivesZero)
 }
 
 } // namespace
+
+} // namespace test_measure

@@ -22,6 +22,10 @@
 #include <optional>
 #include <string>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_measure_alignment_angles {
+
 namespace {
 
 using namespace fas_test;
@@ -193,3 +197,5 @@ TEST(AlignmentAngles, NothingToMeasureIsAnError)
 }
 
 } // namespace
+
+} // namespace test_measure_alignment_angles

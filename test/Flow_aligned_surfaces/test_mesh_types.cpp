@@ -42,6 +42,10 @@
 #include <cmath>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_mesh_types {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -376,3 +380,5 @@ TEST(MeshTypesOpenMesh, DefaultFloatTriMeshAlignsThroughCGALsVertexPointMap)
 #endif
 
 } // namespace
+
+} // namespace test_mesh_types

@@ -19,6 +19,10 @@
 #include <optional>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_parametrize {
+
 namespace {
 
 using namespace fas_test;
@@ -368,3 +372,5 @@ TEST(GeodesicDistance, OtherComponentsAreInfinitelyFar)
 }
 
 } // namespace
+
+} // namespace test_parametrize

@@ -16,6 +16,10 @@
 #include <string>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_read_AmiraMesh {
+
 namespace {
 
 namespace FAS = CGAL::Flow_aligned_surfaces;
@@ -334,3 +338,5 @@ TEST(ReadAmiraMeshBadInput, NonNumericTokensAndNonFiniteValues)
 }
 
 } // namespace
+
+} // namespace test_read_AmiraMesh

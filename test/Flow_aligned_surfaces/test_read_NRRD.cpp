@@ -15,6 +15,10 @@
 #include <optional>
 #include <string>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_read_NRRD {
+
 namespace {
 
 namespace FAS = CGAL::Flow_aligned_surfaces;
@@ -287,3 +291,5 @@ TEST(ReadNRRDBadInput, NonNumericTokensAndNonFiniteValues)
 }
 
 } // namespace
+
+} // namespace test_read_NRRD

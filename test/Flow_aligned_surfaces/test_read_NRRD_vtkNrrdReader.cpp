@@ -37,6 +37,10 @@ TEST(ReadNRRDAgainstVTK, SkippedWithoutVTKIOImage)
 #include <cstddef>
 #include <string>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_read_NRRD_vtkNrrdReader {
+
 namespace {
 
 namespace FAS = CGAL::Flow_aligned_surfaces;
@@ -129,5 +133,8 @@ TEST(ReadNRRDAgainstVTK, DetachedHeaderAndRawFile)
 // tested against data compressed by zlib itself in test_read_NRRD.cpp.
 
 } // namespace
+
+} // namespace test_read_NRRD_vtkNrrdReader
+
 
 #endif

@@ -61,6 +61,10 @@ TEST(ReadVTKXML, SkippedWithoutVTK)
 #include <string>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_read_VTK_XML {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -876,5 +880,8 @@ TEST(ReadVTKXML, RealCylinderDataConvertedByVTKGivesTheStatedFigures)
 }
 
 } // namespace
+
+} // namespace test_read_VTK_XML
+
 
 #endif // FAS_HAVE_VTK

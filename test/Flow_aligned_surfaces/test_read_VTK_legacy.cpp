@@ -34,6 +34,10 @@
 #include <string>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_read_VTK_legacy {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -629,3 +633,5 @@ TEST(ReadVTKLegacyBadInput, MaskOfTheWrongSize)
 }
 
 } // namespace
+
+} // namespace test_read_VTK_legacy

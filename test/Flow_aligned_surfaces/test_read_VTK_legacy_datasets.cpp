@@ -36,6 +36,10 @@
 #include <utility>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_read_VTK_legacy_datasets {
+
 namespace {
 
 namespace FAS = CGAL::Flow_aligned_surfaces;
@@ -978,3 +982,5 @@ TEST(ReadVTKLegacyDatasetsBadInput, EveryTruncationAndRandomCorruptionFailsClean
 }
 
 } // namespace
+
+} // namespace test_read_VTK_legacy_datasets

@@ -14,6 +14,10 @@
 #include <utility>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_read_file {
+
 namespace FI = CGAL::Flow_aligned_surfaces::internal;
 
 namespace {
@@ -88,3 +92,5 @@ TEST(reserve_huge_pages, reserves_and_keeps_the_elements)
   EXPECT_EQ(v[2], 3.f);
   EXPECT_EQ(v[n - 1], 7.f);
 }
+
+} // namespace test_read_file

@@ -22,6 +22,10 @@
 #include <sstream>
 #include <string>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_read_flow_field {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -205,3 +209,5 @@ TEST(ReadFlowField, RealDataInBothForms)
 }
 
 } // namespace
+
+} // namespace test_read_flow_field

@@ -11,6 +11,10 @@
 #include <cmath>
 #include <string>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_read_session {
+
 namespace FAS = CGAL::Flow_aligned_surfaces;
 using Op = FAS::IO::Session_operation;
 
@@ -178,3 +182,5 @@ TEST(ReadSession, TheShippedSessionsAreValid)
     EXPECT_GE(grows, 1) << name; // ... and growing, as the issue asks
   }
 }
+
+} // namespace test_read_session

@@ -24,6 +24,10 @@
 #include <optional>
 #include <random>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_render_surface_PNG {
+
 namespace {
 
 using namespace fas_test;
@@ -240,6 +244,9 @@ TEST(RenderSurfacePNG, NaNParametrizationIsDrawnInTheMeanColour)
 }
 
 } // namespace
+
+} // namespace test_render_surface_PNG
+
 #else
 TEST(RenderSurfacePNG, NeedsVTKRenderingAndLibpng)
 {

@@ -21,6 +21,10 @@
 #include <string>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_replay_session {
+
 using namespace fas_test;
 using Mesh = CGAL::Surface_mesh<Point_3>;
 using Flow = FAS::Uniform_flow<K>;
@@ -171,3 +175,5 @@ TEST(ReplaySession, ARefusedOperationNamesItsSessionLine)
   EXPECT_EQ(deformation.number_of_iterations(), 1u);
   EXPECT_EQ(tm.number_of_faces(), deformation.mesh().number_of_faces());
 }
+
+} // namespace test_replay_session

@@ -18,6 +18,10 @@
 #include <limits>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_seeds {
+
 namespace {
 
 using namespace fas_test;
@@ -145,3 +149,5 @@ TEST(Seeds, BadInputIsRefusedAndNothingWritten)
 }
 
 } // namespace
+
+} // namespace test_seeds

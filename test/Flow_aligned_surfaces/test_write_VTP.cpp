@@ -16,6 +16,10 @@
 #include <string>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_write_VTP {
+
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -115,3 +119,5 @@ TEST(WriteVTP, FailureLeavesExistingFileAndNamesTheProblem)
 }
 
 } // namespace
+
+} // namespace test_write_VTP

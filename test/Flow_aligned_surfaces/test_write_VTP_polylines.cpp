@@ -25,6 +25,10 @@
 #include <string>
 #include <vector>
 
+// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
+// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+namespace test_write_VTP_polylines {
+
 namespace {
 
 using namespace fas_test;
@@ -101,3 +105,5 @@ TEST(write_VTP_polylines, wrong_array_size_leaves_the_file)
 }
 
 } // namespace
+
+} // namespace test_write_VTP_polylines
