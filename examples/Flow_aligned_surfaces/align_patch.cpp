@@ -26,7 +26,6 @@
 #include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
 #include <CGAL/Flow_aligned_surfaces/integrate_streamline.h>
 #include <CGAL/Flow_aligned_surfaces/seeds.h>
-#include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 
 #include <array>
@@ -201,16 +200,6 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
       std::cerr << name << ": seed curve skipped: " << e.what() << "\n";
     }
   }
-  // Where a front tore, two pieces can share a vertex; split it so that the surface is a
-  // manifold the measures accept (the copies keep u and t).
-  std::vector<std::vector<Mesh::Vertex_index>> split;
-  CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(
-      surfaces, CGAL::parameters::output_iterator(std::back_inserter(split)));
-  for (const auto& copies : split)
-    for (Mesh::Vertex_index v : copies) {
-      u[v] = u[copies.front()];
-      t[v] = t[copies.front()];
-    }
   std::vector<double> us, ts;
   for (Mesh::Vertex_index v : surfaces.vertices()) {
     us.push_back(u[v]);

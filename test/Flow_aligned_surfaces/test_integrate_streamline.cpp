@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iterator>
@@ -242,19 +243,28 @@ TEST(integrate_streamline, max_number_of_steps)
     EXPECT_NEAR(std::atan2(p.y(), p.x()), std::remainder(p.z() / c_helix, 2 * pi), 1e-8);
 }
 
+// v(x, t) = (-y, x, t) given by two steps at t = 0 and t = 2 (linear in time, so
+// Unsteady_flow_field_3 is exact); from (1, 0, 0.2) at t0 = 0.5: x(t) = R(t - t0) x0 in xy,
+// z = z0 + (t² - t0²)/2.
+struct Rising_rotation_step {
+  double t;
+  std::optional<Vector_3> operator()(const Point_3& p) const { return Vector_3(-p.y(), p.x(), t); }
+};
+const FAS::Unsteady_flow_field_3<Rising_rotation_step> rising_rotation({0., 2.},
+                                                                       {Rising_rotation_step{0.},
+                                                                        Rising_rotation_step{2.}});
+const double t0_rising = 0.5;
+Eigen::Vector3d rising_rotation_path(double t)
+{
+  const double t0 = t0_rising;
+  return Eigen::Vector3d(std::cos(t - t0), std::sin(t - t0), 0.2 + 0.5 * (t * t - t0 * t0));
+}
+
 TEST(integrate_pathline, unsteady_field_with_a_closed_form)
 {
-  // v(x, t) = (-y, x, t) given by two steps at t = 0 and t = 2 (linear in time, so
-  // Unsteady_flow_field_3 is exact): x(t) = R(t - t0) x0 in xy, z = z0 + (t² - t0²)/2.
-  struct Step {
-    double t;
-    std::optional<Vector_3> operator()(const Point_3& p) const { return Vector_3(-p.y(), p.x(), t); }
-  };
-  const FAS::Unsteady_flow_field_3<Step> field({0., 2.}, {Step{0.}, Step{2.}});
-  const double t0 = 0.5;
-  const auto exact = [&](double t) {
-    return Eigen::Vector3d(std::cos(t - t0), std::sin(t - t0), 0.2 + 0.5 * (t * t - t0 * t0));
-  };
+  const auto& field = rising_rotation;
+  const double t0 = t0_rising;
+  const auto exact = rising_rotation_path;
   std::vector<Point_3> points;
   const auto r = FAS::integrate_pathline(
       field, Point_3(1., 0., 0.2), t0, std::back_inserter(points),
@@ -275,6 +285,54 @@ TEST(integrate_pathline, unsteady_field_with_a_closed_form)
   EXPECT_EQ(r2.forward.termination, Streamline_termination::LEFT_DOMAIN);
   EXPECT_NEAR(r2.forward.integration_time, 1.5, 1e-8);
   EXPECT_LT((to_eigen(points.back()) - exact(2.)).norm(), 1e-7);
+}
+
+TEST(integrate_pathline, writes_the_time_of_every_step)
+{
+  // At the integrator's own steps (no output step) the times are not known in advance: every
+  // point must be the closed-form path line at the time written beside it.
+  const auto& field = rising_rotation;
+  const double t0 = t0_rising;
+  const auto exact = rising_rotation_path;
+  std::vector<Point_3> points;
+  std::vector<double> times;
+  const auto r = FAS::integrate_pathline(
+      field, Point_3(1., 0., 0.2), t0, std::back_inserter(points),
+      FAS::parameters::time_output_iterator(
+          std::back_inserter(times), FAS::parameters::integration_direction(Integration_direction::BOTH)));
+  ASSERT_EQ(times.size(), points.size());
+  ASSERT_GT(points.size(), 10u);
+  EXPECT_DOUBLE_EQ(times.front(), t0 - r.backward.integration_time);
+  EXPECT_DOUBLE_EQ(times.back(), t0 + r.forward.integration_time);
+  EXPECT_NEAR(times.front(), 0., 1e-8) << "backward to the start of the field's time range";
+  EXPECT_NEAR(times.back(), 2., 1e-8) << "forward to its end";
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (k > 0) {
+      EXPECT_GT(times[k], times[k - 1]);
+    }
+    EXPECT_LT((to_eigen(points[k]) - exact(times[k])).norm(), 1e-7) << "t = " << times[k];
+  }
+  EXPECT_EQ(std::count(times.begin(), times.end(), t0), 1) << "the seed, once, at t0";
+}
+
+TEST(integrate_streamline, writes_signed_integration_times)
+{
+  // A stream line's times are the signed integration times: negative on the backward half.
+  Eigen::Matrix3d A;
+  A << -0.1, -1., 0., 1., -0.1, 0., 0., 0., 0.2;
+  const Eigen::Vector3d x0(0.8, -0.3, 0.5);
+  std::vector<Point_3> points;
+  std::vector<double> times;
+  FAS::integrate_streamline(
+      linear_field(A), Point_3(x0[0], x0[1], x0[2]), std::back_inserter(points),
+      FAS::parameters::max_time(
+          2., FAS::parameters::integration_direction(
+                  Integration_direction::BOTH, FAS::parameters::time_output_iterator(std::back_inserter(times)))));
+  ASSERT_EQ(times.size(), points.size());
+  EXPECT_DOUBLE_EQ(times.front(), -2.);
+  EXPECT_DOUBLE_EQ(times.back(), 2.);
+  for (std::size_t k = 0; k < points.size(); ++k)
+    EXPECT_LT((to_eigen(points[k]) - (A * times[k]).exp() * x0).norm(), 1e-7) << "t = " << times[k];
 }
 
 TEST(integrate_streamline, linear_field_on_a_grid)

@@ -673,6 +673,17 @@ TEST(ReadVTKXML, LyingInlineCompressionHeadersAreRefused)
       {"the compressed DataArray 'velocity' has no complete compression header", "corrupt file"});
 }
 
+// Found by the fuzzer: a 2 KB compressed .vtu whose appended base64 data has "ImageData" pasted
+// into one array, so that the next array's compression header ends in padding after 6 bytes.
+// VTK 9.1 stops decoding there but allocates from the words it got (3e9 blocks, 12 GB).
+TEST(ReadVTKXML, ShortAppendedCompressionHeadersAreRefused)
+{
+  expect_read_fails<Cells>(
+      std::string(FAS_TEST_DATA_DIR) + "/vtu_appended_padding_in_compression_header.vtu",
+      {"the compressed DataArray 'offsets' has no complete compression header in its appended data",
+       "corrupt file"});
+}
+
 TEST(ReadVTKXML, UnsupportedCellsAreNamed)
 {
   Mixed_mesh m = mixed_mesh();

@@ -461,6 +461,15 @@ private:
         for (const auto& [u, node] : old_line)
           if (u >= first && u <= last)
             old_chain.push_back(node);
+        // After a tear, a piece can span a single node of the old time line: its fan would touch
+        // the strip below in that vertex only (a pinched, non-manifold vertex), so it gets a
+        // copy of the node of its own.
+        if (old_chain.size() == 1 && new_chain.size() >= 2 && m_nodes[old_chain.front()].vertex) {
+          const Node copy{m_nodes[old_chain.front()].x, m_nodes[old_chain.front()].u,
+                          m_nodes[old_chain.front()].tau, std::nullopt};
+          m_nodes.push_back(copy);
+          old_chain.front() = m_nodes.size() - 1;
+        }
         zip(old_chain, new_chain);
         if (new_piece.size() >= 2)
           next.push_back(std::move(new_piece));

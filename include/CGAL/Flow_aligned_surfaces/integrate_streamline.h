@@ -19,6 +19,7 @@
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/iterator.h>
 #include <CGAL/number_utils.h>
 
 #include <Eigen/Core>
@@ -204,7 +205,8 @@ double parameter_at_arc_length(const Integrator& dp, double ds)
   return 0.5 * (lo + hi);
 }
 
-// One direction from the seed; `emit(x)` receives the points after the seed, in order.
+// One direction from the seed; `emit(x, τ)` receives the points after the seed and their
+// integration times, in order.
 template <class Field, class Emit>
 Streamline_half_report integrate_half_line(const Field& f, const Eigen::Vector3d& seed, double t0,
                                            int direction, const Streamline_options& o, Emit emit)
@@ -250,19 +252,19 @@ Streamline_half_report integrate_half_line(const Field& f, const Eigen::Vector3d
     if (o.output_time_step > 0) {
       for (; before_end(next_sample * o.output_time_step, tau_end); ++next_sample) {
         last_emitted = next_sample * o.output_time_step;
-        emit(dp.dense_output(last_emitted));
+        emit(dp.dense_output(last_emitted), last_emitted);
       }
     }
     else if (o.output_length_step > 0) {
       for (; before_end(next_sample * o.output_length_step, length_end); ++next_sample) {
         last_emitted = parameter_at_arc_length(dp, next_sample * o.output_length_step - length);
-        emit(dp.dense_output(last_emitted));
+        emit(dp.dense_output(last_emitted), last_emitted);
       }
     }
     const bool every_step = !(o.output_time_step > 0) && !(o.output_length_step > 0);
     if ((every_step || stop) && tau_end > last_emitted) {
       last_emitted = tau_end;
-      emit(tau_end == dp.parameter() ? dp.position() : dp.dense_output(tau_end));
+      emit(tau_end == dp.parameter() ? dp.position() : dp.dense_output(tau_end), tau_end);
     }
     report.integration_time = tau_end;
     length = length_end;
@@ -279,11 +281,12 @@ Streamline_half_report integrate_half_line(const Field& f, const Eigen::Vector3d
   return report;
 }
 
-// Both halves as requested, written to `out` as points of the kernel of `Point_3` (the seed once).
-template <class Point_3, class ConstructPoint, class Field, class OutputIterator>
+// Both halves as requested, written to `out` as points of the kernel of `Point_3` (the seed once),
+// and the time of each point to `out_times`: t0 - τ on the backward half, t0 + τ on the forward one.
+template <class Point_3, class ConstructPoint, class Field, class OutputIterator, class TimeOutputIterator>
 Streamline_report integrate_line(const Field& f, const Point_3& seed, double t0, OutputIterator& out,
-                                 const ConstructPoint& construct_point, const Streamline_options& o,
-                                 const std::string& caller)
+                                 TimeOutputIterator out_times, const ConstructPoint& construct_point,
+                                 const Streamline_options& o, const std::string& caller)
 {
   const Eigen::Vector3d x0(CGAL::to_double(seed.x()), CGAL::to_double(seed.y()), CGAL::to_double(seed.z()));
   if (!x0.allFinite()) {
@@ -293,9 +296,9 @@ Streamline_report integrate_line(const Field& f, const Point_3& seed, double t0,
     throw std::invalid_argument(msg.str());
   }
   Streamline_report report;
-  std::vector<Eigen::Vector3d> backward, forward;
-  const auto collect = [](std::vector<Eigen::Vector3d>& points) {
-    return [&points](const Eigen::Vector3d& x) { points.push_back(x); };
+  std::vector<std::pair<Eigen::Vector3d, double>> backward, forward; // points and τ
+  const auto collect = [](std::vector<std::pair<Eigen::Vector3d, double>>& points) {
+    return [&points](const Eigen::Vector3d& x, double tau) { points.emplace_back(x, tau); };
   };
   if (o.direction != Integration_direction::FORWARD)
     report.backward = integrate_half_line(f, x0, t0, -1, o, collect(backward));
@@ -305,12 +308,25 @@ Streamline_report integrate_line(const Field& f, const Point_3& seed, double t0,
     report.backward.termination = report.forward.termination = Streamline_termination::SEED_OUTSIDE_DOMAIN;
     return report;
   }
-  const auto write = [&](const Eigen::Vector3d& x) { *out++ = construct_point(x[0], x[1], x[2]); };
-  std::for_each(backward.rbegin(), backward.rend(), write);
-  write(x0);
-  std::for_each(forward.begin(), forward.end(), write);
+  const auto write = [&](const Eigen::Vector3d& x, double t) {
+    *out++ = construct_point(x[0], x[1], x[2]);
+    *out_times++ = t;
+  };
+  for (auto b = backward.rbegin(); b != backward.rend(); ++b)
+    write(b->first, t0 - b->second);
+  write(x0, t0);
+  for (const auto& [x, tau] : forward)
+    write(x, t0 + tau);
   report.number_of_points = backward.size() + 1 + forward.size();
   return report;
+}
+
+// The output iterator of the named parameter `time_output_iterator`, or one that drops the times.
+template <class NamedParameters>
+auto time_output_iterator(const NamedParameters& np)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::time_output_iterator_t()),
+                                      CGAL::Emptyset_iterator());
 }
 
 template <class Vector_3>
@@ -410,6 +426,13 @@ points follow the flow; the seed is written once.
     \cgalParamType{`double`, positive and finite}
     \cgalParamDefault{the steps' ends}
   \cgalParamNEnd
+  \cgalParamNBegin{time_output_iterator}
+    \cgalParamDescription{receives the time of every point written, in the same order: the signed
+      integration time \f$ \pm\tau \f$ (negative on the backward half, 0 at the seed); for
+      `integrate_pathline()` the time \f$ t_0 \pm \tau \f$ of the path line's point}
+    \cgalParamType{an output iterator accepting `double`}
+    \cgalParamDefault{the times are not written}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns the report: per direction why it stopped, its length, integration time and numbers of
@@ -434,7 +457,8 @@ Streamline_report integrate_streamline(const FlowField& field, const Point_3& se
       return std::nullopt;
     return internal::to_eigen_vector(*v);
   };
-  return internal::integrate_line(f, seed, 0., out_points, construct_point, o, caller);
+  return internal::integrate_line(f, seed, 0., out_points, internal::time_output_iterator(np), construct_point,
+                                  o, caller);
 }
 
 /*!
@@ -485,7 +509,8 @@ Streamline_report integrate_pathline(const UnsteadyFlowField& field, const Point
       return std::nullopt;
     return internal::to_eigen_vector(*v);
   };
-  return internal::integrate_line(f, seed, t0, out_points, construct_point, o, caller);
+  return internal::integrate_line(f, seed, t0, out_points, internal::time_output_iterator(np), construct_point,
+                                  o, caller);
 }
 
 } // namespace Flow_aligned_surfaces

@@ -59,6 +59,7 @@ CGAL_FAS_DECLARE_TAG(tear_angle)
 CGAL_FAS_DECLARE_TAG(max_number_of_vertices)
 CGAL_FAS_DECLARE_TAG(seed_parameter_map)
 CGAL_FAS_DECLARE_TAG(integration_time_map)
+CGAL_FAS_DECLARE_TAG(time_output_iterator)
 #undef CGAL_FAS_DECLARE_TAG
 } // namespace internal_np
 /// \endcond
@@ -275,6 +276,19 @@ integration_time_map(const VertexDoubleMap& map, const NamedParameters& np = Nam
 {
   return CGAL::Named_function_parameters<VertexDoubleMap, internal_np::integration_time_map_t,
                                          NamedParameters>(map, np);
+}
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// `integrate_streamline()` and `integrate_pathline()` write the time of every point they write
+/// through this output iterator (accepting `double`), in the same order: the signed integration
+/// time of a stream line's point, the time \f$ t_0 \pm \tau \f$ of a path line's.  Default: not
+/// written.
+template <typename OutputIterator, typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<OutputIterator, internal_np::time_output_iterator_t, NamedParameters>
+time_output_iterator(const OutputIterator& out, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<OutputIterator, internal_np::time_output_iterator_t,
+                                         NamedParameters>(out, np);
 }
 
 } // namespace parameters
