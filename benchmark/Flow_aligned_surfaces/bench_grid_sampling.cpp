@@ -124,18 +124,23 @@ void BM_Grid_masked_random(benchmark::State& state)
   run_queries(state, grid(true), points);
 }
 
+// The unmasked grid's samples, interpolated tricubically (a copy sharing them).
+const Grid& tricubic_grid()
+{
+  static const Grid cubic = grid(false).with_interpolation(FAS::Grid_interpolation::TRICUBIC);
+  return cubic;
+}
+
 void BM_Grid_tricubic_coherent(benchmark::State& state)
 {
   static const std::vector<Point_3> points = coherent_points();
-  static const Grid cubic = grid(false).with_interpolation(FAS::Grid_interpolation::TRICUBIC);
-  run_queries(state, cubic, points);
+  run_queries(state, tricubic_grid(), points);
 }
 
 void BM_Grid_tricubic_random(benchmark::State& state)
 {
   static const std::vector<Point_3> points = random_points();
-  static const Grid cubic = grid(false).with_interpolation(FAS::Grid_interpolation::TRICUBIC);
-  run_queries(state, cubic, points);
+  run_queries(state, tricubic_grid(), points);
 }
 
 // The grid's copy is what a deformation holds; it must cost a few pointer copies.
