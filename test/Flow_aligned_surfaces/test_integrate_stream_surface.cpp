@@ -2,7 +2,8 @@
 // uniform and linear flows and of a path surface in a flow linear in time (closed forms of
 // x(u, τ)); first integrals (Hill's vortex: the Stokes stream function; ABC with C = 0:
 // A cos z + B sin x; the cylinder: its stream function) constant from the seed point c(u) of
-// every vertex; the front spacing in [h/2, 2h]; a front split by a cylinder; bad input.
+// every vertex; the front spacing in [h/2, 2h]; a front split by a cylinder; a surface that
+// reaches the boundary of a box where its particles leave (the exact trapezoid); bad input.
 
 #include "expect_invalid_argument.h"
 #include "test_kernel.h"
@@ -12,6 +13,7 @@
 #include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
 #include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
@@ -70,9 +72,11 @@ Point_3 seed_point(const Polyline& seed, double u)
 }
 
 // Every vertex's t is a whole number of time-line steps (or the last time line's, at the
-// maximal integration time), its u is in [0, L], and the vertices
-// with t = 0 are their seed points.
-void expect_parametrization(const Surface& s, const Polyline& seed)
+// maximal integration time), except where its particle left the domain (`on_boundary`, when the
+// field has a boundary: `on_boundary(point, t)`), its u is in [0, L], and the vertices with
+// t = 0 are their seed points.
+void expect_parametrization(const Surface& s, const Polyline& seed,
+                            const std::function<bool(const Point_3&, double)>& on_boundary = nullptr)
 {
   ASSERT_GT(s.tm.number_of_faces(), 0u);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(s.tm));
@@ -86,8 +90,9 @@ void expect_parametrization(const Surface& s, const Polyline& seed)
   const double step = s.report.time_line_step;
   for (Vertex v : s.tm.vertices()) {
     const double k = s.t[v] / step;
-    if (s.t[v] != s.report.final_parameter) {
-      ASSERT_NEAR(k, std::round(k), 1e-9) << "t = " << s.t[v];
+    if (s.t[v] != s.report.final_parameter && std::abs(k - std::round(k)) > 1e-9) {
+      ASSERT_TRUE(on_boundary && on_boundary(s.tm.point(v), s.t[v]))
+          << "t = " << s.t[v] << " between time lines at " << s.tm.point(v);
     }
     ASSERT_GE(s.u[v], 0.);
     ASSERT_LE(s.u[v], s.report.seed_length * (1 + 1e-15));
@@ -251,6 +256,68 @@ TEST(IntegrateStreamSurface, CylinderSplitsTheFront)
             1e-6);
 }
 
+// The uniform flow U = (1, 0, 0) in the box [-2, 1] x [-2, 2]^2 from a seed segment in z = 0
+// from (x0, y0, 0) to (x1, y1, 0) slanted across it: the particle from c(u) = (x, y, 0) leaves
+// through x = 1 at t = 1 - x.  The surface is the trapezoid between the seed and x = 1, of area
+// |y1 - y0| (1 - (x0 + x1) / 2).  Checks the surface against it; returns the report.
+FAS::Stream_surface_report expect_the_trapezoid_up_to_the_box_face(const Polyline& seed, double h, double step)
+{
+  const auto boxed = [](const Point_3& p) -> std::optional<Vector_3> {
+    if (p.x() < -2 || p.x() > 1 || std::abs(p.y()) > 2 || std::abs(p.z()) > 2)
+      return std::nullopt;
+    return Vector_3(1, 0, 0);
+  };
+  // The integrator's boundary tolerance, 1e-10 + 1e-8 |x|, with |x| <= 2.
+  const double tolerance = 3e-8;
+  const auto on_boundary = [&](const Point_3& p, double) { return std::abs(p.x() - 1) <= tolerance; };
+  const Surface s(boxed, seed,
+                  FAS::parameters::front_spacing(
+                      h, FAS::parameters::time_line_step(
+                             step, FAS::parameters::max_time(
+                                       4.0, FAS::parameters::max_number_of_time_lines(std::size_t(1000))))));
+  expect_parametrization(s, seed, on_boundary);
+  EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::NO_PARTICLE_LEFT) << s.report.message;
+  std::size_t at_boundary = 0;
+  for (Vertex v : s.tm.vertices()) {
+    const Point_3 c = seed_point(seed, s.u[v]);
+    EXPECT_LE(std::sqrt(CGAL::squared_distance(s.tm.point(v), c + s.t[v] * Vector_3(1, 0, 0))), 1e-12);
+    EXPECT_LE(s.tm.point(v).x(), 1.);
+    if (on_boundary(s.tm.point(v), s.t[v])) {
+      ++at_boundary;
+      EXPECT_NEAR(s.t[v], 1 - c.x(), tolerance) << "u = " << s.u[v];
+    }
+  }
+  // Every particle of the seed (L / h + 1 of them) ends on the boundary.
+  const Point_3 &first = seed.front(), &last = seed.back();
+  EXPECT_GE(at_boundary, static_cast<std::size_t>(std::sqrt(CGAL::squared_distance(first, last)) / h));
+  // The surface reaches the boundary all along, without notches between the exits: the area
+  // is the trapezoid's within the boundary tolerance times the boundary's length (stopping on
+  // the last time line reached would miss up to Δ along it).
+  const double width = std::abs(last.y() - first.y());
+  const double exact = width * (1 - (first.x() + last.x()) / 2);
+  const double area = CGAL::Polygon_mesh_processing::area(s.tm);
+  std::cout.precision(10);
+  std::cout << "box: area " << area << " of " << exact << ", " << at_boundary << " vertices on the boundary, "
+            << s.report.number_of_inserted_particles << " inserted, " << s.report.number_of_lost_particles
+            << " lost\n";
+  EXPECT_LE(area, exact + 1e-9);
+  EXPECT_GE(area, exact - 1e-7 * width);
+  EXPECT_GT(expect_front_spacing(s), 100u);
+  return s.report;
+}
+
+TEST(IntegrateStreamSurface, ReachesTheBoundaryWhereParticlesLeave)
+{
+  // Neighbours leave within one time line of each other (Δ = h = 0.05, 0.0375 apart in x)...
+  expect_the_trapezoid_up_to_the_box_face({Point_3(-0.9, 0, 0), Point_3(0.3, 1, 0)}, 0.05, 0.05);
+  // ... and several time lines apart, where the front grazes the boundary (Δ = h / 5, the
+  // particles 0.05 apart in x): the strips fan out from each exit to the next.
+  expect_the_trapezoid_up_to_the_box_face({Point_3(-1.9, 0, 0), Point_3(0.9, 0.1, 0)}, 0.05, 0.01);
+  // The same with the seed reversed: the particle that leaves first is then the one of the
+  // smaller seed parameter in each pair (the fans turn the other way).
+  expect_the_trapezoid_up_to_the_box_face({Point_3(0.9, 0.1, 0), Point_3(-1.9, 0, 0)}, 0.05, 0.01);
+}
+
 TEST(IntegrateStreamSurface, AnyMutableFaceGraph)
 {
   // The same surface in a Polyhedron_3 (BGL interface, no u/t maps) as in a Surface_mesh.
@@ -279,7 +346,9 @@ TEST(IntegrateStreamSurface, PathSurfaceInAFlowLinearInTime)
   const Surface s(flow, seed,
                   FAS::parameters::front_spacing(
                       0.1, FAS::parameters::start_time(t0, FAS::parameters::time_line_step(0.1))));
-  expect_parametrization(s, seed);
+  // The particles leave the field's time interval at t = 2 (tau = 1.5), located within the
+  // integrator's boundary tolerance.
+  expect_parametrization(s, seed, [](const Point_3&, double tau) { return std::abs(tau - 1.5) <= 1e-8; });
   EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::NO_PARTICLE_LEFT);
   EXPECT_NEAR(s.report.final_parameter, 1.5, 1e-12);
   for (Vertex v : s.tm.vertices()) {

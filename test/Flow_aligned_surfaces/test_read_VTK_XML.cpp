@@ -220,6 +220,38 @@ TEST(ReadVTKXML, UnstructuredGridOfEveryCellKindGivesTheLinearFieldExactly)
   }
 }
 
+TEST(ReadVTKXML, VoxelsAreReadAsHexahedra)
+{
+  // The unit hexahedron of the mixed mesh as a VTK_VOXEL (points in x, y, z order), as
+  // vtkThreshold makes of image cells, beside a tetrahedron: the voxel is read as the
+  // hexahedron 0 ... 7 (type 12) and gives the linear field exactly.
+  const Mixed_mesh m = mixed_mesh();
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(m.grid->GetPoints());
+  grid->GetPointData()->ShallowCopy(m.grid->GetPointData());
+  const vtkIdType voxel[8] = {0, 1, 3, 2, 4, 5, 7, 6}, tetrahedron[4] = {0, 3, 4, 12};
+  grid->Allocate(2);
+  grid->InsertNextCell(VTK_VOXEL, 8, voxel);
+  grid->InsertNextCell(VTK_TETRA, 4, tetrahedron);
+  const std::string file = temporary("voxel.vtu");
+  write_with_VTK<vtkXMLUnstructuredGridWriter>(grid, file);
+  Cells field(std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 2, 3}, {0, 4}, {10},
+              std::vector<float>(12, 0.f));
+  std::string error;
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, field, CGAL::parameters::default_values(), &error))
+      << error;
+  EXPECT_EQ(field.cell_types(), (std::vector<unsigned char>{12, 10}));
+  EXPECT_EQ(field.connectivity(), (std::vector<Cells::Index>{0, 1, 2, 3, 4, 5, 6, 7, 0, 3, 4, 12}));
+  std::mt19937 rng(12);
+  for (const std::vector<vtkIdType>& cell : {m.cells[0], m.cells[4]})
+    for (int q = 0; q < 40; ++q) {
+      const Point p = random_point_in(grid, cell, rng);
+      const std::optional<Vector> v = field(p);
+      ASSERT_TRUE(v.has_value()) << p;
+      expect_near(*v, exact(p), 1e-9, "voxel mesh");
+    }
+}
+
 TEST(ReadVTKXML, UnstructuredMaskRemovesTheCellsTouchingSolidPoints)
 {
   Mixed_mesh m = mixed_mesh();

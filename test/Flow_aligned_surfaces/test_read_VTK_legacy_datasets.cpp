@@ -242,13 +242,18 @@ std::vector<double> flat(const std::vector<P3>& points)
 }
 
 // The file up to and including CELL_TYPES; `new_form` writes the OFFSETS/CONNECTIVITY form of
-// file version 5.1, else the per-cell lists.
+// file version 5.1, else the per-cell lists.  With `types` = kVoxelTypes, the first cell is
+// written as a VTK_VOXEL: its points in voxel order (x fastest, then y, then z).
+const std::vector<double> kVoxelTypes = {11, 14, 13, 10};
 Vtk_file unstructured_geometry(bool binary, bool new_form, const std::vector<double>& types = kTypes)
 {
   Vtk_file f(binary, "UNSTRUCTURED_GRID", new_form ? "5.1" : "3.0");
   f.line("POINTS 19 float").values("float", flat(kPoints));
   std::vector<double> list, offsets{0}, connectivity;
-  for (const std::vector<int>& c : kCells) {
+  std::vector<std::vector<int>> cells = kCells;
+  if (types == kVoxelTypes)
+    cells[0] = {0, 1, 3, 2, 4, 5, 7, 6};
+  for (const std::vector<int>& c : cells) {
     list.push_back(double(c.size()));
     for (int p : c) {
       list.push_back(p);
@@ -400,6 +405,20 @@ TEST(ReadVTKLegacyDatasets, UnstructuredGridInBothCellsForms)
       SCOPED_TRACE(std::string(binary ? "binary" : "ascii") + (new_form ? " 5.1" : " legacy"));
       const Cells c = read_ok<Cells>("cells.vtk", unstructured_file(binary, new_form));
       EXPECT_NE(c.points().float_data(), nullptr); // POINTS float: kept as float
+      expect_mixed_cells(c, rng);
+    }
+}
+
+TEST(ReadVTKLegacyDatasets, VoxelsAreReadAsTheSameHexahedra)
+{
+  // The hexahedron written as a VTK_VOXEL (points 0 1 3 2 4 5 7 6) is read as the hexahedron
+  // 0 ... 7 of type 12: the same field as from the hexahedron, the linear field exactly.
+  std::mt19937 rng(4);
+  for (bool binary : {false, true})
+    for (bool new_form : {false, true}) {
+      SCOPED_TRACE(std::string(binary ? "binary" : "ascii") + (new_form ? " 5.1" : " legacy"));
+      const Cells c = read_ok<Cells>(
+          "voxel.vtk", unstructured_geometry(binary, new_form, kVoxelTypes).velocity(flat(kPoints)).s);
       expect_mixed_cells(c, rng);
     }
 }
@@ -565,11 +584,12 @@ TEST(ReadVTKLegacyDatasetsBadInput, UnsupportedCellTypesNameTheCellAndTheType)
       expect_failure<Cells>(
           "type_42.vtk", unstructured_geometry(binary, new_form, types).velocity(flat(kPoints)).s,
           {binary ? "byte " : "line ", "cell 2 has VTK type 42 (VTK_POLYHEDRON)",
-           "supported: 10 (VTK_TETRA), 12 (VTK_HEXAHEDRON), 13 (VTK_WEDGE), 14 (VTK_PYRAMID)"});
-      types[2] = 11;
-      expect_failure<Cells>("type_11.vtk",
+           "supported: 10 (VTK_TETRA), 11 (VTK_VOXEL), 12 (VTK_HEXAHEDRON), 13 (VTK_WEDGE), "
+           "14 (VTK_PYRAMID)"});
+      types[2] = 25;
+      expect_failure<Cells>("type_25.vtk",
                             unstructured_geometry(binary, new_form, types).velocity(flat(kPoints)).s,
-                            {"cell 2 has VTK type 11 (VTK_VOXEL)"});
+                            {"cell 2 has VTK type 25 (VTK_QUADRATIC_HEXAHEDRON)"});
     }
 }
 

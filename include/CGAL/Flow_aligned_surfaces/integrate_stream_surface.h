@@ -218,6 +218,7 @@ public:
                       m_field.normalize ? "max_length reached" : "max_time reached");
       if (m_report.number_of_vertices >= m_s.max_vertices || m_nodes.size() >= 2 * m_s.max_vertices)
         return finish(Stream_surface_termination::MAX_NUMBER_OF_VERTICES, "max_number_of_vertices reached");
+      m_previous_parameter = m_parameter;
       m_parameter = std::min(double(k) * m_s.step, m_s.max_parameter);
       std::vector<std::vector<Particle>> next;
       for (std::vector<Particle>& piece : m_pieces)
@@ -232,9 +233,13 @@ private:
   struct Particle {
     double u;
     Integrator integrator;
-    bool exhausted = false; // the integrator left the domain on its last step
-    std::size_t node = 0;   // the particle's sample on the current time line
+    bool at_boundary = false; // it left the domain at x, before the current time line
+    std::size_t node = 0;     // the particle's sample on the current time line
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    double tau = 0; // of x: the current time line's, or where the particle left the domain
+    // The node where the neighbour of this end particle of its piece left the domain: the
+    // strips close the gap up to it while the particle stays within 2h of it.
+    std::optional<std::size_t> boundary_neighbour;
     Eigen::Vector3d direction = Eigen::Vector3d::Zero(); // of the flow at x
   };
   struct Node {
@@ -250,9 +255,9 @@ private:
     return m_report;
   }
 
-  std::size_t add_node(const Eigen::Vector3d& x, double u)
+  std::size_t add_node(const Particle& p)
   {
-    m_nodes.push_back(Node{x, u, m_parameter, std::nullopt});
+    m_nodes.push_back(Node{p.x, p.u, p.tau, std::nullopt});
     return m_nodes.size() - 1;
   }
 
@@ -292,22 +297,33 @@ private:
     return p;
   }
 
-  // Advances `p` to the current time line; false if it leaves the domain, stagnates, or has
-  // taken max_number_of_steps steps since the seed (so every loop has a bound).
+  // Advances `p` to the current time line, or to where it leaves the domain before it (then
+  // `at_boundary`, at the last point inside that the integrator located by bisection).  False
+  // if it left before, stagnates, or has taken max_number_of_steps steps since the seed (so every
+  // loop has a bound); also if it leaves within 1e-3 Δ after the previous time line, whose node
+  // is then its last (a later one would only make slivers).
   bool advance(Particle& p)
   {
+    if (p.at_boundary)
+      return false;
     Integrator& it = p.integrator;
+    p.tau = m_parameter;
     while (it.parameter() < m_parameter) {
-      if (p.exhausted || it.number_of_accepted_steps() >= m_s.max_steps)
+      if (it.number_of_accepted_steps() >= m_s.max_steps)
         return false;
       const Step_result r = it.step();
-      if (r == Step_result::LEFT_DOMAIN)
-        p.exhausted = true;
-      else if (r != Step_result::ACCEPTED)
+      if (r == Step_result::LEFT_DOMAIN) {
+        if (it.parameter() <= m_previous_parameter + 1e-3 * m_s.step)
+          return false;
+        p.at_boundary = true;
+        p.tau = it.parameter();
+        break;
+      }
+      if (r != Step_result::ACCEPTED)
         return false;
     }
-    p.x = it.dense_output(m_parameter);
-    const std::optional<Eigen::Vector3d> v = m_field(p.x, m_s.t0 + m_s.direction * m_parameter);
+    p.x = p.at_boundary ? it.position() : it.dense_output(m_parameter);
+    const std::optional<Eigen::Vector3d> v = m_field(p.x, m_s.t0 + m_s.direction * p.tau);
     if (!v)
       return false;
     const double speed = v->norm();
@@ -334,7 +350,7 @@ private:
         moving += usable ? 1 : 0;
       }
       if (usable) {
-        p.node = add_node(p.x, u);
+        p.node = add_node(p);
         piece.push_back(std::move(p));
       }
       else if (!piece.empty()) {
@@ -454,7 +470,7 @@ private:
       for (std::vector<Particle>& new_piece : pieces) {
         std::vector<std::size_t> old_chain, new_chain;
         for (Particle& p : new_piece) {
-          p.node = add_node(p.x, p.u);
+          p.node = add_node(p);
           new_chain.push_back(p.node);
         }
         const double first = new_piece.front().u, last = new_piece.back().u;
@@ -471,10 +487,62 @@ private:
           old_chain.front() = m_nodes.size() - 1;
         }
         zip(old_chain, new_chain);
-        if (new_piece.size() >= 2)
-          next.push_back(std::move(new_piece));
+        close_towards_boundary_neighbours(new_piece, old_chain);
+        continue_without_boundary_particles(std::move(new_piece), next);
       }
     }
+  }
+
+  // The triangle from an end particle's old node to its new one and the node where its
+  // neighbour left the domain: a fan around that node, over the time lines until the particle
+  // leaves too or is more than 2h away, fills the notch between the two exits.
+  void close_towards_boundary_neighbours(std::vector<Particle>& piece, const std::vector<std::size_t>& old_chain)
+  {
+    for (std::size_t end = 0; end < std::min<std::size_t>(piece.size(), 2); ++end) {
+      Particle* p = end == 0 ? &piece.front() : &piece.back();
+      if (!p->boundary_neighbour || old_chain.empty())
+        continue;
+      const std::size_t exit = *std::exchange(p->boundary_neighbour, std::nullopt);
+      const bool before = m_nodes[exit].u < p->u; // the neighbour's seed parameter is the smaller one
+      const std::size_t old = before ? old_chain.front() : old_chain.back();
+      if (m_nodes[old].u != p->u)
+        continue;
+      if (before)
+        add_triangle(exit, old, p->node);
+      else
+        add_triangle(old, exit, p->node);
+      if (!p->at_boundary && (p->x - m_nodes[exit].x).norm() <= 2 * m_s.spacing)
+        p->boundary_neighbour = exit;
+    }
+  }
+
+  // The runs of particles of `piece` that did not leave the domain go on; their ends next to a
+  // particle that left remember where it left.  A run needs two particles, or one that fans out
+  // from such an exit.
+  void continue_without_boundary_particles(std::vector<Particle>&& piece, std::vector<std::vector<Particle>>& next)
+  {
+    const auto goes_on = [](const std::vector<Particle>& run) {
+      return run.size() >= 2 || (run.size() == 1 && run.front().boundary_neighbour);
+    };
+    std::vector<Particle> run;
+    std::optional<std::size_t> exit_before; // where the particle before the run left the domain
+    for (Particle& p : piece) {
+      if (!p.at_boundary) {
+        if (run.empty() && exit_before)
+          p.boundary_neighbour = exit_before;
+        run.push_back(std::move(p));
+        continue;
+      }
+      ++m_report.number_of_lost_particles;
+      if (!run.empty())
+        run.back().boundary_neighbour = p.node;
+      if (goes_on(run))
+        next.push_back(std::move(run));
+      run.clear();
+      exit_before = p.node;
+    }
+    if (goes_on(run))
+      next.push_back(std::move(run));
   }
 
   Field m_field;
@@ -487,7 +555,7 @@ private:
   Stream_surface_report m_report;
   std::vector<Node> m_nodes;
   std::vector<std::vector<Particle>> m_pieces;
-  double m_parameter = 0;
+  double m_parameter = 0, m_previous_parameter = 0; // of the current and the previous time line
 };
 
 // A writable property map that drops what it is given (the default of the u and t maps).
@@ -522,18 +590,22 @@ evaluated on the time line by dense output.  Between consecutive time lines:
   would need seed parameters closer than \f$ 10^{-9} L \f$ (neighbours separating at an
   obstacle or a critical point), or two neighbours closer than \f$ h \f$ have flow directions
   more than `tear_angle` apart;
+- a particle that leaves the domain before the time line ends where it leaves (the last point
+  inside, located by bisection within the integrator's boundary tolerance, as in
+  `integrate_streamline()`) and takes part in the strip there: the surface reaches the boundary;
+  the strips of its neighbour fan out from that exit until the neighbour leaves too or is more
+  than \f$ 2h \f$ away, so that no notch is left between two exits;
 - the strip is triangulated by the shorter-diagonal rule (Hultquist).
 
 Integration stops at `max_time` (`max_length` with arc-length time lines), after `max_number_of_time_lines`, at
-`max_number_of_vertices`, or when no piece of two particles is left.  A particle that leaves the
-domain ends on the last time line it reached: the surface stops up to \f$ \Delta \f$ short of
-the boundary.  A closed seed (first point = last point) gives a surface with a seam.
+`max_number_of_vertices`, or when no piece of the front is left.  A closed seed (first point = last point) gives a surface with a seam.
 
 Every vertex carries the seed parameter \f$ u \f$ of its particle (`seed_parameter_map`) and the
 time-line parameter \f$ \tau \f$ (`integration_time_map`): the time-line / stream-line
 parametrization of the paper's Figure 3 — the curves of constant \f$ \tau \f$ are the time lines,
 those of constant \f$ u \f$ are stream lines (path lines).  All vertices of a time line have the
-same \f$ \tau = k \Delta \f$ exactly.
+same \f$ \tau = k \Delta \f$ exactly; a vertex where a particle left the domain has the
+\f$ \tau \f$ at which it left, between two time lines.
 
 Vertices and faces are added to `tm_out`; what it held before is kept.
 

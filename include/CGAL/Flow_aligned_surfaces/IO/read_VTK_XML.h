@@ -27,6 +27,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
 #include <CGAL/Flow_aligned_surfaces/internal/remove_masked_cells.h>
 #include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
+#include <CGAL/Flow_aligned_surfaces/internal/voxels_as_hexahedra.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <vtkCellTypes.h>
@@ -699,11 +700,12 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
     offsets.push_back(0);
     for (vtkIdType cell = 0; cell < nc; ++cell) {
       const int type = grid->GetCellType(cell);
-      if (type != VTK_TETRA && type != VTK_HEXAHEDRON && type != VTK_WEDGE && type != VTK_PYRAMID) {
+      if (type != VTK_TETRA && type != VTK_VOXEL && type != VTK_HEXAHEDRON && type != VTK_WEDGE &&
+          type != VTK_PYRAMID) {
         const char* name = vtkCellTypes::GetClassNameFromTypeId(type);
         c.fail("cell " + std::to_string(cell) + " has the VTK cell type " + std::to_string(type) + " (" +
                (name ? name : "unknown") +
-               "); supported are 10 (tetrahedron), 12 (hexahedron), 13 (wedge) and 14 (pyramid)");
+               "); supported are 10 (tetrahedron), 11 (voxel), 12 (hexahedron), 13 (wedge) and 14 (pyramid)");
       }
       vtkIdType n = 0;
       const vtkIdType* ids = nullptr;
@@ -712,6 +714,7 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
       offsets.push_back(static_cast<Index>(connectivity.size()));
       types.push_back(static_cast<unsigned char>(type));
     }
+    Flow_aligned_surfaces::internal::voxels_as_hexahedra(types, offsets, connectivity);
   }
 
   const std::size_t cells = types.size();
@@ -910,8 +913,9 @@ bool read_VTK_XML_flow_field(const std::string& filename, std::optional<Unstruct
 (`.vts`) or ImageData (`.vti`) file with VTK's readers.
 
 The kind of file is told by its contents, not its name.  An unstructured grid may hold
-tetrahedra, hexahedra, wedges and pyramids (VTK cell types 10, 12, 13, 14; any other type is
-refused with the cell's index and type).  A structured grid or an image (without rotation)
+tetrahedra, hexahedra, wedges and pyramids (VTK cell types 10, 12, 13, 14) and voxels (type 11,
+read as the same hexahedra, points 0 1 3 2 4 5 7 6); any other type is refused with the cell's
+index and type.  A structured grid or an image (without rotation)
 becomes its hexahedra, point `(i, j, k)` being point `i + nx (j + ny k)`.  The velocity and the
 mask are chosen as for the overload reading a `Regular_grid_flow_field_3`; with a mask, every
 cell touching a solid point (mask value 0) is left out of the field.  Bad input is reported as

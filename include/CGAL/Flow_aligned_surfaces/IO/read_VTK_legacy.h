@@ -28,6 +28,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/reserve_huge_pages.h>
 #include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
 #include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
+#include <CGAL/Flow_aligned_surfaces/internal/voxels_as_hexahedra.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <algorithm>
@@ -851,7 +852,7 @@ inline const char* vtk_cell_type_name(double t, int* points = nullptr)
                {8, 0, "VTK_PIXEL"},
                {9, 0, "VTK_QUAD"},
                {10, 4, "VTK_TETRA"},
-               {11, 0, "VTK_VOXEL"},
+               {11, 8, "VTK_VOXEL"},
                {12, 8, "VTK_HEXAHEDRON"},
                {13, 6, "VTK_WEDGE"},
                {14, 5, "VTK_PYRAMID"},
@@ -900,7 +901,8 @@ read_unstructured_cells(VTK_legacy_parser& parser)
       parser.fail_at(
           offset, line,
           "cell " + std::to_string(i) + " has VTK type " + number_string(t) + " (" + name +
-              "); supported: 10 (VTK_TETRA), 12 (VTK_HEXAHEDRON), 13 (VTK_WEDGE), 14 (VTK_PYRAMID)");
+              "); supported: 10 (VTK_TETRA), 11 (VTK_VOXEL), 12 (VTK_HEXAHEDRON), 13 (VTK_WEDGE), "
+              "14 (VTK_PYRAMID)");
     r.cell_types[i] = static_cast<unsigned char>(t);
     points_per_cell[i] = n;
   });
@@ -947,6 +949,7 @@ read_unstructured_cells(VTK_legacy_parser& parser)
       parser.fail_at(list.header, list.header_line,
                      cells_line + ": the values end inside cell " + std::to_string(cell) + " of " +
                          std::to_string(nc) + " (wrong count)");
+    Flow_aligned_surfaces::internal::voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
     return r;
   }
 
@@ -978,6 +981,7 @@ read_unstructured_cells(VTK_legacy_parser& parser)
         r.offsets.begin() - 1);
     r.connectivity[i] = point_index(cell, v, offset, line);
   });
+  Flow_aligned_surfaces::internal::voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
   return r;
 }
 
@@ -1244,7 +1248,8 @@ bool read_VTK_flow_field(const std::string& filename, std::optional<Unstructured
   indices) or the one of file version 5.1 (`CELLS n+1 size`, `OFFSETS type` with `n + 1`
   values, `CONNECTIVITY type` with `size` values), and `CELL_TYPES n`.  The cell types must
   be 10 (tetrahedron), 12 (hexahedron), 13 (wedge) or 14 (pyramid), with VTK's point orders
-  (see `Unstructured_flow_field_3`).
+  (see `Unstructured_flow_field_3`), or 11 (voxel: read as the same hexahedron, its points
+  0 1 3 2 4 5 7 6).
 - `DATASET STRUCTURED_GRID` (`DIMENSIONS`, `POINTS`), `RECTILINEAR_GRID` and
   `STRUCTURED_POINTS`: their grid cells become hexahedra, cell `(i, j, k)` with the points
   `(i, j, k)`, `(i+1, j, k)`, `(i+1, j+1, k)`, `(i, j+1, k)` and the same at `k + 1`, whose
