@@ -726,6 +726,18 @@ TEST(ReadVTKXML, UnsupportedCellsAreNamed)
   expect_read_fails<Cells>(file, {"cell 5 has the VTK cell type 5 (vtkTriangle)", "supported are 10"});
 }
 
+TEST(ReadVTKXML, VoxelWithoutEightPointsIsRefused)
+{
+  // The last cell a voxel of 5 points (a malformed file): refused with its count, nothing read
+  // past it while the voxels are reordered.
+  Mixed_mesh m = mixed_mesh();
+  const vtkIdType short_voxel[5] = {0, 1, 3, 2, 4};
+  m.grid->InsertNextCell(VTK_VOXEL, 5, short_voxel);
+  const std::string file = temporary("short_voxel.vtu");
+  write_with_VTK<vtkXMLUnstructuredGridWriter>(m.grid, file);
+  expect_read_fails<Cells>(file, {"cell 5 (a hexahedron)", "5 points; expected 8"});
+}
+
 // A .pvd of the given (time, file) pairs.
 std::string pvd(const std::vector<std::pair<std::string, std::string>>& steps)
 {

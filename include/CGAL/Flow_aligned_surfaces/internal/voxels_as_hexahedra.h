@@ -20,8 +20,10 @@ namespace internal {
 
 constexpr unsigned char vtk_voxel_type = 11, vtk_hexahedron_type = 12;
 
-/// Rewrites every cell of type 11 as a hexahedron (type 12) in place.
-/// \pre `offsets` has one more entry than `cell_types`, and every voxel has 8 points.
+/// Rewrites every cell of type 11 as a hexahedron (type 12) in place.  A voxel without 8
+/// points (a malformed file) becomes a hexahedron with its points as they are, for
+/// `Unstructured_flow_field_3`'s constructor to refuse with the cell's point count.
+/// \pre `offsets` has one more entry than `cell_types`, nondecreasing, within `connectivity`.
 template <class Index>
 void voxels_as_hexahedra(std::vector<unsigned char>& cell_types, const std::vector<Index>& offsets,
                          std::vector<Index>& connectivity)
@@ -29,10 +31,12 @@ void voxels_as_hexahedra(std::vector<unsigned char>& cell_types, const std::vect
   for (std::size_t c = 0; c < cell_types.size(); ++c) {
     if (cell_types[c] != vtk_voxel_type)
       continue;
+    cell_types[c] = vtk_hexahedron_type;
+    if (offsets[c + 1] - offsets[c] != 8)
+      continue;
     Index* p = connectivity.data() + offsets[c];
     std::swap(p[2], p[3]);
     std::swap(p[6], p[7]);
-    cell_types[c] = vtk_hexahedron_type;
   }
 }
 
