@@ -38,7 +38,7 @@ namespace fs = std::filesystem;
 
 struct Loaded_session {
   fs::path file;
-  FAS::IO::Session session;
+  FAS::Session session;
 };
 
 // The session's files are written by extension; anything else is refused before the replay.
@@ -153,7 +153,7 @@ int main(int argc, char** argv)
       return 1;
     }
     for (const auto& op : loaded.session.operations)
-      if (op.kind == FAS::IO::Session_operation::Kind::SAVE && !is_supported_surface_file(op.path)) {
+      if (op.kind == FAS::Session_operation::Kind::SAVE && !is_supported_surface_file(op.path)) {
         std::cerr << "error: " << file.string() << ": line " << op.line << ": cannot save '" << op.path
                   << "': the file name must end in .vtp, .ply, .off or .obj\n";
         return 1;
@@ -199,11 +199,11 @@ int main(int argc, char** argv)
     const std::optional<Flow> flow = flow_of(s);
     if (!flow)
       return 1;
-    const FAS::IO::Session_patch& p = s.session.patch;
+    const FAS::Session_patch& p = s.session.patch;
     const Point center(p.center[0], p.center[1], p.center[2]);
     const Vector normal(p.normal[0], p.normal[1], p.normal[2]);
     Mesh tm;
-    if (p.shape == FAS::IO::Session_patch::Shape::PLANAR)
+    if (p.shape == FAS::Session_patch::Shape::PLANAR)
       FAS::make_planar_patch(tm, center, normal, p.width, p.height, p.target_number_of_faces);
     else
       FAS::make_disk_patch(tm, center, normal, p.radius, p.target_number_of_faces);
@@ -212,7 +212,7 @@ int main(int argc, char** argv)
     try {
       FAS::Flow_aligned_deformation<Mesh, Flow> deformation(tm, *flow, s.session.alignment);
       const FAS::Session_replay_report replay =
-          FAS::replay_session(deformation, s.session, [&](const FAS::IO::Session_operation& op) {
+          FAS::replay_session(deformation, s.session, [&](const FAS::Session_operation& op) {
             if (!save_surface(out / op.path, tm, *flow))
               throw std::runtime_error("session line " + std::to_string(op.line) + ": cannot save " +
                                        op.path);

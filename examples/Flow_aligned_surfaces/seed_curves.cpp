@@ -20,7 +20,7 @@
 #include <CGAL/Flow_aligned_surfaces/align_to_flow.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
-#include <CGAL/Flow_aligned_surfaces/internal/write_file_atomically.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
 #include <CGAL/Flow_aligned_surfaces/seeds.h>
@@ -45,7 +45,7 @@ namespace FAS = CGAL::Flow_aligned_surfaces;
 // Writes "curve,x,y,z" rows; false with the reason in `error` when the file cannot be written.
 bool write_polylines_csv(const std::string& filename, const std::vector<Polyline>& curves, std::string& error)
 {
-  return FAS::internal::write_file_atomically(filename, error, [&](std::ostream& os) {
+  return FAS::IO::internal::write_file_atomically(filename, error, [&](std::ostream& os) {
     os.precision(17);
     os << "curve,x,y,z\n";
     for (std::size_t c = 0; c < curves.size(); ++c)

@@ -5,7 +5,7 @@
 // on byte sequences written by hand from the IEEE 754 and two's complement encodings, in both
 // byte orders, and the run decoder against the single-value one on every type.
 
-#include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/binary_numbers.h>
 
 #include <gtest/gtest.h>
 
@@ -19,7 +19,7 @@ namespace test_binary_numbers {
 
 namespace {
 
-namespace FI = CGAL::Flow_aligned_surfaces::internal;
+namespace FI = CGAL::Flow_aligned_surfaces::IO::internal;
 using FI::Binary_type;
 using FI::Byte_order;
 

@@ -9,7 +9,7 @@
 // names the first one at a fluid node, and stores a solid node's bad value as zeros.
 
 #include <CGAL/Flow_aligned_surfaces/IO/read_VTK_legacy.h>
-#include <CGAL/Flow_aligned_surfaces/internal/checked_float_decoding.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/checked_float_decoding.h>
 
 #include "grid_reader_test_helpers.h"
 
@@ -30,7 +30,7 @@ namespace test_checked_float_decoding {
 namespace {
 
 using namespace fas_test;
-namespace FASi = CGAL::Flow_aligned_surfaces::internal;
+namespace FASi = CGAL::Flow_aligned_surfaces::IO::internal;
 const std::size_t B = FASi::checked_block_size;
 
 // Value i of the test runs: quarters, exact in every type used.

@@ -2,8 +2,8 @@
 // internal/reserve_huge_pages.h: the bytes seen are exactly those written into hand-made files,
 // and a file that cannot be read gives the message naming it.
 
-#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
-#include <CGAL/Flow_aligned_surfaces/internal/reserve_huge_pages.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/reserve_huge_pages.h>
 
 #include "test_files.h"
 
@@ -18,7 +18,7 @@
 // batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
 namespace test_read_file {
 
-namespace FI = CGAL::Flow_aligned_surfaces::internal;
+namespace FI = CGAL::Flow_aligned_surfaces::IO::internal;
 
 namespace {
 

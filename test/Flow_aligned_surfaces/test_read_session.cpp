@@ -16,7 +16,7 @@
 namespace test_read_session {
 
 namespace FAS = CGAL::Flow_aligned_surfaces;
-using Op = FAS::IO::Session_operation;
+using Op = FAS::Session_operation;
 
 namespace {
 
@@ -47,12 +47,12 @@ std::string write_session(const std::string& name, const std::string& text)
 TEST(ReadSession, ReadsEveryOperationAsWritten)
 {
   const std::string file = write_session("valid.session", valid_session);
-  FAS::IO::Session session;
+  FAS::Session session;
   std::string error;
   ASSERT_TRUE(FAS::IO::read_session(file, session, &error)) << error;
   EXPECT_EQ(session.flow, "cylinder");
   EXPECT_EQ(session.alignment, FAS::Alignment::TANGENTIAL);
-  EXPECT_EQ(session.patch.shape, FAS::IO::Session_patch::Shape::PLANAR);
+  EXPECT_EQ(session.patch.shape, FAS::Session_patch::Shape::PLANAR);
   EXPECT_EQ(session.patch.center, (std::array<double, 3>{{-2, 0.8, 0}}));
   EXPECT_EQ(session.patch.normal, (std::array<double, 3>{{0.3, 1, 0.4}}));
   EXPECT_EQ(session.patch.width, 1.2);
@@ -91,12 +91,12 @@ TEST(ReadSession, ReadsADiskAndTheDefaults)
 {
   const std::string file =
       write_session("disk.session", "alignment orthogonal\npatch disk 1 2 3 0 0 1 0.5 300\nsave a.ply");
-  FAS::IO::Session session;
+  FAS::Session session;
   std::string error;
   ASSERT_TRUE(FAS::IO::read_session(file, session, &error)) << error;
   EXPECT_TRUE(session.flow.empty());
   EXPECT_EQ(session.alignment, FAS::Alignment::ORTHOGONAL);
-  EXPECT_EQ(session.patch.shape, FAS::IO::Session_patch::Shape::DISK);
+  EXPECT_EQ(session.patch.shape, FAS::Session_patch::Shape::DISK);
   EXPECT_EQ(session.patch.center, (std::array<double, 3>{{1, 2, 3}}));
   EXPECT_EQ(session.patch.radius, 0.5);
   EXPECT_EQ(session.patch.target_number_of_faces, 300u);
@@ -148,7 +148,7 @@ TEST(ReadSession, MalformedLinesNameTheFileTheLineAndTheFault)
   int i = 0;
   for (const Case& c : cases) {
     const std::string file = write_session("bad_" + std::to_string(i++) + ".session", c.text);
-    FAS::IO::Session session;
+    FAS::Session session;
     session.flow = "untouched";
     std::string error;
     EXPECT_FALSE(FAS::IO::read_session(file, session, &error)) << c.text;
@@ -161,7 +161,7 @@ TEST(ReadSession, MalformedLinesNameTheFileTheLineAndTheFault)
 
 TEST(ReadSession, AMissingFileIsAnError)
 {
-  FAS::IO::Session session;
+  FAS::Session session;
   std::string error;
   EXPECT_FALSE(FAS::IO::read_session(temporary_file("read_session_", "absent.session"), session, &error));
   EXPECT_NE(error.find("absent.session: cannot open the file for reading"), std::string::npos) << error;
@@ -170,7 +170,7 @@ TEST(ReadSession, AMissingFileIsAnError)
 TEST(ReadSession, TheShippedSessionsAreValid)
 {
   for (const char* name : {"tangential.session", "orthogonal.session"}) {
-    FAS::IO::Session session;
+    FAS::Session session;
     std::string error;
     EXPECT_TRUE(FAS::IO::read_session(std::string(FAS_EXAMPLE_DATA_DIR) + "/" + name, session, &error)) << error;
     int moves = 0, grows = 0;

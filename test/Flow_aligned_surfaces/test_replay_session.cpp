@@ -28,21 +28,21 @@ namespace test_replay_session {
 using namespace fas_test;
 using Mesh = CGAL::Surface_mesh<Point_3>;
 using Flow = FAS::Uniform_flow<K>;
-using Op = FAS::IO::Session_operation;
+using Op = FAS::Session_operation;
 
 namespace {
 
-FAS::IO::Session read(const std::string& name, const std::string& text)
+FAS::Session read(const std::string& name, const std::string& text)
 {
   const std::string file = temporary_file("replay_session_", name);
   write_bytes(file, text);
-  FAS::IO::Session session;
+  FAS::Session session;
   std::string error;
   EXPECT_TRUE(FAS::IO::read_session(file, session, &error)) << error;
   return session;
 }
 
-Mesh make_patch(const FAS::IO::Session& session)
+Mesh make_patch(const FAS::Session& session)
 {
   const auto& p = session.patch;
   Mesh tm;
@@ -68,7 +68,7 @@ const std::string tilt_session = "alignment tangential\n"
 
 TEST(ReplaySession, MovesMakeTheFluxSpikesTheyMust)
 {
-  const FAS::IO::Session session = read("tilt.session", tilt_session);
+  const FAS::Session session = read("tilt.session", tilt_session);
   Mesh tm = make_patch(session);
   FAS::Flow_aligned_deformation<Mesh, Flow> deformation(tm, Flow(), FAS::Alignment::TANGENTIAL);
   std::vector<std::size_t> saved_at; // the number of iterations done at each save
@@ -122,7 +122,7 @@ TEST(ReplaySession, TheSameSessionGivesTheSameNumbersBitForBit)
                            "iterate 5\n"
                            "grow 0.2 across-flow\n"
                            "iterate until-converged 40\n";
-  const FAS::IO::Session session = read("determinism.session", text);
+  const FAS::Session session = read("determinism.session", text);
   using Cylinder = FAS::Cylinder_potential_flow<K>;
   auto replay_once = [&](std::vector<Point_3>& points) {
     Mesh tm = make_patch(session);
@@ -158,7 +158,7 @@ TEST(ReplaySession, TheSameSessionGivesTheSameNumbersBitForBit)
 TEST(ReplaySession, ARefusedOperationNamesItsSessionLine)
 {
   // Growing towards the normal of a planar patch: there is no boundary that faces it.
-  const FAS::IO::Session session = read("refused.session", "patch planar 0 0 0  0 0 1  1 1 200\n"
+  const FAS::Session session = read("refused.session", "patch planar 0 0 0  0 0 1  1 1 200\n"
                                                            "iterate 1\n"
                                                            "grow 0.1 0 0 1\n"
                                                            "save never.vtp\n");

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Replays an interactive session (Section 4 of the paper) on a `Flow_aligned_deformation`:
-// the iterations, rigid moves and growing steps of an `IO::Session`, in order, recording the
+// the iterations, rigid moves and growing steps of an `Session`, in order, recording the
 // normalized flux and the largest requested rotation of every iteration (the curves of the
 // paper's Figure 6, where every user operation makes a "flux spike" that the following
 // iterations remove).  The replay is deterministic: the same session on the same surface and
@@ -12,7 +12,7 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_REPLAY_SESSION_H
 
 #include <CGAL/Flow_aligned_surfaces/Alignment.h>
-#include <CGAL/Flow_aligned_surfaces/IO/read_session.h>
+#include <CGAL/Flow_aligned_surfaces/Session.h>
 #include <CGAL/Flow_aligned_surfaces/grow_boundary.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -58,17 +58,17 @@ The session's set-up lines (`flow`, `alignment`, `patch`) are not used here: the
 to build `deformation`, which the caller does (the example `replay_session.cpp` shows how).
 
 \tparam Deformation a `Flow_aligned_deformation`
-\tparam Save a callable `void(const IO::Session_operation&)`
+\tparam Save a callable `void(const Session_operation&)`
 
 \throws std::invalid_argument if an operation is refused (for instance growing a surface that
         has no boundary in the given direction); the message starts with the session's line
         (`"session line 12: ..."`), and the surface stays as the operations before left it.
 */
 template <class Deformation, class Save>
-Session_replay_report replay_session(Deformation& deformation, const IO::Session& session, const Save& save)
+Session_replay_report replay_session(Deformation& deformation, const Session& session, const Save& save)
 {
   using Vector_3 = typename Deformation::Vector_3;
-  using Op = IO::Session_operation;
+  using Op = Session_operation;
   Session_replay_report result;
   std::string moves;
   auto vector = [](const Op& op) { return Vector_3(op.vector[0], op.vector[1], op.vector[2]); };

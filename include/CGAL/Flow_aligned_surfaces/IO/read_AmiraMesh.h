@@ -14,12 +14,12 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_READ_AMIRAMESH_H
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
-#include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
-#include <CGAL/Flow_aligned_surfaces/internal/inflate_bytes.h>
-#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
-#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
-#include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
-#include <CGAL/Flow_aligned_surfaces/internal/uniform_grid_reading.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/inflate_bytes.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/text_cursor.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/uniform_grid_reading.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <array>
@@ -43,7 +43,7 @@ namespace internal {
 
 // One data declaration `Location { type[components] name } @section(encoding,size)`.
 struct AmiraMesh_data {
-  Flow_aligned_surfaces::internal::Grid_array array; // located by the data section
+  Flow_aligned_surfaces::IO::internal::Grid_array array; // located by the data section
   std::string location, type_name, encoding;         // encoding: empty (raw), HxByteRLE, HxZip, ...
   std::size_t section = 0, compressed_size = 0;
   std::size_t declaration_offset = 0, declaration_line = 0;
@@ -51,9 +51,9 @@ struct AmiraMesh_data {
 };
 
 class AmiraMesh_parser {
-  typedef Flow_aligned_surfaces::internal::Binary_type Binary_type;
-  typedef Flow_aligned_surfaces::internal::Byte_order Byte_order;
-  typedef Flow_aligned_surfaces::internal::Text_cursor Text_cursor;
+  typedef Flow_aligned_surfaces::IO::internal::Binary_type Binary_type;
+  typedef Flow_aligned_surfaces::IO::internal::Byte_order Byte_order;
+  typedef Flow_aligned_surfaces::IO::internal::Text_cursor Text_cursor;
 
 public:
   AmiraMesh_parser(const std::string& filename, std::string_view contents)
@@ -118,7 +118,7 @@ private:
     if (!known || format.empty())
       in.fail_at(0, 1,
                  "not an AmiraMesh file: the first line is '" +
-                     Flow_aligned_surfaces::internal::printable(l) +
+                     Flow_aligned_surfaces::IO::internal::printable(l) +
                      "'; expected '# AmiraMesh BINARY-LITTLE-ENDIAN 2.1', '# AmiraMesh 3D BINARY 2.0', "
                      "'# AmiraMesh 3D ASCII 2.0' or the same with Avizo");
     ascii = format == "ASCII";
@@ -184,7 +184,7 @@ private:
           if (in.at_end() || b[in.pos] != ')')
             in.fail_at(t.offset, t.line,
                        "the section reference '" +
-                           Flow_aligned_surfaces::internal::printable(b.substr(t.offset, in.pos - t.offset)) +
+                           Flow_aligned_surfaces::IO::internal::printable(b.substr(t.offset, in.pos - t.offset)) +
                            "' has no closing ')'");
           ++in.pos;
         }
@@ -222,7 +222,7 @@ private:
   static std::string shown(const Token& t)
   {
     return t.kind == 0 ? std::string("the end of the header")
-                       : "'" + Flow_aligned_surfaces::internal::printable(t.text) + "'";
+                       : "'" + Flow_aligned_surfaces::IO::internal::printable(t.text) + "'";
   }
 
   Token expect(char kind, const std::string& what)
@@ -385,7 +385,7 @@ private:
     }
     d.type_name = std::string(tn);
     if (!binary_type(d.type_name, d.array.type))
-      fail_at(type, "unknown data type '" + Flow_aligned_surfaces::internal::printable(tn) + "' of '" +
+      fail_at(type, "unknown data type '" + Flow_aligned_surfaces::IO::internal::printable(tn) + "' of '" +
                         d.array.name +
                         "'; expected byte, sbyte, short, ushort, int, uint, int64, uint64, float or double");
 
@@ -444,7 +444,7 @@ private:
                     ": a grid needs at least 2 nodes along each axis (empty, 1D and 2D lattices are not "
                     "supported)");
     if (coord_type_token_.kind != 0 && coord_type_ != "uniform")
-      fail_at(coord_type_token_, "CoordType \"" + Flow_aligned_surfaces::internal::printable(coord_type_) +
+      fail_at(coord_type_token_, "CoordType \"" + Flow_aligned_surfaces::IO::internal::printable(coord_type_) +
                                      "\" is not supported; this reader reads uniform lattices "
                                      "(CoordType \"uniform\")");
     if (!have_bounding_box_)
@@ -481,7 +481,7 @@ private:
                                        .find_first_not_of(" \t") == std::string_view::npos;
       if (l.empty() || l[0] != '@' || !blank_after)
         in.fail_at(marker, marker_line,
-                   "found '" + Flow_aligned_surfaces::internal::printable(l) +
+                   "found '" + Flow_aligned_surfaces::IO::internal::printable(l) +
                        "' where a data section marker '@N' alone on its line was expected (wrong sizes in "
                        "the header?)");
       AmiraMesh_data* d = nullptr;
@@ -510,7 +510,7 @@ private:
                  "the data '" + d.array.name + "' have too many values (" + std::to_string(d.array.tuples) +
                      " x " + std::to_string(d.array.components) + ")");
     const std::size_t count = d.array.tuples * d.array.components; // < max / 64
-    const std::size_t size = Flow_aligned_surfaces::internal::binary_type_size(d.array.type);
+    const std::size_t size = Flow_aligned_surfaces::IO::internal::binary_type_size(d.array.type);
     const std::size_t left = in.left();
     const std::string what = "data section @" + std::to_string(d.section) + " ('" + d.array.name + "', " +
                              std::to_string(d.array.tuples) + " x " + d.type_name + "[" +
@@ -564,7 +564,7 @@ private:
 
 // Expands HxByteRLE data (a control byte c: c < 128 = the next byte c times; c ≥ 128 = the
 // next c − 128 bytes as they are) into exactly `expected` bytes.
-inline std::string expand_HxByteRLE(const Flow_aligned_surfaces::internal::Text_cursor& in,
+inline std::string expand_HxByteRLE(const Flow_aligned_surfaces::IO::internal::Text_cursor& in,
                                     const AmiraMesh_data& d, std::size_t expected)
 {
   // Each pair of input bytes gives at most 127 output bytes: a larger claim is a lying header.
@@ -602,10 +602,10 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
                                                  const std::optional<std::string>& array_name,
                                                  const std::optional<std::string>& mask_name)
 {
-  const Flow_aligned_surfaces::internal::File_contents contents(filename, "read_AmiraMesh_flow_field");
+  const Flow_aligned_surfaces::IO::internal::File_contents contents(filename, "read_AmiraMesh_flow_field");
   AmiraMesh_parser parser(filename, contents.view());
   parser.parse();
-  const Flow_aligned_surfaces::internal::Text_cursor& in = parser.in;
+  const Flow_aligned_surfaces::IO::internal::Text_cursor& in = parser.in;
 
   const AmiraMesh_data* velocity = nullptr;
   const AmiraMesh_data* mask = nullptr;
@@ -635,7 +635,7 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
 
   // The chosen fields' data, expanded if compressed.
   std::string expanded[2];
-  Flow_aligned_surfaces::internal::Grid_array arrays[2];
+  Flow_aligned_surfaces::IO::internal::Grid_array arrays[2];
   const AmiraMesh_data* chosen[2] = {velocity, mask};
   for (int c = 0; c < 2; ++c) {
     const AmiraMesh_data* d = chosen[c];
@@ -648,11 +648,11 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
     if (d->encoding.empty())
       continue;
     const std::size_t bytes = d->array.tuples * d->array.components *
-                              Flow_aligned_surfaces::internal::binary_type_size(d->array.type);
+                              Flow_aligned_surfaces::IO::internal::binary_type_size(d->array.type);
     if (d->encoding == "HxByteRLE")
       expanded[c] = expand_HxByteRLE(in, *d, bytes);
-    else if (d->encoding == "HxZip" && Flow_aligned_surfaces::internal::have_inflate()) {
-      const std::string why = Flow_aligned_surfaces::internal::inflate_bytes(
+    else if (d->encoding == "HxZip" && Flow_aligned_surfaces::IO::internal::have_inflate()) {
+      const std::string why = Flow_aligned_surfaces::IO::internal::inflate_bytes(
           in.bytes().substr(d->array.begin, d->compressed_size), bytes, expanded[c]);
       if (!why.empty())
         in.fail_at(d->array.begin, 0, "the HxZip data of '" + d->array.name + "': " + why);
@@ -660,7 +660,7 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
     else
       in.fail_at(d->array.begin, 0,
                  "the data of '" + d->array.name + "' are compressed with " +
-                     Flow_aligned_surfaces::internal::printable(d->encoding) + ", which is not supported " +
+                     Flow_aligned_surfaces::IO::internal::printable(d->encoding) + ", which is not supported " +
                      (d->encoding == "HxZip"
                           ? "by this build (it needs zlib: define CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB "
                             "and link zlib)"
@@ -670,7 +670,7 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
     arrays[c].begin = 0;
     arrays[c].file_offset = d->array.begin;
   }
-  return Flow_aligned_surfaces::internal::make_grid_field<K>(
+  return Flow_aligned_surfaces::IO::internal::make_grid_field<K>(
       in, parser.dimensions, parser.origin, parser.spacing, arrays[0], mask ? &arrays[1] : nullptr);
 }
 
@@ -695,8 +695,8 @@ bool read_AmiraMesh_flow_field(const std::string& filename,
                                const NamedParameters& np = CGAL::parameters::default_values(),
                                std::string* error = nullptr)
 {
-  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
-  return Flow_aligned_surfaces::internal::read_into("read_AmiraMesh_flow_field", filename, field, error, [&] {
+  const Flow_aligned_surfaces::IO::internal::Array_names names = Flow_aligned_surfaces::IO::internal::array_names(np);
+  return Flow_aligned_surfaces::IO::internal::read_into("read_AmiraMesh_flow_field", filename, field, error, [&] {
     return internal::read_AmiraMesh_grid<K>(filename, names.array, names.mask);
   });
 }
@@ -760,7 +760,7 @@ bool read_AmiraMesh_flow_field(const std::string& filename, Regular_grid_flow_fi
                                const NamedParameters& np = CGAL::parameters::default_values(),
                                std::string* error = nullptr)
 {
-  return Flow_aligned_surfaces::internal::read_and_assign<Regular_grid_flow_field_3<K>>(
+  return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular_grid_flow_field_3<K>>(
       field, [&](auto& result) { return read_AmiraMesh_flow_field(filename, result, np, error); });
 }
 

@@ -13,12 +13,12 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_READ_NRRD_H
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
-#include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
-#include <CGAL/Flow_aligned_surfaces/internal/inflate_bytes.h>
-#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
-#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
-#include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
-#include <CGAL/Flow_aligned_surfaces/internal/uniform_grid_reading.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/inflate_bytes.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/text_cursor.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/uniform_grid_reading.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <algorithm>
@@ -41,9 +41,9 @@ namespace IO {
 namespace internal {
 
 class NRRD_header {
-  typedef Flow_aligned_surfaces::internal::Binary_type Binary_type;
-  typedef Flow_aligned_surfaces::internal::Byte_order Byte_order;
-  typedef Flow_aligned_surfaces::internal::Text_cursor Text_cursor;
+  typedef Flow_aligned_surfaces::IO::internal::Binary_type Binary_type;
+  typedef Flow_aligned_surfaces::IO::internal::Byte_order Byte_order;
+  typedef Flow_aligned_surfaces::IO::internal::Text_cursor Text_cursor;
 
 public:
   NRRD_header(const std::string& filename, std::string_view contents)
@@ -66,7 +66,7 @@ public:
     const std::string_view magic = in.read_line();
     if (magic.size() != 8 || magic.substr(0, 7) != "NRRD000" || magic[7] < '1' || magic[7] > '5')
       in.fail_at(0, 1,
-                 "not a NRRD file: the first line is '" + Flow_aligned_surfaces::internal::printable(magic) +
+                 "not a NRRD file: the first line is '" + Flow_aligned_surfaces::IO::internal::printable(magic) +
                      "'; expected NRRD0001 to NRRD0005");
     bool have_type = false, have_dimension = false, have_sizes = false;
     std::size_t sizes_line = 0;
@@ -82,7 +82,7 @@ public:
       const std::size_t colon = l.find(": ");
       if (colon == std::string_view::npos)
         in.fail_at(start, line,
-                   "'" + Flow_aligned_surfaces::internal::printable(l) +
+                   "'" + Flow_aligned_surfaces::IO::internal::printable(l) +
                        "' is neither a field 'name: value', a 'key:=value' pair nor a comment");
       const std::string field(l.substr(0, colon));
       Text_cursor value("read_NRRD_flow_field", in.file(), l.substr(colon + 2));
@@ -92,7 +92,7 @@ public:
       if (field == "type") {
         type_name = trim(rest);
         if (!binary_type(type_name, type))
-          fail("unknown or unsupported type '" + Flow_aligned_surfaces::internal::printable(type_name) +
+          fail("unknown or unsupported type '" + Flow_aligned_surfaces::IO::internal::printable(type_name) +
                "'; expected one of the numeric types (int8 ... uint64, float, double and their synonyms)");
         have_type = true;
       }
@@ -129,7 +129,7 @@ public:
       else if (field == "space directions") {
         const std::string_view first = value.token();
         if (first != "none")
-          fail("the first direction is '" + Flow_aligned_surfaces::internal::printable(first) +
+          fail("the first direction is '" + Flow_aligned_surfaces::IO::internal::printable(first) +
                "'; expected 'none' for the vector axis");
         for (int a = 0; a < 3; ++a) {
           const std::array<double, 3> d =
@@ -161,7 +161,7 @@ public:
           const std::string k = Text_cursor::lower(value.token());
           if (k != "domain" && k != "space" && k != "???" && k != "none")
             fail("axis " + std::to_string(a + 1) + " is of kind '" +
-                 Flow_aligned_surfaces::internal::printable(k) +
+                 Flow_aligned_surfaces::IO::internal::printable(k) +
                  "'; expected domain (the vector axis first, then x, y, z)");
         }
       }
@@ -172,7 +172,7 @@ public:
         else if (e == "big")
           order = Byte_order::BIG_ENDIAN_ORDER;
         else
-          fail("unknown endian '" + Flow_aligned_surfaces::internal::printable(e) +
+          fail("unknown endian '" + Flow_aligned_surfaces::IO::internal::printable(e) +
                "'; expected little or big");
       }
       else if (field == "encoding") {
@@ -181,21 +181,21 @@ public:
           encoding = "ascii";
         if (encoding == "gz")
           encoding = "gzip";
-        if (encoding == "gzip" && !Flow_aligned_surfaces::internal::have_inflate())
+        if (encoding == "gzip" && !Flow_aligned_surfaces::IO::internal::have_inflate())
           fail("encoding gzip is not supported by this build (it needs zlib: define "
                "CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB and link zlib); decompress the data first");
         if (encoding == "bzip2" || encoding == "bz2" || encoding == "hex")
           fail("encoding " + encoding +
                " is not supported; expected raw, ascii or gzip (decompress the data first)");
         if (encoding != "raw" && encoding != "ascii" && encoding != "gzip")
-          fail("unknown encoding '" + Flow_aligned_surfaces::internal::printable(encoding) +
+          fail("unknown encoding '" + Flow_aligned_surfaces::IO::internal::printable(encoding) +
                "'; expected raw, ascii or gzip");
       }
       else if (field == "byte skip") {
         const std::string s = trim(rest);
         const auto r = std::from_chars(s.data(), s.data() + s.size(), byte_skip);
         if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || byte_skip < -1)
-          fail("'" + Flow_aligned_surfaces::internal::printable(s) + "' is not a byte count (or -1)");
+          fail("'" + Flow_aligned_surfaces::IO::internal::printable(s) + "' is not a byte count (or -1)");
       }
       else if (field == "line skip") {
         line_skip = integer(value, fail, "the number of lines to skip");
@@ -204,7 +204,7 @@ public:
         data_file = trim(rest);
         if (data_file.rfind("LIST", 0) == 0 || data_file.find('%') != std::string::npos ||
             data_file.find(' ') != std::string::npos)
-          fail("'" + Flow_aligned_surfaces::internal::printable(data_file) +
+          fail("'" + Flow_aligned_surfaces::IO::internal::printable(data_file) +
                "': data split over several files are not supported; expected one file name");
       }
       else if (field == "content") {
@@ -231,7 +231,7 @@ public:
         in.fail_at(0, sizes_line, "sizes 3 " + dimensions_string() + " has too many nodes");
       nodes *= dimensions[a];
     }
-    if (encoding != "ascii" && !order && Flow_aligned_surfaces::internal::binary_type_size(type) > 1)
+    if (encoding != "ascii" && !order && Flow_aligned_surfaces::IO::internal::binary_type_size(type) > 1)
       in.fail_file("the header has no 'endian' field (little or big), needed for " + encoding + " " +
                    type_name + " data");
     if (byte_skip == -1 && encoding != "raw")
@@ -263,7 +263,7 @@ private:
     std::size_t v = 0;
     const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
     if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size())
-      fail("'" + Flow_aligned_surfaces::internal::printable(t) + "' is not a non-negative integer (" + what +
+      fail("'" + Flow_aligned_surfaces::IO::internal::printable(t) + "' is not a non-negative integer (" + what +
            ")");
     return v;
   }
@@ -274,7 +274,7 @@ private:
     const std::string_view t = value.token();
     double v = 0;
     if (!Text_cursor::parse_number(t, v) || !std::isfinite(v))
-      fail("'" + Flow_aligned_surfaces::internal::printable(t) + "' is not a finite number (" + what + ")");
+      fail("'" + Flow_aligned_surfaces::IO::internal::printable(t) + "' is not a finite number (" + what + ")");
     return v;
   }
 
@@ -288,17 +288,17 @@ private:
     const std::size_t close = b.find(')', open);
     if (open >= b.size() || b[open] != '(' || close == std::string_view::npos)
       fail("expected " + what + " as (x,y,z), found '" +
-           Flow_aligned_surfaces::internal::printable(b.substr(std::min(open, b.size()))) + "'");
+           Flow_aligned_surfaces::IO::internal::printable(b.substr(std::min(open, b.size()))) + "'");
     std::array<double, 3> v = {{0, 0, 0}};
     std::string_view inside = b.substr(open + 1, close - open - 1);
     for (int c = 0; c < 3; ++c) {
       const std::size_t comma = inside.find(',');
       if ((c < 2) == (comma == std::string_view::npos))
-        fail(what + " '" + Flow_aligned_surfaces::internal::printable(b.substr(open, close + 1 - open)) +
+        fail(what + " '" + Flow_aligned_surfaces::IO::internal::printable(b.substr(open, close + 1 - open)) +
              "' does not have 3 components; only 3D spaces are supported");
       const std::string t = trim(inside.substr(0, comma));
       if (!Text_cursor::parse_number(t, v[c]) || !std::isfinite(v[c]))
-        fail("'" + Flow_aligned_surfaces::internal::printable(t) + "' is not a finite number (in " + what +
+        fail("'" + Flow_aligned_surfaces::IO::internal::printable(t) + "' is not a finite number (in " + what +
              ")");
       inside = comma == std::string_view::npos ? std::string_view() : inside.substr(comma + 1);
     }
@@ -311,7 +311,7 @@ private:
   {
     const std::string_view t = value.token();
     if (!t.empty())
-      fail("unexpected '" + Flow_aligned_surfaces::internal::printable(t) + "' after " + expected);
+      fail("unexpected '" + Flow_aligned_surfaces::IO::internal::printable(t) + "' after " + expected);
   }
 
   static bool binary_type(const std::string& t, Binary_type& type)
@@ -378,7 +378,7 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
                                             const std::optional<std::string>& array_name,
                                             const std::optional<std::string>& mask_name)
 {
-  namespace I = Flow_aligned_surfaces::internal;
+  namespace I = Flow_aligned_surfaces::IO::internal;
   const I::File_contents file(filename, "read_NRRD_flow_field");
   const std::string_view contents = file.view();
   NRRD_header header(filename, contents);
@@ -487,8 +487,8 @@ bool read_NRRD_flow_field(const std::string& filename, std::optional<Regular_gri
                           const NamedParameters& np = CGAL::parameters::default_values(),
                           std::string* error = nullptr)
 {
-  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
-  return Flow_aligned_surfaces::internal::read_into("read_NRRD_flow_field", filename, field, error, [&] {
+  const Flow_aligned_surfaces::IO::internal::Array_names names = Flow_aligned_surfaces::IO::internal::array_names(np);
+  return Flow_aligned_surfaces::IO::internal::read_into("read_NRRD_flow_field", filename, field, error, [&] {
     return internal::read_NRRD_grid<K>(filename, names.array, names.mask);
   });
 }
@@ -567,7 +567,7 @@ bool read_NRRD_flow_field(const std::string& filename, Regular_grid_flow_field_3
                           const NamedParameters& np = CGAL::parameters::default_values(),
                           std::string* error = nullptr)
 {
-  return Flow_aligned_surfaces::internal::read_and_assign<Regular_grid_flow_field_3<K>>(
+  return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular_grid_flow_field_3<K>>(
       field, [&](auto& result) { return read_NRRD_flow_field(filename, result, np, error); });
 }
 

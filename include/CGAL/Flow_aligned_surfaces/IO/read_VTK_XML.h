@@ -21,13 +21,13 @@
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
-#include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
-#include <CGAL/Flow_aligned_surfaces/internal/node_value_checks.h>
-#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
-#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
-#include <CGAL/Flow_aligned_surfaces/internal/remove_masked_cells.h>
-#include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
-#include <CGAL/Flow_aligned_surfaces/internal/voxels_as_hexahedra.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/node_value_checks.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/remove_masked_cells.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/structured_grid_cells.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/voxels_as_hexahedra.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <vtkCellTypes.h>
@@ -74,7 +74,7 @@ namespace IO {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-typedef Flow_aligned_surfaces::internal::Read_error VTK_XML_error;
+typedef Flow_aligned_surfaces::IO::internal::Read_error VTK_XML_error;
 
 // Collects the errors that VTK objects report, which VTK would otherwise print (to its log and
 // output window): every object it watches reports to it instead, warnings are dropped.
@@ -268,7 +268,7 @@ inline void check_VTK_XML_structure(const VTK_XML_context& c, vtkXMLDataParser* 
     char* end = nullptr;
     const double n = std::strtod(components, &end);
     if (end == components || !(n >= 1.) || n != std::floor(n) || n > 2000. * bytes + 1e6)
-      c.fail(where(e) + "NumberOfComponents=\"" + Flow_aligned_surfaces::internal::printable(components) +
+      c.fail(where(e) + "NumberOfComponents=\"" + Flow_aligned_surfaces::IO::internal::printable(components) +
              "\" is not a positive integer that the file can hold");
   }
   auto extent_text = [](const int* e) {
@@ -360,8 +360,8 @@ inline std::optional<long long> VTK_XML_inline_data_position(std::istream& in, l
 // `appended` as inline binary.
 inline void check_VTK_XML_compression_headers(const VTK_XML_context& c, vtkXMLDataParser* parser)
 {
-  using Flow_aligned_surfaces::internal::Binary_type;
-  using Flow_aligned_surfaces::internal::Byte_order;
+  using Flow_aligned_surfaces::IO::internal::Binary_type;
+  using Flow_aligned_surfaces::IO::internal::Byte_order;
   vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
   if (root == nullptr || root->GetAttribute("compressor") == nullptr)
     return;
@@ -378,7 +378,7 @@ inline void check_VTK_XML_compression_headers(const VTK_XML_context& c, vtkXMLDa
                                ? Byte_order::BIG_ENDIAN_ORDER
                                : Byte_order::LITTLE_ENDIAN_ORDER;
   auto number = [&](const std::string& bytes, std::size_t i) {
-    return Flow_aligned_surfaces::internal::decode_binary_number(
+    return Flow_aligned_surfaces::IO::internal::decode_binary_number(
         wide ? Binary_type::UINT64 : Binary_type::UINT32, order,
         reinterpret_cast<const unsigned char*>(bytes.data()) + i * word);
   };
@@ -546,7 +546,7 @@ void read_VTK_point_arrays(const VTK_XML_context& c, vtkDataSet* ds, const std::
   if (mask != nullptr) {
     f.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-      f[i] = Flow_aligned_surfaces::internal::checked_mask_flag(
+      f[i] = Flow_aligned_surfaces::IO::internal::checked_mask_flag(
           mask->GetComponent(static_cast<vtkIdType>(i), 0), mask_array, [&] { return "point " + where(i); },
           [&](const std::string& what) { c.fail(what); });
   }
@@ -555,7 +555,7 @@ void read_VTK_point_arrays(const VTK_XML_context& c, vtkDataSet* ds, const std::
     double x[3];
     velocity->GetTuple(static_cast<vtkIdType>(i), x);
     for (int d = 0; d < 3; ++d) {
-      const float s = Flow_aligned_surfaces::internal::checked_velocity_component(
+      const float s = Flow_aligned_surfaces::IO::internal::checked_velocity_component(
           x[d], std::size_t(d), [&] { return f.empty() || f[i] != 0; }, !f.empty(), velocity_name, "point",
           [&] { return "point " + where(i); }, [&](const std::string& what) { c.fail(what); });
       // Solid points' values are never interpolated; the fields' constructors want them finite.
@@ -609,14 +609,14 @@ Regular_grid_flow_field_3<K> read_VTK_XML_grid(const VTK_XML_context& c, const s
   std::vector<unsigned char> flags;
   read_VTK_point_arrays(
       c, ds, array_name, mask_name,
-      [&n](std::size_t i) { return Flow_aligned_surfaces::internal::grid_node_string(n, i); }, values, flags);
+      [&n](std::size_t i) { return Flow_aligned_surfaces::IO::internal::grid_node_string(n, i); }, values, flags);
   // The grid's origin is the image's first point, which the extent may move off VTK's origin.
   double first[3], spacing[3];
   image->GetPoint(0, first);
   image->GetSpacing(spacing);
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
-  return Flow_aligned_surfaces::internal::construct_field<Regular_grid_flow_field_3<K>>(
+  return Flow_aligned_surfaces::IO::internal::construct_field<Regular_grid_flow_field_3<K>>(
       [&](const std::string& what) { c.fail(what); }, Point_3(first[0], first[1], first[2]),
       Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values), std::move(flags));
 }
@@ -675,7 +675,7 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
   if (structured)
     read_VTK_point_arrays(
         c, ds, array_name, mask_name,
-        [&](std::size_t i) { return Flow_aligned_surfaces::internal::grid_node_string(*structured, i); },
+        [&](std::size_t i) { return Flow_aligned_surfaces::IO::internal::grid_node_string(*structured, i); },
         values, flags);
   else
     read_VTK_point_arrays(
@@ -684,8 +684,8 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
   std::vector<Index> connectivity, offsets;
   std::vector<unsigned char> types;
   if (structured) {
-    Flow_aligned_surfaces::internal::Structured_grid_cells cells =
-        Flow_aligned_surfaces::internal::structured_grid_cells(*structured);
+    Flow_aligned_surfaces::IO::internal::Structured_grid_cells cells =
+        Flow_aligned_surfaces::IO::internal::structured_grid_cells(*structured);
     connectivity = std::move(cells.connectivity);
     offsets = std::move(cells.offsets);
     types = std::move(cells.cell_types);
@@ -714,12 +714,12 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
       offsets.push_back(static_cast<Index>(connectivity.size()));
       types.push_back(static_cast<unsigned char>(type));
     }
-    Flow_aligned_surfaces::internal::voxels_as_hexahedra(types, offsets, connectivity);
+    Flow_aligned_surfaces::IO::internal::voxels_as_hexahedra(types, offsets, connectivity);
   }
 
   const std::size_t cells = types.size();
   if (!flags.empty() &&
-      Flow_aligned_surfaces::internal::remove_masked_cells(flags, connectivity, offsets, types) == 0)
+      Flow_aligned_surfaces::IO::internal::remove_masked_cells(flags, connectivity, offsets, types) == 0)
     c.fail("every one of the " + std::to_string(cells) +
            " cells touches a solid point of the mask (no fluid cell is left)");
   const auto refused = [&](const std::string& what) { c.fail(what); };
@@ -727,10 +727,10 @@ Unstructured_flow_field_3<K> read_VTK_XML_cells(const VTK_XML_context& c, const 
   vtkPointSet* point_set = vtkPointSet::SafeDownCast(ds);
   if (point_set != nullptr && point_set->GetPoints() != nullptr &&
       point_set->GetPoints()->GetDataType() == VTK_FLOAT)
-    return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
+    return Flow_aligned_surfaces::IO::internal::construct_field<Unstructured_flow_field_3<K>>(
         refused, VTK_point_coordinates<float>(ds, np), std::move(connectivity), std::move(offsets),
         std::move(types), std::move(values));
-  return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
+  return Flow_aligned_surfaces::IO::internal::construct_field<Unstructured_flow_field_3<K>>(
       refused, VTK_point_coordinates<double>(ds, np), std::move(connectivity), std::move(offsets),
       std::move(types), std::move(values));
 }
@@ -800,7 +800,7 @@ inline std::vector<PVD_step> read_PVD_steps(const VTK_XML_context& c)
     char* end = nullptr;
     const double t = std::strtod(timestep, &end);
     if (end == timestep || *end != '\0' || !std::isfinite(t))
-      c.fail(where + "the timestep '" + Flow_aligned_surfaces::internal::printable(timestep) +
+      c.fail(where + "the timestep '" + Flow_aligned_surfaces::IO::internal::printable(timestep) +
              "' is not a finite number");
     std::filesystem::path path(file);
     if (path.is_relative())
@@ -826,9 +826,9 @@ bool read_VTK_XML_flow_field(const std::string& filename, std::optional<Regular_
                              const NamedParameters& np = CGAL::parameters::default_values(),
                              std::string* error = nullptr)
 {
-  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
+  const Flow_aligned_surfaces::IO::internal::Array_names names = Flow_aligned_surfaces::IO::internal::array_names(np);
   const internal::VTK_XML_context c{"read_VTK_XML_flow_field", filename};
-  return Flow_aligned_surfaces::internal::read_into(c.reader, filename, field, error, [&] {
+  return Flow_aligned_surfaces::IO::internal::read_into(c.reader, filename, field, error, [&] {
     return internal::read_VTK_XML_grid<K>(c, names.array_name(), names.mask_name());
   });
 }
@@ -884,7 +884,7 @@ bool read_VTK_XML_flow_field(const std::string& filename, Regular_grid_flow_fiel
                              const NamedParameters& np = CGAL::parameters::default_values(),
                              std::string* error = nullptr)
 {
-  return Flow_aligned_surfaces::internal::read_and_assign<Regular_grid_flow_field_3<K>>(
+  return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular_grid_flow_field_3<K>>(
       field, [&](auto& result) { return read_VTK_XML_flow_field(filename, result, np, error); });
 }
 
@@ -899,9 +899,9 @@ bool read_VTK_XML_flow_field(const std::string& filename, std::optional<Unstruct
                              const NamedParameters& np = CGAL::parameters::default_values(),
                              std::string* error = nullptr)
 {
-  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
+  const Flow_aligned_surfaces::IO::internal::Array_names names = Flow_aligned_surfaces::IO::internal::array_names(np);
   const internal::VTK_XML_context c{"read_VTK_XML_flow_field", filename};
-  return Flow_aligned_surfaces::internal::read_into(c.reader, filename, field, error, [&] {
+  return Flow_aligned_surfaces::IO::internal::read_into(c.reader, filename, field, error, [&] {
     return internal::read_VTK_XML_cells<K>(c, names.array_name(), names.mask_name());
   });
 }
@@ -939,7 +939,7 @@ bool read_VTK_XML_flow_field(const std::string& filename, Unstructured_flow_fiel
                              const NamedParameters& np = CGAL::parameters::default_values(),
                              std::string* error = nullptr)
 {
-  return Flow_aligned_surfaces::internal::read_and_assign<Unstructured_flow_field_3<K>>(
+  return Flow_aligned_surfaces::IO::internal::read_and_assign<Unstructured_flow_field_3<K>>(
       field, [&](auto& result) { return read_VTK_XML_flow_field(filename, result, np, error); });
 }
 
@@ -954,9 +954,9 @@ bool read_PVD_flow_field(const std::string& filename, std::optional<Unsteady_flo
                          const NamedParameters& np = CGAL::parameters::default_values(),
                          std::string* error = nullptr)
 {
-  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
+  const Flow_aligned_surfaces::IO::internal::Array_names names = Flow_aligned_surfaces::IO::internal::array_names(np);
   const internal::VTK_XML_context c{"read_PVD_flow_field", filename};
-  return Flow_aligned_surfaces::internal::read_into(c.reader, filename, field, error, [&] {
+  return Flow_aligned_surfaces::IO::internal::read_into(c.reader, filename, field, error, [&] {
     std::vector<internal::PVD_step> steps = internal::read_PVD_steps(c);
     std::stable_sort(
         steps.begin(), steps.end(),
@@ -1023,7 +1023,7 @@ bool read_PVD_flow_field(const std::string& filename, Unsteady_flow_field_3<Fiel
                          const NamedParameters& np = CGAL::parameters::default_values(),
                          std::string* error = nullptr)
 {
-  return Flow_aligned_surfaces::internal::read_and_assign<Unsteady_flow_field_3<Field>>(
+  return Flow_aligned_surfaces::IO::internal::read_and_assign<Unsteady_flow_field_3<Field>>(
       field, [&](auto& result) { return read_PVD_flow_field(filename, result, np, error); });
 }
 

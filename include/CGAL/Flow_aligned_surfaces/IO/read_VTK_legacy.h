@@ -19,16 +19,16 @@
 #include <CGAL/Flow_aligned_surfaces/Rectilinear_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
-#include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
-#include <CGAL/Flow_aligned_surfaces/internal/checked_float_decoding.h>
-#include <CGAL/Flow_aligned_surfaces/internal/node_value_checks.h>
-#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
-#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
-#include <CGAL/Flow_aligned_surfaces/internal/remove_masked_cells.h>
-#include <CGAL/Flow_aligned_surfaces/internal/reserve_huge_pages.h>
-#include <CGAL/Flow_aligned_surfaces/internal/structured_grid_cells.h>
-#include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
-#include <CGAL/Flow_aligned_surfaces/internal/voxels_as_hexahedra.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/checked_float_decoding.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/node_value_checks.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/remove_masked_cells.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/reserve_huge_pages.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/structured_grid_cells.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/text_cursor.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/voxels_as_hexahedra.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <algorithm>
@@ -68,12 +68,12 @@ struct VTK_legacy_array {
 };
 
 // Thrown inside the reader only; read_VTK_flow_field() turns it into `false` + message.
-typedef Flow_aligned_surfaces::internal::Read_error VTK_legacy_error;
-using Flow_aligned_surfaces::internal::printable;
+typedef Flow_aligned_surfaces::IO::internal::Read_error VTK_legacy_error;
+using Flow_aligned_surfaces::IO::internal::printable;
 
 class VTK_legacy_parser {
 public:
-  VTK_legacy_parser(const std::string& filename, Flow_aligned_surfaces::internal::File_contents contents)
+  VTK_legacy_parser(const std::string& filename, Flow_aligned_surfaces::IO::internal::File_contents contents)
       : contents_(std::move(contents)), in_("read_VTK_flow_field", filename, contents_.view())
   {
   }
@@ -367,7 +367,7 @@ public:
   {
     if (dataset == "UNSTRUCTURED_GRID")
       return "point " + std::to_string(node);
-    return "node " + Flow_aligned_surfaces::internal::grid_node_string(dimensions, node);
+    return "node " + Flow_aligned_surfaces::IO::internal::grid_node_string(dimensions, node);
   }
 
   // The field types that read a dataset type, or null for the types no field reads.
@@ -415,8 +415,8 @@ public:
       for (std::size_t i0 = 0; i0 < count; i0 += block_size) {
         const std::size_t m = count - i0 < block_size ? count - i0 : block_size;
         // Big-endian, as VTK's legacy writer writes, whatever the host.
-        Flow_aligned_surfaces::internal::decode_binary_numbers(
-            type, Flow_aligned_surfaces::internal::Byte_order::BIG_ENDIAN_ORDER, data + pos, m, block);
+        Flow_aligned_surfaces::IO::internal::decode_binary_numbers(
+            type, Flow_aligned_surfaces::IO::internal::Byte_order::BIG_ENDIAN_ORDER, data + pos, m, block);
         for (std::size_t j = 0; j < m; ++j, pos += size)
           out(i0 + j, block[j], pos, 0);
       }
@@ -435,10 +435,10 @@ public:
   // begin + i * size of the file.
   struct Binary_values {
     const unsigned char* data;
-    Flow_aligned_surfaces::internal::Binary_type type;
+    Flow_aligned_surfaces::IO::internal::Binary_type type;
     std::size_t size, begin;
-    static constexpr Flow_aligned_surfaces::internal::Byte_order order =
-        Flow_aligned_surfaces::internal::Byte_order::BIG_ENDIAN_ORDER;
+    static constexpr Flow_aligned_surfaces::IO::internal::Byte_order order =
+        Flow_aligned_surfaces::IO::internal::Byte_order::BIG_ENDIAN_ORDER;
   };
   Binary_values binary_values(const VTK_legacy_array& a) const
   {
@@ -453,7 +453,7 @@ public:
   }
 
 private:
-  typedef Flow_aligned_surfaces::internal::Text_cursor Text_cursor;
+  typedef Flow_aligned_surfaces::IO::internal::Text_cursor Text_cursor;
   static std::string upper(std::string_view s)
   {
     return Text_cursor::upper(s);
@@ -642,7 +642,7 @@ private:
   }
 
   // The binary decodings, chosen once per array rather than once per value.
-  typedef Flow_aligned_surfaces::internal::Binary_type Binary_type;
+  typedef Flow_aligned_surfaces::IO::internal::Binary_type Binary_type;
 
   static Binary_type binary_type(const std::string& type)
   {
@@ -667,7 +667,7 @@ private:
     return Binary_type::INT64;
   }
 
-  Flow_aligned_surfaces::internal::File_contents contents_;
+  Flow_aligned_surfaces::IO::internal::File_contents contents_;
   Text_cursor in_; // reads contents_.view()
   std::size_t section_tuples_ = 0;
   bool in_point_data_ = false, in_section_ = false;
@@ -742,7 +742,7 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
 
   VTK_legacy_node_data d;
   const std::size_t nodes = parser.nodes;
-  namespace FASi = Flow_aligned_surfaces::internal;
+  namespace FASi = Flow_aligned_surfaces::IO::internal;
   if (mask != nullptr) {
     d.mask_name = mask->name;
     FASi::reserve_huge_pages(d.flags, nodes);
@@ -887,10 +887,10 @@ inline std::string number_string(double v)
 
 // The cells of an UNSTRUCTURED_GRID (either form of CELLS) in the form of
 // `Unstructured_flow_field_3`, with every type, point count and point index checked.
-inline Flow_aligned_surfaces::internal::Structured_grid_cells
+inline Flow_aligned_surfaces::IO::internal::Structured_grid_cells
 read_unstructured_cells(VTK_legacy_parser& parser)
 {
-  Flow_aligned_surfaces::internal::Structured_grid_cells r;
+  Flow_aligned_surfaces::IO::internal::Structured_grid_cells r;
   const std::size_t nc = parser.cells, np = parser.nodes;
   std::vector<int> points_per_cell(nc);
   r.cell_types.resize(nc);
@@ -949,7 +949,7 @@ read_unstructured_cells(VTK_legacy_parser& parser)
       parser.fail_at(list.header, list.header_line,
                      cells_line + ": the values end inside cell " + std::to_string(cell) + " of " +
                          std::to_string(nc) + " (wrong count)");
-    Flow_aligned_surfaces::internal::voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
+    Flow_aligned_surfaces::IO::internal::voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
     return r;
   }
 
@@ -981,7 +981,7 @@ read_unstructured_cells(VTK_legacy_parser& parser)
         r.offsets.begin() - 1);
     r.connectivity[i] = point_index(cell, v, offset, line);
   });
-  Flow_aligned_surfaces::internal::voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
+  Flow_aligned_surfaces::IO::internal::voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
   return r;
 }
 
@@ -991,12 +991,12 @@ Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, c
                                                   const std::string* mask_name)
 {
   VTK_legacy_parser parser(filename,
-                           Flow_aligned_surfaces::internal::File_contents(filename, "read_VTK_flow_field"));
+                           Flow_aligned_surfaces::IO::internal::File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"STRUCTURED_POINTS"}, "Regular_grid_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
-  return Flow_aligned_surfaces::internal::construct_field<Regular_grid_flow_field_3<K>>(
+  return Flow_aligned_surfaces::IO::internal::construct_field<Regular_grid_flow_field_3<K>>(
       parser.file_failure(), Flow_aligned_surfaces::internal::Node_values_checked(),
       Point_3(parser.origin[0], parser.origin[1], parser.origin[2]),
       Vector_3(parser.spacing[0], parser.spacing[1], parser.spacing[2]), parser.dimensions,
@@ -1009,11 +1009,11 @@ Rectilinear_grid_flow_field_3<K> read_VTK_legacy_rectilinear(const std::string& 
                                                              const std::string* mask_name)
 {
   VTK_legacy_parser parser(filename,
-                           Flow_aligned_surfaces::internal::File_contents(filename, "read_VTK_flow_field"));
+                           Flow_aligned_surfaces::IO::internal::File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"STRUCTURED_POINTS", "RECTILINEAR_GRID"}, "Rectilinear_grid_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   std::array<std::vector<double>, 3> x = grid_coordinates(parser);
-  return Flow_aligned_surfaces::internal::construct_field<Rectilinear_grid_flow_field_3<K>>(
+  return Flow_aligned_surfaces::IO::internal::construct_field<Rectilinear_grid_flow_field_3<K>>(
       parser.file_failure(), Flow_aligned_surfaces::internal::Node_values_checked(), std::move(x),
       std::move(d.values), std::move(d.flags));
 }
@@ -1023,12 +1023,12 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
                                                    const std::string* mask_name)
 {
   VTK_legacy_parser parser(filename,
-                           Flow_aligned_surfaces::internal::File_contents(filename, "read_VTK_flow_field"));
+                           Flow_aligned_surfaces::IO::internal::File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"UNSTRUCTURED_GRID", "STRUCTURED_GRID", "RECTILINEAR_GRID", "STRUCTURED_POINTS"},
                "Unstructured_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   std::vector<double> points;
-  Flow_aligned_surfaces::internal::Structured_grid_cells cells;
+  Flow_aligned_surfaces::IO::internal::Structured_grid_cells cells;
   if (parser.dataset == "UNSTRUCTURED_GRID") {
     points = decode_reals(parser, *parser.points);
     cells = read_unstructured_cells(parser);
@@ -1045,21 +1045,21 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
           for (double xi : x[0])
             points.insert(points.end(), {xi, y, z});
     }
-    cells = Flow_aligned_surfaces::internal::structured_grid_cells(parser.dimensions);
+    cells = Flow_aligned_surfaces::IO::internal::structured_grid_cells(parser.dimensions);
   }
   const std::size_t all_cells = cells.cell_types.size();
-  if (!d.flags.empty() && Flow_aligned_surfaces::internal::remove_masked_cells(
+  if (!d.flags.empty() && Flow_aligned_surfaces::IO::internal::remove_masked_cells(
                               d.flags, cells.connectivity, cells.offsets, cells.cell_types) == 0)
     parser.fail_file("every one of the " + std::to_string(all_cells) +
                      " cells touches a solid node of the mask '" + d.mask_name + "'; no cell is left");
   // Float points stay float in the field (they were decoded as doubles, exactly).
   if ((parser.dataset == "UNSTRUCTURED_GRID" || parser.dataset == "STRUCTURED_GRID") && parser.points &&
       parser.points->type == "float")
-    return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
+    return Flow_aligned_surfaces::IO::internal::construct_field<Unstructured_flow_field_3<K>>(
         parser.file_failure(), std::vector<float>(points.begin(), points.end()),
         std::move(cells.connectivity), std::move(cells.offsets), std::move(cells.cell_types),
         std::move(d.values));
-  return Flow_aligned_surfaces::internal::construct_field<Unstructured_flow_field_3<K>>(
+  return Flow_aligned_surfaces::IO::internal::construct_field<Unstructured_flow_field_3<K>>(
       parser.file_failure(), std::move(points), std::move(cells.connectivity), std::move(cells.offsets),
       std::move(cells.cell_types), std::move(d.values));
 }
@@ -1069,8 +1069,8 @@ template <class Field, class NamedParameters, class Read>
 bool read_VTK_legacy(const std::string& filename, std::optional<Field>& field, const NamedParameters& np,
                      std::string* error, const Read& read)
 {
-  const Flow_aligned_surfaces::internal::Array_names names = Flow_aligned_surfaces::internal::array_names(np);
-  return Flow_aligned_surfaces::internal::read_into("read_VTK_flow_field", filename, field, error, [&] {
+  const Flow_aligned_surfaces::IO::internal::Array_names names = Flow_aligned_surfaces::IO::internal::array_names(np);
+  return Flow_aligned_surfaces::IO::internal::read_into("read_VTK_flow_field", filename, field, error, [&] {
     return read(filename, names.array_name(), names.mask_name());
   });
 }
@@ -1080,7 +1080,7 @@ template <class Field, class NamedParameters, class Read>
 bool read_VTK_legacy(const std::string& filename, Field& field, const NamedParameters& np, std::string* error,
                      const Read& read)
 {
-  return Flow_aligned_surfaces::internal::read_and_assign<Field>(field, [&](std::optional<Field>& result) {
+  return Flow_aligned_surfaces::IO::internal::read_and_assign<Field>(field, [&](std::optional<Field>& result) {
     return read_VTK_legacy(filename, result, np, error, read);
   });
 }

@@ -16,8 +16,8 @@
 #include <CGAL/Flow_aligned_surfaces/IO/read_VTK_XML.h>
 #endif
 #include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
-#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
-#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/reader_support.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <cctype>
@@ -141,26 +141,26 @@ bool read_flow_field(const std::string& filename, std::optional<Sampled_flow_fie
   std::string head;
   switch (internal::flow_field_file_kind(filename, head)) {
   case internal::Flow_field_file_kind::LEGACY_UNIFORM_GRID:
-    return Flow_aligned_surfaces::internal::read_and_assign<Regular>(
+    return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular>(
         field, [&](std::optional<Regular>& f) { return read_VTK_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::LEGACY_RECTILINEAR_GRID:
-    return Flow_aligned_surfaces::internal::read_and_assign<Rectilinear>(
+    return Flow_aligned_surfaces::IO::internal::read_and_assign<Rectilinear>(
         field, [&](std::optional<Rectilinear>& f) { return read_VTK_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::LEGACY_CELLS:
-    return Flow_aligned_surfaces::internal::read_and_assign<Cells>(
+    return Flow_aligned_surfaces::IO::internal::read_and_assign<Cells>(
         field, [&](std::optional<Cells>& f) { return read_VTK_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::AMIRA_MESH:
-    return Flow_aligned_surfaces::internal::read_and_assign<Regular>(
+    return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular>(
         field, [&](std::optional<Regular>& f) { return read_AmiraMesh_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::NRRD_FILE:
-    return Flow_aligned_surfaces::internal::read_and_assign<Regular>(
+    return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular>(
         field, [&](std::optional<Regular>& f) { return read_NRRD_flow_field(filename, f, np, error); });
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_VTK
   case internal::Flow_field_file_kind::XML_IMAGE_DATA:
-    return Flow_aligned_surfaces::internal::read_and_assign<Regular>(
+    return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular>(
         field, [&](std::optional<Regular>& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::XML_CELLS:
-    return Flow_aligned_surfaces::internal::read_and_assign<Cells>(
+    return Flow_aligned_surfaces::IO::internal::read_and_assign<Cells>(
         field, [&](std::optional<Cells>& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
 #else
   case internal::Flow_field_file_kind::XML_IMAGE_DATA:
@@ -180,7 +180,7 @@ bool read_flow_field(const std::string& filename, std::optional<Sampled_flow_fie
       *error = "read_flow_field: " + filename + ": cannot open the file for reading";
     else
       *error = "read_flow_field: " + filename + ": unknown file format (it starts with '" +
-               Flow_aligned_surfaces::internal::printable(head.substr(0, 24)) +
+               Flow_aligned_surfaces::IO::internal::printable(head.substr(0, 24)) +
                "'); expected a legacy VTK file ('# vtk DataFile'), a VTK XML file ('<VTKFile'), an "
                "AmiraMesh file ('# AmiraMesh') or a NRRD file ('NRRD000x')";
   }
@@ -198,7 +198,7 @@ bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field
                      const NamedParameters& np = CGAL::parameters::default_values(),
                      std::string* error = nullptr)
 {
-  return Flow_aligned_surfaces::internal::read_and_assign<Sampled_flow_field_3<K>>(
+  return Flow_aligned_surfaces::IO::internal::read_and_assign<Sampled_flow_field_3<K>>(
       field, [&](auto& f) { return read_flow_field(filename, f, np, error); });
 }
 

@@ -9,9 +9,9 @@
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_READ_SESSION_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_READ_SESSION_H
 
-#include <CGAL/Flow_aligned_surfaces/Alignment.h>
-#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
-#include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
+#include <CGAL/Flow_aligned_surfaces/Session.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/text_cursor.h>
 
 #include <array>
 #include <cmath>
@@ -26,63 +26,6 @@
 namespace CGAL {
 namespace Flow_aligned_surfaces {
 namespace IO {
-
-/// \ingroup PkgFlowAlignedSurfacesIO
-/// The initial surface of a session: a planar rectangle or a disk, as `make_planar_patch()` and
-/// `make_disk_patch()` build them.
-struct Session_patch {
-  /// The kind of initial surface.
-  enum class Shape {
-    PLANAR, ///< `patch planar ...`: a rectangle
-    DISK    ///< `patch disk ...`: a disk
-  };
-  Shape shape = Shape::PLANAR;               ///< rectangle or disk
-  std::array<double, 3> center{{0, 0, 0}};   ///< the center of the patch
-  std::array<double, 3> normal{{0, 0, 1}};   ///< the normal of its plane (not necessarily unit)
-  double width = 1;                          ///< the rectangle's first side (planar)
-  double height = 1;                         ///< the rectangle's second side (planar)
-  double radius = 1;                         ///< the disk's radius (disk)
-  std::size_t target_number_of_faces = 1000; ///< the number of faces asked of the patch builder
-};
-
-/// \ingroup PkgFlowAlignedSurfacesIO
-/// One operation of a session, as one line of the file gives it.
-struct Session_operation {
-  /// What the operation does.
-  enum class Kind {
-    ITERATE,   ///< `iterate N` or `iterate until-converged [N]`
-    TRANSLATE, ///< `translate dx dy dz`
-    ROTATE,    ///< `rotate ax ay az angle` (degrees, about the centroid of the surface's vertices)
-    GROW,      ///< `grow distance [dx dy dz | across-flow]`
-    SAVE       ///< `save path`
-  };
-  /// Which part of the boundary `grow` offsets.
-  enum class Growth {
-    WHOLE_BOUNDARY, ///< `grow d`
-    DIRECTION,      ///< `grow d dx dy dz`: the part facing `vector`
-    ACROSS_FLOW     ///< `grow d across-flow`: across the flow, for tangential surfaces
-  };
-  Kind kind = Kind::ITERATE; ///< what the operation does
-  std::size_t line = 0;      ///< the line of the file (1 = first)
-  /// `ITERATE`: the number of iterations, or the largest one when `until_converged`.
-  std::size_t number_of_iterations = 0;
-  bool until_converged = false; ///< `ITERATE`: stop at the first converged iteration
-  std::array<double, 3> vector{
-      {0, 0, 0}};      ///< `TRANSLATE`: the move; `ROTATE`: the axis; `GROW`: the direction
-  double angle = 0;    ///< `ROTATE`: the angle in radians (the file gives degrees)
-  double distance = 0; ///< `GROW`: the offset distance
-  Growth growth = Growth::WHOLE_BOUNDARY; ///< `GROW`: which part of the boundary
-  std::string path;                       ///< `SAVE`: the file name, as written in the session
-};
-
-/// \ingroup PkgFlowAlignedSurfacesIO
-/// A session read by `read_session()`: where it takes place and what the user did.
-struct Session {
-  std::string flow;                            ///< the `flow` line's argument, empty if there is none
-  Alignment alignment = Alignment::TANGENTIAL; ///< the `alignment` line's argument (default tangential)
-  Session_patch patch;                         ///< the `patch` line: the initial surface
-  std::vector<Session_operation> operations;   ///< the operations, in the order of the file
-};
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -207,25 +150,25 @@ public:
       session.operations.push_back(op);
     }
     if (!have_patch)
-      throw Flow_aligned_surfaces::internal::Read_error("read_session: " + m_filename +
+      throw Flow_aligned_surfaces::IO::internal::Read_error("read_session: " + m_filename +
                                                         ": no 'patch' line gives the initial surface");
     return session;
   }
 
 private:
-  using Read_error = Flow_aligned_surfaces::internal::Read_error;
+  using Read_error = Flow_aligned_surfaces::IO::internal::Read_error;
 
-  static std::string printable(std::string_view s) { return Flow_aligned_surfaces::internal::printable(s); }
+  static std::string printable(std::string_view s) { return Flow_aligned_surfaces::IO::internal::printable(s); }
 
   static std::vector<std::string_view> split(std::string_view text)
   {
     std::vector<std::string_view> words;
     std::size_t i = 0;
     while (i < text.size()) {
-      while (i < text.size() && Flow_aligned_surfaces::internal::Text_cursor::is_space(text[i]))
+      while (i < text.size() && Flow_aligned_surfaces::IO::internal::Text_cursor::is_space(text[i]))
         ++i;
       const std::size_t b = i;
-      while (i < text.size() && !Flow_aligned_surfaces::internal::Text_cursor::is_space(text[i]))
+      while (i < text.size() && !Flow_aligned_surfaces::IO::internal::Text_cursor::is_space(text[i]))
         ++i;
       if (i > b)
         words.push_back(text.substr(b, i - b));
@@ -248,7 +191,7 @@ private:
   double number(std::size_t i, const std::string& what) const
   {
     double v = 0;
-    if (!Flow_aligned_surfaces::internal::Text_cursor::parse_number(m_words[i], v) || !std::isfinite(v))
+    if (!Flow_aligned_surfaces::IO::internal::Text_cursor::parse_number(m_words[i], v) || !std::isfinite(v))
       fail("'" + printable(m_words[i]) + "' is not a finite number (" + what + ")");
     return v;
   }
@@ -356,10 +299,10 @@ left untouched.
 inline bool read_session(const std::string& filename, Session& session, std::string* error = nullptr)
 {
   try {
-    const std::string bytes = Flow_aligned_surfaces::internal::read_file_contents(filename, "read_session");
+    const std::string bytes = Flow_aligned_surfaces::IO::internal::read_file_contents(filename, "read_session");
     session = internal::Session_parser(filename, bytes).parse();
     return true;
-  } catch (const Flow_aligned_surfaces::internal::Read_error& e) {
+  } catch (const Flow_aligned_surfaces::IO::internal::Read_error& e) {
     if (error)
       *error = e.what();
   } catch (const std::bad_alloc&) {

@@ -19,7 +19,7 @@
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
 #include <CGAL/Flow_aligned_surfaces/internal/virtual_display.h>
-#include <CGAL/Flow_aligned_surfaces/internal/write_file_atomically.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -351,7 +351,7 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
   vtkUnsignedCharArray* encoded = png->GetResult();
   if (encoded == nullptr || encoded->GetNumberOfValues() == 0)
     return fail("VTK's PNG writer produced nothing");
-  if (!Flow_aligned_surfaces::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+  if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
         os.write(reinterpret_cast<const char*>(encoded->GetPointer(0)),
                  std::streamsize(encoded->GetNumberOfValues()));
       }))

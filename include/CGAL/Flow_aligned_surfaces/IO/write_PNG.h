@@ -10,7 +10,7 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_PNG_H
 
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
-#include <CGAL/Flow_aligned_surfaces/internal/write_file_atomically.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_PNG
 #include <png.h>
@@ -75,7 +75,7 @@ inline bool write_PNG(const std::string& filename, const Texture_image& image, s
   if (!png_image_write_to_memory(&png, encoded.data(), &size, 0, bytes.data(), stride, nullptr))
     return fail(std::string("libpng: ") + png.message);
   std::string reason;
-  if (!Flow_aligned_surfaces::internal::write_file_atomically(
+  if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(
           filename, reason, [&](std::ostream& os) { os.write(encoded.data(), std::streamsize(size)); }))
     return fail(reason);
   return true;

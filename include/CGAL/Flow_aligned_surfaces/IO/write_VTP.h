@@ -8,7 +8,7 @@
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_VTP_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_VTP_H
 
-#include <CGAL/Flow_aligned_surfaces/internal/write_file_atomically.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -171,7 +171,7 @@ bool write_VTP(const std::string& filename, const TriangleMesh& tm,
     ordered_faces[get(fim, f)] = f;
 
   const bool written =
-      Flow_aligned_surfaces::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+      Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
         os.precision(precision);
         internal::write_VTP_head(os, nv, 0, nf);
         for (auto v : ordered_vertices) {
@@ -235,7 +235,7 @@ bool write_VTP_polylines(const std::string& filename, const std::vector<Polyline
   std::string reason;
   const bool written =
       internal::check_VTP_array_sizes(point_data, np, cell_data, polylines.size(), reason) &&
-      Flow_aligned_surfaces::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+      Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
         os.precision(precision);
         internal::write_VTP_head(os, np, polylines.size(), 0);
         for (const Polyline& line : polylines)

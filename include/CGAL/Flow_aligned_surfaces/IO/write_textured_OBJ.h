@@ -13,7 +13,7 @@
 #include <CGAL/Flow_aligned_surfaces/IO/write_PNG.h>
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
-#include <CGAL/Flow_aligned_surfaces/internal/write_file_atomically.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -81,14 +81,14 @@ bool write_textured_OBJ(const std::string& filename, const TriangleMesh& tm, UVM
   };
 
   std::string reason;
-  if (!Flow_aligned_surfaces::internal::write_file_atomically(mtl.string(), reason, [&](std::ostream& os) {
+  if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(mtl.string(), reason, [&](std::ostream& os) {
         os << "# flow texture of " << obj.filename().string() << "\nnewmtl flow_texture\n"
            << "Ka 1 1 1\nKd 1 1 1\nKs 0 0 0\nillum 1\nmap_Kd " << png.filename().string() << "\n";
       }))
     return fail(mtl.string() + ": " + reason);
 
   const auto ordered_vertices = Flow_aligned_surfaces::internal::vertices_in_index_order(tm, vim);
-  if (!Flow_aligned_surfaces::internal::write_file_atomically(obj.string(), reason, [&](std::ostream& os) {
+  if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(obj.string(), reason, [&](std::ostream& os) {
         os.precision(precision);
         os << "mtllib " << mtl.filename().string() << "\n";
         for (auto v : ordered_vertices) {

@@ -8,8 +8,8 @@
 // transparent huge pages (or with them disabled) just gets the reserve.  With TBB, the pages of
 // a large reserve are faulted in (zeroed by the kernel) on all cores.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_RESERVE_HUGE_PAGES_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_RESERVE_HUGE_PAGES_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_RESERVE_HUGE_PAGES_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_RESERVE_HUGE_PAGES_H
 
 #include <cstddef>
 #include <cstdint>
@@ -25,6 +25,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 /// `v.reserve(n)`; then, if the reserved bytes span at least one aligned huge page, advises
@@ -58,7 +59,8 @@ void reserve_huge_pages(std::vector<T>& v, std::size_t n)
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_RESERVE_HUGE_PAGES_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_RESERVE_HUGE_PAGES_H

@@ -6,10 +6,10 @@
 // "reader: file: line L, byte B: what".  Tokens are the runs of bytes between white space;
 // numbers are parsed with `std::from_chars` (no locale, no allocation).
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TEXT_CURSOR_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TEXT_CURSOR_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_TEXT_CURSOR_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_TEXT_CURSOR_H
 
-#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
 
 #include <cctype>
 #include <charconv>
@@ -23,6 +23,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 class Text_cursor {
@@ -184,7 +185,8 @@ private:
 };
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TEXT_CURSOR_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_TEXT_CURSOR_H

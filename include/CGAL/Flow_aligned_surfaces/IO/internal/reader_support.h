@@ -7,10 +7,10 @@
 // with the output untouched, and the `Field&` overload built on the `std::optional<Field>&`
 // one.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READER_SUPPORT_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READER_SUPPORT_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READER_SUPPORT_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READER_SUPPORT_H
 
-#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <new>
@@ -21,6 +21,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 /// The value of the string parameter `Tag` of `np`, or nothing if `np` does not set it.
@@ -97,7 +98,8 @@ bool read_and_assign(Target& target, const Read_optional& read)
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READER_SUPPORT_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READER_SUPPORT_H

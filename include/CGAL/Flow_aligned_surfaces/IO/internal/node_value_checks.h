@@ -7,8 +7,8 @@
 // node, and NaN at a solid node, whose value is never interpolated).  The messages name the
 // array, the node and the value.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_NODE_VALUE_CHECKS_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_NODE_VALUE_CHECKS_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_NODE_VALUE_CHECKS_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_NODE_VALUE_CHECKS_H
 
 #include <array>
 #include <cmath>
@@ -19,6 +19,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 /// Node `i` of a grid of `n[0] x n[1] x n[2]` nodes (x fastest) in messages: "i = (x, y, z)".
@@ -64,7 +65,8 @@ float checked_velocity_component(double v, std::size_t i, const Is_fluid& fluid,
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_NODE_VALUE_CHECKS_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_NODE_VALUE_CHECKS_H

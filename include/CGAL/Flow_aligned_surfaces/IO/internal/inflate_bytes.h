@@ -8,8 +8,8 @@
 // supported.  The output grows with the data really decompressed and stops at the size the
 // header claims, so a lying header cannot make it allocate more than that the data give.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_INFLATE_BYTES_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_INFLATE_BYTES_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_INFLATE_BYTES_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_INFLATE_BYTES_H
 
 #include <cstddef>
 #include <string>
@@ -23,6 +23,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 /// Whether `inflate_bytes()` can decompress (the package was built with zlib).
@@ -108,7 +109,8 @@ inline std::string inflate_bytes(std::string_view in, std::size_t expected, std:
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_INFLATE_BYTES_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_INFLATE_BYTES_H

@@ -9,8 +9,8 @@
 // `Unstructured_flow_field_3`, whose isoparametric hexahedra are exactly the trilinear cells of
 // a curvilinear grid.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_STRUCTURED_GRID_CELLS_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_STRUCTURED_GRID_CELLS_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_STRUCTURED_GRID_CELLS_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_STRUCTURED_GRID_CELLS_H
 
 #include <array>
 #include <cstddef>
@@ -19,6 +19,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 struct Structured_grid_cells {
@@ -57,7 +58,8 @@ inline Structured_grid_cells structured_grid_cells(const std::array<std::size_t,
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_STRUCTURED_GRID_CELLS_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_STRUCTURED_GRID_CELLS_H

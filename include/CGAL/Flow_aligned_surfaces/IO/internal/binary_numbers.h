@@ -6,8 +6,8 @@
 // array, then call `decode_binary_number()` per value, or `decode_binary_numbers()` for a run
 // of consecutive values (the same results, several times faster for large arrays).
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_BINARY_NUMBERS_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_BINARY_NUMBERS_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_BINARY_NUMBERS_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_BINARY_NUMBERS_H
 
 #include <cstddef>
 #include <cstdint>
@@ -15,6 +15,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 enum class Byte_order { BIG_ENDIAN_ORDER, LITTLE_ENDIAN_ORDER };
@@ -159,7 +160,8 @@ inline void decode_binary_numbers(Binary_type type, Byte_order order, const unsi
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_BINARY_NUMBERS_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_BINARY_NUMBERS_H

@@ -7,10 +7,10 @@
 // The blocks are independent, so with TBB (`CGAL_LINKED_WITH_TBB`) they are decoded in parallel.
 // Also the mask flags m_i = [x_i != 0], with a NaN reported likewise.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_CHECKED_FLOAT_DECODING_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_CHECKED_FLOAT_DECODING_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_CHECKED_FLOAT_DECODING_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_CHECKED_FLOAT_DECODING_H
 
-#include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/binary_numbers.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +30,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 /// The values per block of `decode_checked_floats()` (256 KiB of floats: a task of ~0.1 ms).
@@ -168,7 +169,8 @@ inline bool decode_checked_flags(Binary_type type, Byte_order order, const unsig
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_CHECKED_FLOAT_DECODING_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_CHECKED_FLOAT_DECODING_H

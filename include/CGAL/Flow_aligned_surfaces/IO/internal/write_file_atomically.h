@@ -4,8 +4,8 @@
 // Writes a file through a temporary beside it and renames it into place only when
 // everything was written, so that a failure never destroys what the user had.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_WRITE_FILE_ATOMICALLY_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_WRITE_FILE_ATOMICALLY_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_WRITE_FILE_ATOMICALLY_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_WRITE_FILE_ATOMICALLY_H
 
 #include <cerrno>
 #include <cstdio>
@@ -15,6 +15,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 /// Calls `write(stream)` on a temporary file and renames it to `filename`; on failure returns
@@ -48,7 +49,8 @@ bool write_file_atomically(const std::string& filename, std::string& error, cons
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_WRITE_FILE_ATOMICALLY_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_WRITE_FILE_ATOMICALLY_H

@@ -8,17 +8,17 @@
 // out-of-float-range velocity at a fluid node, a NaN mask value and a non-numeric token fail
 // with the node and the byte).
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_UNIFORM_GRID_READING_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_UNIFORM_GRID_READING_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_UNIFORM_GRID_READING_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_UNIFORM_GRID_READING_H
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
-#include <CGAL/Flow_aligned_surfaces/internal/binary_numbers.h>
-#include <CGAL/Flow_aligned_surfaces/internal/checked_float_decoding.h>
-#include <CGAL/Flow_aligned_surfaces/internal/node_value_checks.h>
-#include <CGAL/Flow_aligned_surfaces/internal/read_file.h>
-#include <CGAL/Flow_aligned_surfaces/internal/reader_support.h>
-#include <CGAL/Flow_aligned_surfaces/internal/reserve_huge_pages.h>
-#include <CGAL/Flow_aligned_surfaces/internal/text_cursor.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/binary_numbers.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/checked_float_decoding.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/node_value_checks.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/reserve_huge_pages.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/text_cursor.h>
 
 #include <array>
 #include <cmath>
@@ -35,6 +35,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 /// One array of node values as the first pass found it.
@@ -137,7 +138,8 @@ Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const st
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_UNIFORM_GRID_READING_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_UNIFORM_GRID_READING_H

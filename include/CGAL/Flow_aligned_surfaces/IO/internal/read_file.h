@@ -6,8 +6,8 @@
 // where the system can, else read into a string), and tokens shown in messages without control
 // characters.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READ_FILE_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READ_FILE_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READ_FILE_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READ_FILE_H
 
 #include <cctype>
 #include <cstddef>
@@ -42,6 +42,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 /// Thrown inside the readers only, with the complete message ("reader: file: where: what").
@@ -175,7 +176,8 @@ inline std::string printable(std::string_view s)
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_READ_FILE_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READ_FILE_H

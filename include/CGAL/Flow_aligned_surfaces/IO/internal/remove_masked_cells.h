@@ -6,8 +6,8 @@
 // exactly those whose points are all fluid (fluid[p] != 0), in their order.  This is the grid
 // fields' rule for cells: the interior of a cell touching a solid node is outside.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_REMOVE_MASKED_CELLS_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_REMOVE_MASKED_CELLS_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_REMOVE_MASKED_CELLS_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_REMOVE_MASKED_CELLS_H
 
 #include <algorithm>
 #include <cstddef>
@@ -16,6 +16,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 /// Removes from the cell arrays every cell that touches a point `p` with `fluid[p] == 0`, and
@@ -46,7 +47,8 @@ std::size_t remove_masked_cells(const std::vector<unsigned char>& fluid, std::ve
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_REMOVE_MASKED_CELLS_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_REMOVE_MASKED_CELLS_H

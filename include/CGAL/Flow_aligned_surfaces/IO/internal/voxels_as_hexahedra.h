@@ -7,8 +7,8 @@
 // are hexahedron points 0 1 2 3 4 5 6 7.  The VTK readers store a voxel as that hexahedron, so
 // `Unstructured_flow_field_3` interpolates it trilinearly like any other hexahedron.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_VOXELS_AS_HEXAHEDRA_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_VOXELS_AS_HEXAHEDRA_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_VOXELS_AS_HEXAHEDRA_H
+#define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_VOXELS_AS_HEXAHEDRA_H
 
 #include <cstddef>
 #include <utility>
@@ -16,6 +16,7 @@
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+namespace IO {
 namespace internal {
 
 constexpr unsigned char vtk_voxel_type = 11, vtk_hexahedron_type = 12;
@@ -41,7 +42,8 @@ void voxels_as_hexahedra(std::vector<unsigned char>& cell_types, const std::vect
 }
 
 } // namespace internal
+} // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_VOXELS_AS_HEXAHEDRA_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_VOXELS_AS_HEXAHEDRA_H
