@@ -32,7 +32,7 @@ jobs="${JOBS:-2}"
 
 configure_and_build() { # build_dir overlay
   cmake -S "$root" -B "$1" -DCMAKE_BUILD_TYPE=Release \
-    -DFAS_BUILD_TESTS=OFF -DFAS_BUILD_EXAMPLES=OFF -DFAS_BUILD_DOC_TEST=OFF -DBUILD_TESTING=OFF \
+    -DFAS_BUILD_TESTS=OFF -DFAS_BUILD_EXAMPLES=OFF -DFAS_BUILD_DEMO=OFF -DFAS_BUILD_DOC_TEST=OFF -DBUILD_TESTING=OFF \
     -DFAS_BUILD_BENCHMARKS=ON -DFAS_BENCHMARK_INCLUDE_OVERLAY="$2" >/dev/null
   cmake --build "$1" --target bench_deformation bench_grid_sampling -j"$jobs"
 }

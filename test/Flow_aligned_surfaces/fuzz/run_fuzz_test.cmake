@@ -7,7 +7,8 @@
 # Run as: cmake -DFUZZ_SOURCE_DIR=... -DWORK_DIR=... -P run_fuzz_test.cmake
 # Optional: -DFUZZ_CXX_COMPILER=clang++, -DSEED_DIRS="dir;dir",
 #           -DFUZZ_RUNS=10000 (fuzz_read_VTK_XML: a quarter), -DFUZZ_MAX_TIME=20 (seconds per target), -DFUZZ_JOBS=2,
-#           -DFUZZ_SEED=1 (libFuzzer's random seed: the same inputs in the same order every run)
+#           -DFUZZ_SEED=1 (libFuzzer's random seed: the same inputs in the same order every run),
+#           -DFUZZ_REQUIRED=ON (a missing clang++, libFuzzer or VTK is a failure, not a skip: CI=true)
 cmake_minimum_required(VERSION 3.16)
 
 foreach(var IN ITEMS FUZZ_SOURCE_DIR WORK_DIR)
@@ -32,8 +33,16 @@ endif()
 if(NOT FUZZ_CXX_COMPILER)
   find_program(FUZZ_CXX_COMPILER NAMES clang++ clang++-19 clang++-18 clang++-17 clang++-16 clang++-15 clang++-14)
 endif()
+# Without a fuzzer: a visible skip, or under FUZZ_REQUIRED a failure that says what to install.
+function(skip_or_fail reason)
+  if(FUZZ_REQUIRED)
+    message(FATAL_ERROR "fuzz test: ${reason} (FUZZ_REQUIRED: a missing tool fails; "
+                        "scripts/install-deps.sh installs clang from Debian's packages)")
+  endif()
+  message(STATUS "FUZZ_SKIPPED: ${reason}")
+endfunction()
 if(NOT FUZZ_CXX_COMPILER)
-  message(STATUS "FUZZ_SKIPPED: no clang++ found; the libFuzzer targets were not built or run")
+  skip_or_fail("no clang++ found; the libFuzzer targets were not built or run")
   return()
 endif()
 file(MAKE_DIRECTORY "${WORK_DIR}")
@@ -43,8 +52,8 @@ execute_process(COMMAND "${FUZZ_CXX_COMPILER}" -fsanitize=fuzzer,address,undefin
                         -o "${WORK_DIR}/probe"
   RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
 if(NOT result EQUAL 0)
-  message(STATUS "FUZZ_SKIPPED: ${FUZZ_CXX_COMPILER} cannot link -fsanitize=fuzzer,address,undefined "
-                 "(libFuzzer or the sanitizer runtimes are missing):\n${output}")
+  skip_or_fail("${FUZZ_CXX_COMPILER} cannot link -fsanitize=fuzzer,address,undefined "
+               "(libFuzzer or the sanitizer runtimes are missing):\n${output}")
   return()
 endif()
 
@@ -82,6 +91,9 @@ file(REMOVE_RECURSE "${WORK_DIR}/artifacts")
 file(MAKE_DIRECTORY "${WORK_DIR}/artifacts")
 foreach(reader IN ITEMS VTK_legacy AmiraMesh NRRD VTK_XML)
   if(NOT EXISTS "${build}/fuzz_read_${reader}")
+    if(FUZZ_REQUIRED)
+      message(FATAL_ERROR "fuzz test: fuzz_read_${reader} was not built (VTK 9 not found by the fuzz project)")
+    endif()
     message(STATUS "fuzz test: fuzz_read_${reader} was not built (VTK 9 not found by the fuzz project)")
     continue()
   endif()

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The Flow_aligned_surfaces developers.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Prints the issue-3 tables from the files run_issue3.sh keeps in results/:
+"""Prints the issue-3 tables from the files run_field_benchmarks.sh keeps in results/:
 
-    issue3_summary.py RESULTS_DIR
+    field_benchmarks_summary.py RESULTS_DIR
 
 Google Benchmark medians (real and CPU time) per benchmark, and for point location the ratio
 of the package to its AABB_tree peers in the same run.  Standard library only.
@@ -26,14 +26,14 @@ def medians(path):
 
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "results"
-    ctx, rows = medians(os.path.join(out, "issue3_grid_sampling.json"))
+    ctx, rows = medians(os.path.join(out, "fields_grid_sampling.json"))
     print(f"Grid sampling (load {ctx.get('load_avg')}):\n")
     print("| benchmark | median ns/query (wall) | CPU | cv (wall) |")
     print("|---|---:|---:|---:|")
     for name, r in rows.items():
         m = r["median"]
         print(f"| {name} | {m['real_time']:.1f} | {m['cpu_time']:.1f} | {100 * r['cv']['real_time']:.1f} % |")
-    ctx, rows = medians(os.path.join(out, "issue3_point_location.json"))
+    ctx, rows = medians(os.path.join(out, "fields_point_location.json"))
     print(f"\nPoint location (load {ctx.get('load_avg')}):\n")
     print("| mesh | queries | variant | median ns/query (wall) | CPU | cv (wall) | package / this (wall, CPU) |")
     print("|---|---|---|---:|---:|---:|---:|")

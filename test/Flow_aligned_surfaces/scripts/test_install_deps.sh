@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# scripts/install-deps.sh never removes a package: with a fake apt-get whose simulated install
+# would remove python3-paraview (as libvtk9-dev does on Debian bookworm), the script must name
+# the package, install nothing and fail; with a simulation that removes nothing it installs.
+# Run as: test_install_deps.sh <path of install-deps.sh>
+set -euo pipefail
+script=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/bin"
+
+# dpkg-query: nothing is installed except what FAKE_INSTALLED lists.
+cat > "$work/bin/dpkg-query" <<'EOF'
+#!/usr/bin/env bash
+package=${!#}
+for p in $FAKE_INSTALLED; do
+  if [ "$p" = "$package" ]; then echo "install ok installed"; exit 0; fi
+done
+exit 1
+EOF
+# apt-get: records every call; a simulation prints FAKE_SIMULATION.
+cat > "$work/bin/apt-get" <<'EOF'
+#!/usr/bin/env bash
+echo "apt-get $*" >> "$FAKE_LOG"
+if [[ " $* " == *" -s "* ]]; then printf '%b' "$FAKE_SIMULATION"; fi
+exit 0
+EOF
+printf '#!/usr/bin/env bash\n"$@"\n' > "$work/bin/sudo"
+chmod +x "$work/bin/"*
+
+fail() { printf 'test_install_deps: %b\n' "$*" >&2; exit 1; }
+
+# 1. The simulation would remove python3-paraview: stop, name it, install nothing.
+export FAKE_LOG="$work/log1" FAKE_INSTALLED="" \
+  FAKE_SIMULATION='Inst python3-vtk9 (9.1.0)\nRemv python3-paraview [5.11.0]\nInst libvtk9-dev (9.1.0)\n'
+if output=$(PATH="$work/bin:$PATH" bash "$script" 2>&1); then
+  fail "the script succeeded although apt would remove python3-paraview:\n$output"
+fi
+grep -q "would REMOVE" <<<"$output" || fail "no message about the removal:\n$output"
+grep -q "python3-paraview" <<<"$output" || fail "the package to be removed is not named:\n$output"
+if grep -q "install -y" "$FAKE_LOG"; then fail "apt-get install -y was called:\n$(cat "$FAKE_LOG")"; fi
+
+# 2. python3-paraview is installed: libvtk9-dev is left out, the rest is installed.
+export FAKE_LOG="$work/log2" FAKE_INSTALLED="python3-paraview" FAKE_SIMULATION='Inst cmake (3.25)\n'
+output=$(PATH="$work/bin:$PATH" bash "$script" 2>&1) || fail "failed with python3-paraview installed:\n$output"
+grep -q "libvtk9-dev is left out" <<<"$output" || fail "no word on leaving libvtk9-dev out:\n$output"
+grep "install -y" "$FAKE_LOG" | grep -q "libvtk9-dev" && fail "libvtk9-dev was installed beside python3-paraview"
+grep -q "install -y.* clang " "$FAKE_LOG" || fail "clang was not installed:\n$(cat "$FAKE_LOG")"
+
+echo "test_install_deps: the script stops before a removal and keeps ParaView's Python"
