@@ -6,7 +6,10 @@
 #ifdef FAS_HAVE_OPENMESH
 // As in test_mesh_types.cpp: OpenMesh's add_vertex copies a deliberately uninitialized point,
 // which GCC reports at -O2 inside the standard headers, so the pragma precedes them.
+// Pushed here and popped after the includes, so that it reaches no file compiled after this
+// one in a unity batch.
 #if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #endif
@@ -40,6 +43,10 @@
 #include <cmath>
 #include <limits>
 #include <vector>
+
+#if defined(FAS_HAVE_OPENMESH) && defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 // This file's tests and helpers in a namespace of their own: the suite is compiled in unity
 // batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.

@@ -9,7 +9,10 @@
 // OpenMesh's PropertyT<VectorT>::push_back() (every add_vertex) copies a default-constructed,
 // deliberately uninitialized VectorT; GCC reports it at -O2 inside <new_allocator.h>, where
 // only a pragma that precedes the standard headers reaches it.
+// Pushed here and popped after the includes, so that it reaches no file compiled after this
+// one in a unity batch.
 #if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #endif
@@ -41,6 +44,10 @@
 #include <array>
 #include <cmath>
 #include <vector>
+
+#if defined(FAS_HAVE_OPENMESH) && defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 // This file's tests and helpers in a namespace of their own: the suite is compiled in unity
 // batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.

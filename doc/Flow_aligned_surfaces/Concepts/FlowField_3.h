@@ -49,6 +49,9 @@ can be sampled from several threads at once.
 \cgalHasModels{`CGAL::Flow_aligned_surfaces::Burgers_vortex<GeomTraits>`}
 \cgalHasModels{`CGAL::Flow_aligned_surfaces::Crawfis_tornado<GeomTraits>`}
 \cgalHasModels{`CGAL::Flow_aligned_surfaces::Regular_grid_flow_field_3<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Rectilinear_grid_flow_field_3<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Unstructured_flow_field_3<GeomTraits>`}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::Sampled_flow_field_3<GeomTraits>`}
 \cgalHasModelsEnd
 
 The analytic flows are declared in `<CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>`.

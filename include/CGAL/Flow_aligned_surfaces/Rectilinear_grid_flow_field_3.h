@@ -55,6 +55,8 @@ namespace Flow_aligned_surfaces {
 /// \tparam GeomTraits a model of `Kernel`; the coordinates are converted to `double` with
 ///         `CGAL::to_double()` for the interpolation.
 ///
+/// \cgalModels `FlowField_3`
+///
 /// \sa `Regular_grid_flow_field_3`, `IO::read_VTK_flow_field()`
 template <typename GeomTraits>
 class Rectilinear_grid_flow_field_3 {

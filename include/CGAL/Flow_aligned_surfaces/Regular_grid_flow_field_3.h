@@ -68,6 +68,8 @@ namespace Flow_aligned_surfaces {
 /// \tparam GeomTraits a model of `Kernel`; the coordinates are converted to `double` with
 ///         `CGAL::to_double()` for the interpolation.
 ///
+/// \cgalModels `FlowField_3`
+///
 /// \sa `sample_on_grid()`
 template <typename GeomTraits>
 class Regular_grid_flow_field_3 {

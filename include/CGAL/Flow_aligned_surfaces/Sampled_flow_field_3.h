@@ -33,6 +33,8 @@ namespace Flow_aligned_surfaces {
 ///
 /// \tparam GeomTraits a model of `Kernel`
 ///
+/// \cgalModels `FlowField_3`
+///
 /// \sa `IO::read_flow_field()`
 template <typename GeomTraits>
 class Sampled_flow_field_3 {

@@ -43,6 +43,8 @@ namespace Flow_aligned_surfaces {
 /// \tparam FlowField a model of `FlowField_3` whose call operator returns
 ///         `std::optional<Vector_3>` for a `Point_3` of a CGAL kernel
 ///
+/// \cgalModels `UnsteadyFlowField_3`
+///
 /// \sa `IO::read_PVD_flow_field()`
 template <typename FlowField>
 class Unsteady_flow_field_3 {

@@ -88,6 +88,8 @@ namespace Flow_aligned_surfaces {
 /// \tparam GeomTraits a model of `Kernel`; the coordinates are converted to `double` with
 ///         `CGAL::to_double()`.
 ///
+/// \cgalModels `FlowField_3`
+///
 /// \sa `Regular_grid_flow_field_3`
 template <typename GeomTraits>
 class Unstructured_flow_field_3 {
