@@ -22,10 +22,11 @@ cmake --build "$build" -j"$jobs"
 
 if [ "${FAS_SKIP_SANITIZERS:-0}" != 1 ]; then
   sanitized="$root/build/sanitize"
-  # -O1: the sanitizers need no more; no debug information (ASan's reports name functions and
-  # files from the symbols; rebuild with -g1 to get line numbers).
+  # -O0, no debug information: the core suite compiles in less than half the time of -O1
+  # (measured: one unity batch 245 s of CPU at -O0, over 540 s at -O1) and still runs in
+  # minutes.  ASan's reports name the functions from the symbols; add -g1 for line numbers.
   cmake -S "$root" -B "$sanitized" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" -DFAS_SANITIZE=ON \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O0 -DNDEBUG" -DFAS_SANITIZE=ON \
     -DFAS_BUILD_EXAMPLES=OFF -DFAS_BUILD_DEMO=OFF -DFAS_BUILD_DOC_TEST=OFF
   cmake --build "$sanitized" --target test_flow_aligned_surfaces -j"$jobs"
   (cd "$sanitized" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions="$root/test/Flow_aligned_surfaces/ubsan.supp" \

@@ -12,6 +12,8 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "skip_without_tool.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -352,7 +354,7 @@ namespace {
 TEST(FlowAlignedDeformation, ParallelIterationsGiveTheSerialSurfaces)
 {
 #ifndef CGAL_LINKED_WITH_TBB
-  GTEST_SKIP() << "built without TBB: use_parallelism has no effect";
+  FAS_SKIP_WITHOUT_TOOL("built without TBB: use_parallelism has no effect");
 #else
   const FAS::Point_source_flow<K> source(Point(0, 0, 0), 1.0);
   Mesh serial = planar_patch(Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 12000);

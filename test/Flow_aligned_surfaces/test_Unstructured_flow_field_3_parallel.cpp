@@ -12,6 +12,7 @@
 
 #include "jittered_cube_mesh.h"
 #include "test_kernel.h"
+#include "skip_without_tool.h"
 
 #include <gtest/gtest.h>
 
@@ -67,7 +68,7 @@ void check_parallel(int n, bool tetrahedra)
 #ifndef CGAL_LINKED_WITH_TBB
   (void)n;
   (void)tetrahedra;
-  GTEST_SKIP() << "built without TBB (CGAL_LINKED_WITH_TBB is not defined)";
+  FAS_SKIP_WITHOUT_TOOL("built without TBB (CGAL_LINKED_WITH_TBB is not defined)");
 #else
   const Field field = jittered_cube_field(n, tetrahedra, 7);
   const int count = 400;

@@ -231,6 +231,7 @@ public:
 
 private:
   struct Particle {
+    Particle(double u, Integrator integrator) : u(u), integrator(std::move(integrator)) {}
     double u;
     Integrator integrator;
     bool at_boundary = false; // it left the domain at x, before the current time line
