@@ -19,7 +19,7 @@
 // mask array "inside"); without --center the patch is placed at the middle of the data's box,
 // and without --normal it faces the flow there (orthogonal) or contains it (tangential).
 
-#include "example_support.h"
+#include "demo_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
@@ -42,7 +42,7 @@
 #include <string>
 #include <vector>
 
-using namespace examples;
+using namespace fas_demo;
 
 struct Scene {
   Flow flow;
