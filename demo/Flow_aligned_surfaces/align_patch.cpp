@@ -145,19 +145,6 @@ std::optional<std::ofstream> open_output(const std::filesystem::path& path)
 
 using Polyline = std::vector<Point>;
 
-// A picture of `tm` coloured by per-face flux with `lines` drawn on it.
-Surface_rendering flux_with_polylines(const Mesh& tm, const Flow& flow, const std::vector<Polyline>& lines)
-{
-  Surface_rendering what;
-  what.face_scalars = face_fluxes(tm, flow);
-  for (const Polyline& line : lines) {
-    what.polylines.emplace_back();
-    for (const Point& p : line)
-      what.polylines.back().push_back({p.x(), p.y(), p.z()});
-  }
-  return what;
-}
-
 // The seeding workflow on the aligned surface `tm` of `deformation`: seed curves from its
 // parametrization, a stream surface from each (forward and backward, arc-length time lines up to
 // twice the patch size), and stream lines from seed points on an orthogonal surface; all written

@@ -182,13 +182,26 @@ inline bool write_picture(const std::filesystem::path& path, const Mesh& tm, con
   return false;
 }
 
+/// What the picture of `tm` coloured by the normalized flux of its faces shows, with `lines` (seed
+/// curves, stream lines) drawn on it.
+inline Surface_rendering flux_with_polylines(const Mesh& tm, const Flow& flow,
+                                             const std::vector<std::vector<Point>>& lines)
+{
+  Surface_rendering what;
+  what.face_scalars = face_fluxes(tm, flow);
+  for (const std::vector<Point>& line : lines) {
+    what.polylines.emplace_back();
+    for (const Point& p : line)
+      what.polylines.back().push_back({p.x(), p.y(), p.z()});
+  }
+  return what;
+}
+
 /// The picture of `tm` coloured by the normalized flux of its faces (blue 0: tangential, red 1:
 /// orthogonal).
 inline bool write_flux_picture(const std::filesystem::path& path, const Mesh& tm, const Flow& flow)
 {
-  Surface_rendering what;
-  what.face_scalars = face_fluxes(tm, flow);
-  return write_picture(path, tm, what);
+  return write_picture(path, tm, flux_with_polylines(tm, flow, {}));
 }
 
 /// The picture of a stream surface `tm` with the LIC-like texture of its unnormalized tangential

@@ -132,12 +132,6 @@ int main(int argc, char** argv)
     std::vector<std::vector<Point>> seed_curves;
     FAS::extract_iso_contours(tm, r, FAS::evenly_spaced_iso_values(tm, r, 6),
                               std::back_inserter(seed_curves));
-    flux_picture.face_scalars = face_fluxes(tm, flow);
-    for (const auto& curve : seed_curves) {
-      flux_picture.polylines.emplace_back();
-      for (const Point& p : curve)
-        flux_picture.polylines.back().push_back({p.x(), p.y(), p.z()});
-    }
     Surface_rendering textured;
     for (Face f : tm.faces())
       textured.face_mask.push_back(mask[f]);
@@ -145,7 +139,8 @@ int main(int argc, char** argv)
     for (Vertex v : tm.vertices())
       textured.texture_coordinates.push_back(uv[v]);
     pictures =
-        render(out / "aligned_flux.png", tm, flux_picture) && render(out / "textured.png", tm, textured);
+        render(out / "aligned_flux.png", tm, flux_with_polylines(tm, flow, seed_curves)) &&
+        render(out / "textured.png", tm, textured);
     for (int frame = 0; pictures && frame < 4; ++frame) {
       FAS::compute_flow_texture_coordinates(tm, r, s, uv, scale, 0.25 * frame); // a quarter repeat per frame
       for (Vertex v : tm.vertices())

@@ -27,6 +27,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <iterator>
 #include <string>
 #include <vector>
@@ -50,19 +51,11 @@ bool write_polylines_csv(const std::string& filename, const std::vector<Polyline
 
 int main(int argc, char** argv)
 {
-  std::size_t faces = 3000;
-  std::string out = "seed_curves_output";
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--faces" && i + 1 < argc)
-      faces = std::strtoul(argv[++i], nullptr, 10);
-    else if (arg == "--output" && i + 1 < argc)
-      out = argv[++i];
-    else {
-      std::cerr << "usage: seed_curves [--faces N] [--output DIR]\n";
-      return 2;
-    }
-  }
+  std::map<std::string, std::string> options{{"faces", "3000"}, {"output", "seed_curves_output"}};
+  if (!parse_options(argc, argv, options, "seed_curves [--faces N] [--output DIR]"))
+    return 2;
+  const std::size_t faces = std::strtoul(options["faces"].c_str(), nullptr, 10);
+  const std::string out = options["output"];
 
   // 1. An orthogonal surface: a tilted disk beside the source becomes a piece of a sphere.
   const FAS::Point_source_flow<Kernel> flow;

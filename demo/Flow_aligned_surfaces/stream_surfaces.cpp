@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,24 +29,14 @@ using Polyline = std::vector<Point>;
 
 int main(int argc, char** argv)
 {
-  std::size_t faces = 2000;
-  double spacing = 0.02, time = 1.0;
-  std::string out = "stream_surfaces_output";
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--faces" && i + 1 < argc)
-      faces = std::strtoul(argv[++i], nullptr, 10);
-    else if (arg == "--spacing" && i + 1 < argc)
-      spacing = std::strtod(argv[++i], nullptr);
-    else if (arg == "--time" && i + 1 < argc)
-      time = std::strtod(argv[++i], nullptr);
-    else if (arg == "--output" && i + 1 < argc)
-      out = argv[++i];
-    else {
-      std::cerr << "usage: stream_surfaces [--faces N] [--spacing H] [--time T] [--output DIR]\n";
-      return 2;
-    }
-  }
+  std::map<std::string, std::string> options{
+      {"faces", "2000"}, {"spacing", "0.02"}, {"time", "1.0"}, {"output", "stream_surfaces_output"}};
+  if (!parse_options(argc, argv, options, "stream_surfaces [--faces N] [--spacing H] [--time T] [--output DIR]"))
+    return 2;
+  const std::size_t faces = std::strtoul(options["faces"].c_str(), nullptr, 10);
+  const double spacing = std::strtod(options["spacing"].c_str(), nullptr);
+  const double time = std::strtod(options["time"].c_str(), nullptr);
+  const std::string out = options["output"];
 
   // 1.-3. The aligned patch, its tangential parametrization and the seed curves.
   const Flow flow = FAS::Burgers_vortex<Kernel>();

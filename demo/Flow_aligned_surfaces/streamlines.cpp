@@ -30,24 +30,14 @@ using namespace fas_demo;
 
 int main(int argc, char** argv)
 {
-  std::size_t faces = 2000;
-  double spacing = 0.15, length = 1.5;
-  std::string out = "streamlines_output";
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--faces" && i + 1 < argc)
-      faces = std::strtoul(argv[++i], nullptr, 10);
-    else if (arg == "--spacing" && i + 1 < argc)
-      spacing = std::atof(argv[++i]);
-    else if (arg == "--length" && i + 1 < argc)
-      length = std::atof(argv[++i]);
-    else if (arg == "--output" && i + 1 < argc)
-      out = argv[++i];
-    else {
-      std::cerr << "usage: streamlines [--faces N] [--spacing H] [--length L] [--output DIR]\n";
-      return 2;
-    }
-  }
+  std::map<std::string, std::string> options{
+      {"faces", "2000"}, {"spacing", "0.15"}, {"length", "1.5"}, {"output", "streamlines_output"}};
+  if (!parse_options(argc, argv, options, "streamlines [--faces N] [--spacing H] [--length L] [--output DIR]"))
+    return 2;
+  const std::size_t faces = std::strtoul(options["faces"].c_str(), nullptr, 10);
+  const double spacing = std::strtod(options["spacing"].c_str(), nullptr);
+  const double length = std::strtod(options["length"].c_str(), nullptr);
+  const std::string out = options["output"];
 
   // 1. An orthogonal surface: a tilted disk beside the source becomes a piece of a sphere.
   const FAS::Point_source_flow<Kernel> flow;
