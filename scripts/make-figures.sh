@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Regenerates the user manual's figures that the examples draw (doc/Flow_aligned_surfaces/fig/):
-# the LIC-like and arrow textures of a stream surface (the paper's Figure 8) and the stream
-# surface with its seed curves, from examples/Flow_aligned_surfaces/flow_texture.cpp, and the
-# seeding workflow (Figures 4 and 5) from the main job, align_patch.cpp, rendered
+# Regenerates the user manual's figures that the demo's applications draw
+# (doc/Flow_aligned_surfaces/fig/): the LIC-like and arrow textures of a stream surface (the
+# paper's Figure 8) and the stream surface with its seed curves, from
+# demo/Flow_aligned_surfaces/flow_texture.cpp, and the seeding workflow (Figures 4 and 5) from
+# the main job, demo/Flow_aligned_surfaces/align_patch.cpp, rendered
 # by VTK off screen (under a private Xvfb when there is no display).  The schematic SVG figures
 # come from doc/Flow_aligned_surfaces/fig/make_figures.py, the session plot from replay_session.
 set -euo pipefail
@@ -11,10 +12,10 @@ build="$root/build/release"
 fig="$root/doc/Flow_aligned_surfaces/fig"
 export CCACHE_BASEDIR="$root"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" --target flow_texture align_patch -j"$(nproc)"
+cmake --build "$build" --target flow_texture_demo align_patch -j"$(nproc)"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-"$build/examples/Flow_aligned_surfaces/flow_texture" --faces 3000 --picture-width 320 --output "$work" | tee "$work/log"
+"$build/demo/Flow_aligned_surfaces/flow_texture" --faces 3000 --picture-width 320 --output "$work" | tee "$work/log"
 if ! grep -q "wrote the pictures" "$work/log"; then
   echo "make-figures: the pictures were not rendered (see above); figures unchanged" >&2
   exit 1
@@ -23,7 +24,7 @@ cp "$work/textured.png" "$fig/fas_texture_noise.png"
 cp "$work/arrows_rendered.png" "$fig/fas_texture_arrows.png"
 cp "$work/aligned_flux.png" "$fig/fas_texture_seed_curves.png"
 # The seeding workflow of Figures 4 and 5, from the main job.
-"$build/examples/Flow_aligned_surfaces/align_patch" --faces 3000 --output "$work/main_job" | tee "$work/main_job.log"
+"$build/demo/Flow_aligned_surfaces/align_patch" --faces 3000 --output "$work/main_job" | tee "$work/main_job.log"
 if [ ! -f "$work/main_job/orthogonal_stream_surfaces.png" ]; then
   echo "make-figures: the main job's pictures were not rendered (see above); seeding figures unchanged" >&2
   exit 1

@@ -8,60 +8,38 @@
 //
 // writes DIR/patch.vtp (the aligned patch) and DIR/stream_surface_<i>.vtp (the velocity, u and
 // t per vertex -- t < 0 on the backward half -- and the normalized flux per face).  Exits with 1
-// if a surface is empty, its flux is above 0.01, or the first integral rho^2 z of the vortex
-// drifts by more than 1e-5 (relative) on a vertex.
+// if a seed curve gives an empty surface.  (The test StreamSurfacesFromTangentialSeedCurves of
+// test/Flow_aligned_surfaces/test_workflows.cpp checks that these surfaces have flux <= 0.01 and
+// keep the first integral rho^2 z of the vortex to 1e-5, relative, on every vertex.)
 
 #include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
 
-#include "example_support.h"
+#include "demo_support.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
-using namespace examples;
+using namespace fas_demo;
 using Polyline = std::vector<Point>;
-
-// The point of `curve` at arc length u from its first point.
-Point point_at_arc_length(const Polyline& curve, double u)
-{
-  for (std::size_t i = 1; i < curve.size(); ++i) {
-    const double length = std::sqrt(CGAL::squared_distance(curve[i - 1], curve[i]));
-    if (u <= length || i + 1 == curve.size())
-      return curve[i - 1] + (std::min(u, length) / length) * (curve[i] - curve[i - 1]);
-    u -= length;
-  }
-  return curve.front();
-}
 
 int main(int argc, char** argv)
 {
-  std::size_t faces = 2000;
-  double spacing = 0.02, time = 1.0;
-  std::string out = "stream_surfaces_output";
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--faces" && i + 1 < argc)
-      faces = std::strtoul(argv[++i], nullptr, 10);
-    else if (arg == "--spacing" && i + 1 < argc)
-      spacing = std::strtod(argv[++i], nullptr);
-    else if (arg == "--time" && i + 1 < argc)
-      time = std::strtod(argv[++i], nullptr);
-    else if (arg == "--output" && i + 1 < argc)
-      out = argv[++i];
-    else {
-      std::cerr << "usage: stream_surfaces [--faces N] [--spacing H] [--time T] [--output DIR]\n";
-      return 2;
-    }
-  }
+  std::map<std::string, std::string> options{
+      {"faces", "2000"}, {"spacing", "0.02"}, {"time", "1.0"}, {"output", "stream_surfaces_output"}};
+  if (!parse_options(argc, argv, options, "stream_surfaces [--faces N] [--spacing H] [--time T] [--output DIR]"))
+    return 2;
+  const std::size_t faces = std::strtoul(options["faces"].c_str(), nullptr, 10);
+  const double spacing = std::strtod(options["spacing"].c_str(), nullptr);
+  const double time = std::strtod(options["time"].c_str(), nullptr);
+  const std::string out = options["output"];
 
   // 1.-3. The aligned patch, its tangential parametrization and the seed curves.
-  const FAS::Burgers_vortex<Kernel> vortex;
-  const Flow flow = vortex;
+  const Flow flow = FAS::Burgers_vortex<Kernel>();
   const Tangential_seed_curves seeds =
       make_tangential_seed_curves(flow, Point(1.0, 0.0, 0.5), Vector(0.0, 1.0, 0.3), 0.5, faces, 5);
   std::cout << "patch: flux " << seeds.alignment.normalized_flux << ", " << seeds.curves.size()
@@ -86,27 +64,19 @@ int main(int argc, char** argv)
     for (Mesh::Vertex_index v : tm.vertices()) // the time of the backward half is negative
       if (std::size_t(v) >= forward_vertices)
         t[v] = -t[v];
-
-    // Independent checks: rho^2 z is constant along stream lines; the surface has no flux.
-    double drift = 0;
-    for (Mesh::Vertex_index v : tm.vertices()) {
-      const double psi0 = vortex.stokes_stream_function(point_at_arc_length(seed, u[v]));
-      drift = std::max(drift, std::abs(vortex.stokes_stream_function(tm.point(v)) - psi0) /
-                                  std::max(std::abs(psi0), 1e-3));
-    }
     const double flux = FAS::normalized_flux(tm, flow);
     std::cout << "stream surface " << c << ": " << tm.number_of_faces() << " triangles, "
               << forward.number_of_time_lines << " + " << backward.number_of_time_lines << " time lines, "
               << forward.number_of_inserted_particles + backward.number_of_inserted_particles << " inserted, "
               << forward.number_of_removed_particles + backward.number_of_removed_particles << " removed, "
               << forward.number_of_tears + backward.number_of_tears << " tears (" << forward.message << "; "
-              << backward.message << "), flux " << flux << ", drift of rho^2 z " << drift << "\n";
+              << backward.message << "), flux " << flux << "\n";
     std::vector<double> us, ts;
     for (Mesh::Vertex_index v : tm.vertices()) {
       us.push_back(u[v]);
       ts.push_back(t[v]);
     }
-    ok = ok && tm.number_of_faces() > 0 && flux <= 0.01 && drift <= 1e-5 &&
+    ok = ok && tm.number_of_faces() > 0 &&
          write_surface_VTP(out + "/stream_surface_" + std::to_string(c) + ".vtp", tm, flow,
                            {{"u", 1, us}, {"t", 1, ts}});
   }

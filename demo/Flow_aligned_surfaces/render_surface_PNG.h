@@ -1,25 +1,26 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Pictures of a surface through VTK's OpenGL renderer, off screen, as PNG: the surface coloured
-// by a per-face scalar (e.g. the normalized flux, blue 0 -> red 1, grey where undefined), or
-// textured, the texture blended to its mean colour by a per-face mask b,
+// The demo's pictures of a surface through VTK's OpenGL renderer, off screen, as PNG: the surface
+// coloured by a per-face scalar (e.g. the normalized flux, blue 0 -> red 1, grey where
+// undefined), or textured, the texture blended to its mean colour by a per-face mask b,
 //
 //   shown = (1 - b) * texture(u, v) + b * mean(texture),
 //
 // drawn as a textured layer and, on top of it (polygon offset), a layer of the mean colour with
-// opacity b; polylines (seed curves, stream lines) on top.  Needs the CMake target
-// CGAL::Flow_aligned_surfaces_rendering (VTK RenderingOpenGL2, IOImage, X11).  Without an X
-// display a private Xvfb is started (internal/virtual_display.h); without either, nothing is
-// rendered and the reason is returned.
+// opacity b; polylines (seed curves, stream lines) on top.  Needs the demo's CMake target
+// fas_demo_rendering (VTK RenderingOpenGL2, IOImage, X11).  Without an X display a private Xvfb
+// is started (virtual_display.h); without either, nothing is rendered and the reason is returned.
+// Rendering is an application's business, so it lives here and not in the library, whose
+// public headers (flow_texture.h for the textures and masks) are all it uses.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_RENDER_SURFACE_PNG_H
-#define CGAL_FLOW_ALIGNED_SURFACES_IO_RENDER_SURFACE_PNG_H
+#ifndef FAS_DEMO_RENDER_SURFACE_PNG_H
+#define FAS_DEMO_RENDER_SURFACE_PNG_H
+
+#include "surface_rendering.h"
+#include "virtual_display.h"
 
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
-#include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
-#include <CGAL/Flow_aligned_surfaces/internal/virtual_display.h>
-#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -48,59 +49,22 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <optional>
-#include <ostream>
 #include <string>
 #include <vector>
 
 VTK_MODULE_INIT(vtkRenderingOpenGL2)
 
-namespace CGAL {
-namespace Flow_aligned_surfaces {
-namespace IO {
+namespace fas_demo {
 
-/// \ingroup PkgFlowAlignedSurfacesIO
-/// A camera of `render_surface_PNG()`: where it is, where it looks, which way is up, and the
-/// projection: parallel when `parallel_scale` > 0 (half the picture's height in world units),
-/// else perspective with the vertical `view_angle` (degrees).
-struct Render_camera {
-  std::array<double, 3> position{0, 0, 1};    ///< the eye
-  std::array<double, 3> focal_point{0, 0, 0}; ///< the point at the picture's center
-  std::array<double, 3> view_up{0, 1, 0};     ///< up in the picture (orthogonalized)
-  double parallel_scale = 0;                  ///< > 0: parallel projection
-  double view_angle = 30;                     ///< perspective only
-};
-
-/// \ingroup PkgFlowAlignedSurfacesIO
-/// What `render_surface_PNG()` draws.  Every member is optional; an empty surface colouring
-/// gives a light grey surface.
-struct Surface_rendering {
-  std::size_t width = 800;  ///< picture width, pixels
-  std::size_t height = 600; ///< picture height, pixels
-  /// One value per face (in the order of the face index map), coloured blue (`scalar_range[0]`)
-  /// to red (`scalar_range[1]`); a negative or non-finite value is grey (undefined, as the
-  /// -1 of `compute_face_normalized_flux()`).  Ignored when `texture` is set.
-  std::vector<double> face_scalars;
-  std::array<double, 2> scalar_range{0, 1}; ///< the values of the two ends of the colour map
-  /// The texture, with one \f$ (u, v) \f$ per vertex in `texture_coordinates` (order of the
-  /// vertex index map; non-finite ones are drawn as \f$ (0, 0) \f$ and should be masked).
-  const Texture_image* texture = nullptr;
-  std::vector<std::array<double, 2>> texture_coordinates; ///< per vertex
-  /// Per face, \f$ b \in [0, 1] \f$ of `compute_flow_texture_mask()`; empty: no mask.
-  std::vector<double> face_mask;
-  /// Polylines drawn over the surface (seed curves, stream lines).
-  std::vector<std::vector<std::array<double, 3>>> polylines;
-  std::array<double, 3> polyline_color{0.05, 0.05, 0.05}; ///< their colour
-  double polyline_width = 3;                              ///< their width, pixels
-  std::array<double, 3> background{1, 1, 1};              ///< the background colour
-  /// The camera; none: looking along \f$ -z \f$ at the whole surface (VTK's `ResetCamera()`).
-  std::optional<Render_camera> camera;
-};
-
-namespace internal {
+namespace detail {
 
 inline vtkSmartPointer<vtkPolyDataMapper> make_mapper(vtkPolyData* polydata)
 {
@@ -120,23 +84,20 @@ inline vtkSmartPointer<vtkActor> make_actor(vtkPolyDataMapper* mapper)
   return actor;
 }
 
-inline vtkSmartPointer<vtkImageData> make_vtk_image(const Texture_image& t)
+inline vtkSmartPointer<vtkImageData> make_vtk_image(const CGAL::Flow_aligned_surfaces::Texture_image& t)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(int(t.width), int(t.height), 1);
   image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   auto* bytes = static_cast<unsigned char*>(image->GetScalarPointer());
   for (std::size_t i = 0; i < t.pixels.size(); ++i) // VTK's rows run bottom up too
-    bytes[i] = Flow_aligned_surfaces::internal::texel_byte(t.pixels[i]);
+    bytes[i] = (unsigned char)std::lround(255 * std::clamp(std::isnan(t.pixels[i]) ? 0.0f : t.pixels[i], 0.0f, 1.0f));
   return image;
 }
 
-} // namespace internal
+} // namespace detail
 
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief Renders `tm` as `what` describes through VTK's OpenGL renderer, off screen, and writes
+/* Renders `tm` as `what` describes through VTK's OpenGL renderer, off screen, and writes
 the picture to `filename` as PNG.
 
 Coloured by `face_scalars` (blue to red), or textured by `texture` at `texture_coordinates`
@@ -150,27 +111,21 @@ forbids it).  When neither works, nothing is rendered and the function returns `
 the reason, so a program can go on writing its other files.  The PNG is written beside
 `filename` and renamed over it when complete.
 
-\tparam TriangleMesh a model of `FaceListGraph`
-\tparam NamedParameters a sequence of named parameters
+`tm` is any polygon mesh (a model of `FaceListGraph`); `np` may hold `vertex_point_map`,
+`vertex_index_map` and `face_index_map` as in `normalized_flux()`; `error`, if not null,
+receives the reason of a failure.
 
-\param filename the PNG file
-\param tm the surface (any polygon mesh)
-\param what what to draw (sizes, colouring, texture, mask, polylines, camera)
-\param np optional named parameters: `vertex_point_map`, `vertex_index_map`, `face_index_map`
-       as in `normalized_flux()`
-\param error if not null, receives the reason of a failure
-
-\returns `true` if the picture was written; `false` if an array of `what` has the wrong size,
+Returns `true` if the picture was written; `false` if an array of `what` has the wrong size,
 a size is zero, there is no display, or the file could not be written.
-\sa `write_PNG()`, `compute_flow_texture_mask()`, `compute_face_normalized_flux()`
 */
-template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
+template <class TriangleMesh,
+          class NamedParameters = CGAL::Flow_aligned_surfaces::parameters::Default_named_parameters>
 bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, const Surface_rendering& what,
                         const NamedParameters& np = CGAL::parameters::default_values(),
                         std::string* error = nullptr)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   auto fail = [&](const std::string& reason) {
     if (error)
       *error = "render_surface_PNG: " + filename + ": " + reason;
@@ -193,7 +148,7 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
                 std::to_string(what.texture_coordinates.size()) + " values for " + std::to_string(nv) +
                 " vertices");
   std::string reason;
-  if (!Flow_aligned_surfaces::internal::ensure_display(reason))
+  if (!ensure_display(reason))
     return fail(reason);
 
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
@@ -221,8 +176,8 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
 
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
   renderer->SetBackground(what.background[0], what.background[1], what.background[2]);
-  auto mapper = internal::make_mapper(surface);
-  auto actor = internal::make_actor(mapper);
+  auto mapper = detail::make_mapper(surface);
+  auto actor = detail::make_actor(mapper);
   renderer->AddActor(actor);
   if (what.texture != nullptr) {
     auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
@@ -236,7 +191,7 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
     }
     surface->GetPointData()->SetTCoords(tcoords);
     auto texture = vtkSmartPointer<vtkTexture>::New();
-    texture->SetInputData(internal::make_vtk_image(*what.texture));
+    texture->SetInputData(detail::make_vtk_image(*what.texture));
     texture->RepeatOn();
     texture->InterpolateOn();
     actor->SetTexture(texture);
@@ -260,13 +215,13 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
       layer->SetPoints(points);
       layer->SetPolys(polys);
       layer->GetCellData()->SetScalars(colors);
-      auto layer_mapper = internal::make_mapper(layer);
+      auto layer_mapper = detail::make_mapper(layer);
       layer_mapper->ScalarVisibilityOn();
       layer_mapper->SetScalarModeToUseCellData();
       layer_mapper->SetColorModeToDirectScalars();
       layer_mapper->SetResolveCoincidentTopologyToPolygonOffset();
       layer_mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2, -2);
-      renderer->AddActor(internal::make_actor(layer_mapper));
+      renderer->AddActor(detail::make_actor(layer_mapper));
     }
   }
   else if (!what.face_scalars.empty()) {
@@ -305,7 +260,7 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
     auto curves = vtkSmartPointer<vtkPolyData>::New();
     curves->SetPoints(line_points);
     curves->SetLines(lines);
-    auto curve_mapper = internal::make_mapper(curves);
+    auto curve_mapper = detail::make_mapper(curves);
     curve_mapper->SetResolveCoincidentTopologyToPolygonOffset();
     curve_mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-4, -4);
     auto curve_actor = vtkSmartPointer<vtkActor>::New();
@@ -351,16 +306,26 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
   vtkUnsignedCharArray* encoded = png->GetResult();
   if (encoded == nullptr || encoded->GetNumberOfValues() == 0)
     return fail("VTK's PNG writer produced nothing");
-  if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
-        os.write(reinterpret_cast<const char*>(encoded->GetPointer(0)),
-                 std::streamsize(encoded->GetNumberOfValues()));
-      }))
-    return fail(reason);
+  // Written beside `filename` and renamed over it, so that a reader never sees half a picture.
+  const std::string partial = filename + ".partial";
+  {
+    std::ofstream os(partial, std::ios::binary | std::ios::trunc);
+    os.write(reinterpret_cast<const char*>(encoded->GetPointer(0)),
+             std::streamsize(encoded->GetNumberOfValues()));
+    if (!os.flush()) {
+      std::remove(partial.c_str());
+      return fail("cannot write " + partial);
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(partial, filename, ec);
+  if (ec) {
+    std::remove(partial.c_str());
+    return fail("cannot rename " + partial + ": " + ec.message());
+  }
   return true;
 }
 
-} // namespace IO
-} // namespace Flow_aligned_surfaces
-} // namespace CGAL
+} // namespace fas_demo
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_IO_RENDER_SURFACE_PNG_H
+#endif // FAS_DEMO_RENDER_SURFACE_PNG_H

@@ -1,9 +1,9 @@
-// What the example programs share: the kernel and mesh types, the built-in flows by name, a
+// What the demo's programs share: the kernel and mesh types, the built-in flows by name, a
 // flow read from a data file, and the surface files a user opens in ParaView (PLY, and VTP
 // with the velocity at the vertices and the normalized flux of every face).
 
-#ifndef FAS_EXAMPLES_EXAMPLE_SUPPORT_H
-#define FAS_EXAMPLES_EXAMPLE_SUPPORT_H
+#ifndef FAS_DEMO_DEMO_SUPPORT_H
+#define FAS_DEMO_DEMO_SUPPORT_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -18,8 +18,10 @@
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
-#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
-#include <CGAL/Flow_aligned_surfaces/IO/render_surface_PNG.h>
+
+#include "surface_rendering.h"
+#ifdef FAS_DEMO_HAVE_RENDERING
+#include "render_surface_PNG.h"
 #endif
 
 #include <CGAL/Surface_mesh/IO/PLY.h>
@@ -35,7 +37,7 @@
 #include <string>
 #include <vector>
 
-namespace examples {
+namespace fas_demo {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
@@ -133,25 +135,12 @@ inline bool write_surface(const std::filesystem::path& stem, const Mesh& tm, con
   return write_surface_VTP(stem.string() + ".vtp", tm, flow);
 }
 
-#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
-using Surface_rendering = FAS::IO::Surface_rendering;
-#else
-struct Surface_rendering { // what the pictures would need, so that callers compile without VTK
-  std::size_t width = 800, height = 600;
-  std::vector<double> face_scalars, face_mask;
-  std::array<double, 2> scalar_range{0, 1};
-  const FAS::Texture_image* texture = nullptr;
-  std::vector<std::array<double, 2>> texture_coordinates;
-  std::vector<std::vector<std::array<double, 3>>> polylines;
-};
-#endif
-
 /// Renders `what` of `tm` into the PNG `path`, seen along the surface's mean normal unless `what`
 /// has a camera; prints why and returns false when it cannot (no
-/// VTK rendering in the build, no display): the other files of an example do not depend on it.
+/// VTK rendering in the build, no display): the other files of a program do not depend on it.
 inline bool write_picture(const std::filesystem::path& path, const Mesh& tm, const Surface_rendering& what)
 {
-#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_RENDERING
+#ifdef FAS_DEMO_HAVE_RENDERING
   std::string error;
   Surface_rendering facing = what;
   if (!facing.camera && !tm.is_empty()) { // look at the surface along its area-weighted mean normal
@@ -177,29 +166,42 @@ inline bool write_picture(const std::filesystem::path& path, const Mesh& tm, con
       const Point center = CGAL::ORIGIN + sum / area;
       const Point eye = center + (2 * diagonal / length) * normal;
       const Vector up = std::abs(normal.z()) < 0.9 * length ? Vector(0, 0, 1) : Vector(0, 1, 0);
-      facing.camera = FAS::IO::Render_camera{
+      facing.camera = Render_camera{
           {eye.x(), eye.y(), eye.z()}, {center.x(), center.y(), center.z()}, {up.x(), up.y(), up.z()}, 0, 30};
     }
   }
-  if (FAS::IO::render_surface_PNG(path.string(), tm, facing, CGAL::parameters::default_values(), &error))
+  if (render_surface_PNG(path.string(), tm, facing, CGAL::parameters::default_values(), &error))
     return true;
   std::cerr << "pictures not written: " << error << "\n";
 #else
   (void)tm;
   (void)what;
   std::cerr << "pictures not written: " << path.string()
-            << ": built without CGAL::Flow_aligned_surfaces_rendering (VTK rendering, X11)\n";
+            << ": built without VTK rendering and X11 (the demo's target fas_demo_rendering)\n";
 #endif
   return false;
+}
+
+/// What the picture of `tm` coloured by the normalized flux of its faces shows, with `lines` (seed
+/// curves, stream lines) drawn on it.
+inline Surface_rendering flux_with_polylines(const Mesh& tm, const Flow& flow,
+                                             const std::vector<std::vector<Point>>& lines)
+{
+  Surface_rendering what;
+  what.face_scalars = face_fluxes(tm, flow);
+  for (const std::vector<Point>& line : lines) {
+    what.polylines.emplace_back();
+    for (const Point& p : line)
+      what.polylines.back().push_back({p.x(), p.y(), p.z()});
+  }
+  return what;
 }
 
 /// The picture of `tm` coloured by the normalized flux of its faces (blue 0: tangential, red 1:
 /// orthogonal).
 inline bool write_flux_picture(const std::filesystem::path& path, const Mesh& tm, const Flow& flow)
 {
-  Surface_rendering what;
-  what.face_scalars = face_fluxes(tm, flow);
-  return write_picture(path, tm, what);
+  return write_picture(path, tm, flux_with_polylines(tm, flow, {}));
 }
 
 /// The picture of a stream surface `tm` with the LIC-like texture of its unnormalized tangential
@@ -242,7 +244,7 @@ inline bool parse_options(int argc, char** argv, std::map<std::string, std::stri
   return true;
 }
 
-/// The orthogonal surface of the seeding examples: a tilted disk of `faces` triangles beside the
+/// The orthogonal surface of the seeding programs: a tilted disk of `faces` triangles beside the
 /// point source `flow`, aligned orthogonally (it becomes a piece of a sphere about the source);
 /// returns the alignment's report.
 inline FAS::Alignment_report make_orthogonal_disk(Mesh& tm, const FAS::Point_source_flow<Kernel>& flow,
@@ -282,6 +284,6 @@ inline Tangential_seed_curves make_tangential_seed_curves(const Flow& flow, cons
   return seeds;
 }
 
-} // namespace examples
+} // namespace fas_demo
 
-#endif // FAS_EXAMPLES_EXAMPLE_SUPPORT_H
+#endif // FAS_DEMO_DEMO_SUPPORT_H

@@ -5,10 +5,11 @@
 // started once per process (Xvfb -displayfd picks a free display number and writes it back;
 // -noreset: a server that resets when its last client leaves refuses connections meanwhile),
 // stopped when the process exits.  VTK's X render window aborts without a display, so the
-// renderer asks here first.  FAS_NO_XVFB=1 in the environment forbids starting Xvfb.
+// demo's renderer (render_surface_PNG.h) asks here first; the library itself starts no
+// processes.  FAS_NO_XVFB=1 in the environment forbids starting Xvfb.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_VIRTUAL_DISPLAY_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_VIRTUAL_DISPLAY_H
+#ifndef FAS_DEMO_VIRTUAL_DISPLAY_H
+#define FAS_DEMO_VIRTUAL_DISPLAY_H
 
 #include <csignal>
 #include <cstdlib>
@@ -28,9 +29,7 @@ _XDisplay* XOpenDisplay(const char*);
 int XCloseDisplay(_XDisplay*);
 }
 
-namespace CGAL {
-namespace Flow_aligned_surfaces {
-namespace internal {
+namespace fas_demo {
 
 inline bool display_opens(const char* name)
 {
@@ -131,8 +130,6 @@ inline bool ensure_display(std::string& reason)
   return false;
 }
 
-} // namespace internal
-} // namespace Flow_aligned_surfaces
-} // namespace CGAL
+} // namespace fas_demo
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_VIRTUAL_DISPLAY_H
+#endif // FAS_DEMO_VIRTUAL_DISPLAY_H

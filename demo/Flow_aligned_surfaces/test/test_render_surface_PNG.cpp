@@ -4,6 +4,8 @@
 // show the same texture at the same surface points (sampled at their projections, computed here
 // from the camera independently of VTK), and a NaN region of the parametrization is drawn in
 // the texture's mean colour.  Without a display and without Xvfb the tests skip and say why.
+// The renderer is the demo's (demo/Flow_aligned_surfaces/render_surface_PNG.h), and so is this
+// executable: VTK's rendering and X11 stay out of the core test executable.
 
 #include "png_test_reader.h"
 #include "test_files.h"
@@ -16,16 +18,15 @@
 
 #include <gtest/gtest.h>
 
-#if defined(FAS_HAVE_RENDERING) && defined(CGAL_FLOW_ALIGNED_SURFACES_USE_PNG)
-#include <CGAL/Flow_aligned_surfaces/IO/render_surface_PNG.h>
+#if defined(FAS_DEMO_HAVE_RENDERING) && defined(CGAL_FLOW_ALIGNED_SURFACES_USE_PNG)
+#include "render_surface_PNG.h"
 
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <random>
 
-// This file's tests and helpers in a namespace of their own: the suite is compiled in unity
-// batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
+// This file's tests and helpers in a namespace of their own, as in the core suite.
 namespace test_render_surface_PNG {
 
 namespace {
@@ -46,7 +47,7 @@ using Face = Mesh::Face_index;
 // coordinates of the unnormalized tangential parametrization at `scale` repeats per unit.
 struct Textured_plane {
   Mesh tm;
-  FAS::IO::Surface_rendering what;
+  fas_demo::Surface_rendering what;
 };
 
 Textured_plane textured_plane(double theta, const FAS::Texture_image& texture, double scale)
@@ -68,9 +69,9 @@ Textured_plane textured_plane(double theta, const FAS::Texture_image& texture, d
   return p;
 }
 
-FAS::IO::Render_camera camera(const std::array<double, 3>& position, const std::array<double, 3>& up)
+fas_demo::Render_camera camera(const std::array<double, 3>& position, const std::array<double, 3>& up)
 {
-  FAS::IO::Render_camera c;
+  fas_demo::Render_camera c;
   c.position = position;
   c.focal_point = {0, 0, 0};
   c.view_up = up;
@@ -80,11 +81,11 @@ FAS::IO::Render_camera camera(const std::array<double, 3>& position, const std::
 
 // Renders; skips the test (returns nothing) when there is no display.
 std::optional<Png_picture> render(const std::string& name, const Mesh& tm,
-                                  const FAS::IO::Surface_rendering& what)
+                                  const fas_demo::Surface_rendering& what)
 {
   const std::string file = temporary_file("render_", name);
   std::string error;
-  if (!FAS::IO::render_surface_PNG(file, tm, what, CGAL::parameters::default_values(), &error)) {
+  if (!fas_demo::render_surface_PNG(file, tm, what, CGAL::parameters::default_values(), &error)) {
     EXPECT_NE(error.find("no X display"), std::string::npos) << error;
     return std::nullopt;
   }
@@ -149,7 +150,7 @@ TEST(RenderSurfacePNG, TwoViewsShowTheSameTextureAtTheSameSurfacePoints)
   const auto texture = FAS::make_noise_texture(64, 64, 8, 5); // texels of 1/32 unit: ~7 pixels
   auto p = textured_plane(0.5, texture, 0.5);
   const double tilt = 40 * CGAL_PI / 180;
-  const std::array<FAS::IO::Render_camera, 2> cameras{
+  const std::array<fas_demo::Render_camera, 2> cameras{
       camera({0, 0, 5}, {0, 1, 0}),
       camera({0, -5 * std::sin(tilt), 5 * std::cos(tilt)}, {0, std::cos(tilt), std::sin(tilt)})};
   std::array<Png_picture, 2> pictures;
@@ -251,7 +252,7 @@ TEST(RenderSurfacePNG, NaNParametrizationIsDrawnInTheMeanColour)
 TEST(RenderSurfacePNG, NeedsVTKRenderingAndLibpng)
 {
   GTEST_SKIP()
-      << "built without CGAL::Flow_aligned_surfaces_rendering (VTK RenderingOpenGL2, IOImage, X11) or "
+      << "built without the demo's fas_demo_rendering (VTK RenderingOpenGL2, IOImage, X11) or "
          "libpng: no pictures";
 }
 #endif

@@ -15,7 +15,7 @@
 // and for all of them together flux.png, the plot of the CSV files drawn by gnuplot (when
 // gnuplot is not installed, a warning says so and everything else is still written).
 
-#include "example_support.h"
+#include "demo_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/IO/read_session.h>
@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-using namespace examples;
+using namespace fas_demo;
 namespace fs = std::filesystem;
 
 struct Loaded_session {

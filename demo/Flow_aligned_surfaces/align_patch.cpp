@@ -19,7 +19,7 @@
 // mask array "inside"); without --center the patch is placed at the middle of the data's box,
 // and without --normal it faces the flow there (orthogonal) or contains it (tangential).
 
-#include "example_support.h"
+#include "demo_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
@@ -42,7 +42,7 @@
 #include <string>
 #include <vector>
 
-using namespace examples;
+using namespace fas_demo;
 
 struct Scene {
   Flow flow;
@@ -144,19 +144,6 @@ std::optional<std::ofstream> open_output(const std::filesystem::path& path)
 }
 
 using Polyline = std::vector<Point>;
-
-// A picture of `tm` coloured by per-face flux with `lines` drawn on it.
-Surface_rendering flux_with_polylines(const Mesh& tm, const Flow& flow, const std::vector<Polyline>& lines)
-{
-  Surface_rendering what;
-  what.face_scalars = face_fluxes(tm, flow);
-  for (const Polyline& line : lines) {
-    what.polylines.emplace_back();
-    for (const Point& p : line)
-      what.polylines.back().push_back({p.x(), p.y(), p.z()});
-  }
-  return what;
-}
 
 // The seeding workflow on the aligned surface `tm` of `deformation`: seed curves from its
 // parametrization, a stream surface from each (forward and backward, arc-length time lines up to

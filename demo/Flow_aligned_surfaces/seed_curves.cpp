@@ -8,91 +8,59 @@
 //
 // writes DIR/surface.vtp (r, s and the distance per vertex), DIR/seed_curves.csv and
 // DIR/circular_seeds.csv (curve,x,y,z per point), DIR/seed_points.csv (one row per seed, its
-// index in the "curve" column), DIR/stream_surface_seed_curves.csv.  Exits with 1 if the seed
-// curves are not orthogonal to the flow.
+// index in the "curve" column), DIR/stream_surface_seed_curves.csv.  (The tests
+// SeedCurvesWorkflow.* of test/Flow_aligned_surfaces/test_workflows.cpp check that such seed
+// curves are orthogonal to the flow, and that the crossing ones cross it.)
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-
-#include "example_support.h"
+#include "demo_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
 #include <CGAL/Flow_aligned_surfaces/align_to_flow.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
-#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
 #include <CGAL/Flow_aligned_surfaces/seeds.h>
 
-#include "example_support.h"
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <iterator>
 #include <string>
 #include <vector>
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Vector = Kernel::Vector_3;
-using Mesh = CGAL::Surface_mesh<Point>;
+using namespace fas_demo;
 using Polyline = std::vector<Point>;
-namespace FAS = CGAL::Flow_aligned_surfaces;
 
 // Writes "curve,x,y,z" rows; false with the reason in `error` when the file cannot be written.
 bool write_polylines_csv(const std::string& filename, const std::vector<Polyline>& curves, std::string& error)
 {
-  return FAS::IO::internal::write_file_atomically(filename, error, [&](std::ostream& os) {
-    os.precision(17);
-    os << "curve,x,y,z\n";
-    for (std::size_t c = 0; c < curves.size(); ++c)
-      for (const Point& p : curves[c])
-        os << c << "," << p.x() << "," << p.y() << "," << p.z() << "\n";
-  });
-}
-
-// The mean over the segments of `curves` of |cos| between the segment and the flow at its midpoint.
-template <class Flow>
-double mean_cosine_to_flow(const Flow& flow, const std::vector<const std::vector<Polyline>*>& curves)
-{
-  double cosine = 0;
-  std::size_t segments = 0;
-  for (const std::vector<Polyline>* set : curves)
-    for (const Polyline& curve : *set)
-      for (std::size_t i = 1; i < curve.size(); ++i) {
-        const Vector d = curve[i] - curve[i - 1];
-        const Vector v = *flow(CGAL::midpoint(curve[i - 1], curve[i]));
-        if (d.squared_length() > 0) {
-          cosine += std::abs(d * v) / std::sqrt(d.squared_length() * v.squared_length());
-          ++segments;
-        }
-      }
-  return segments > 0 ? cosine / double(segments) : 1.0;
+  std::ofstream os(filename);
+  os.precision(17);
+  os << "curve,x,y,z\n";
+  for (std::size_t c = 0; c < curves.size(); ++c)
+    for (const Point& p : curves[c])
+      os << c << "," << p.x() << "," << p.y() << "," << p.z() << "\n";
+  if (!os.flush())
+    error = "cannot write " + filename;
+  return bool(os);
 }
 
 int main(int argc, char** argv)
 {
-  std::size_t faces = 3000;
-  std::string out = "seed_curves_output";
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--faces" && i + 1 < argc)
-      faces = std::strtoul(argv[++i], nullptr, 10);
-    else if (arg == "--output" && i + 1 < argc)
-      out = argv[++i];
-    else {
-      std::cerr << "usage: seed_curves [--faces N] [--output DIR]\n";
-      return 2;
-    }
-  }
+  std::map<std::string, std::string> options{{"faces", "3000"}, {"output", "seed_curves_output"}};
+  if (!parse_options(argc, argv, options, "seed_curves [--faces N] [--output DIR]"))
+    return 2;
+  const std::size_t faces = std::strtoul(options["faces"].c_str(), nullptr, 10);
+  const std::string out = options["output"];
 
   // 1. An orthogonal surface: a tilted disk beside the source becomes a piece of a sphere.
   const FAS::Point_source_flow<Kernel> flow;
   Mesh tm;
-  const FAS::Alignment_report report = examples::make_orthogonal_disk(tm, flow, faces);
+  make_orthogonal_disk(tm, flow, faces);
 
   // 2. The orthogonal parametrization (alpha turns the contours) and the circular one.
   auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
@@ -115,20 +83,14 @@ int main(int argc, char** argv)
   std::cout << seed_curves.size() << " seed curves, " << circular_seeds.size() << " circular seeds, "
             << seed_points.size() << " seed points\n";
 
-  // Every seed curve is orthogonal to the flow: the mean |cos| between segments and flow.
-  const double cosine = mean_cosine_to_flow(flow, {&seed_curves, &circular_seeds});
-  std::cout << "mean |cos(segment, flow)| " << cosine << "\n";
-
   // 4. A tangential surface (a stream surface of the Burgers vortex): the iso-contours of its
   // tangential parametrization's r cross the flow within the surface.
   const FAS::Burgers_vortex<Kernel> vortex;
-  const examples::Tangential_seed_curves tangential = examples::make_tangential_seed_curves(
+  const Tangential_seed_curves tangential = make_tangential_seed_curves(
       vortex, Point(1.0, 0.0, 0.5), Vector(0.0, 1.0, 0.3), 0.5, faces, 5);
   const std::vector<Polyline>& crossing_curves = tangential.curves;
-  const double crossing_cosine = mean_cosine_to_flow(vortex, {&crossing_curves});
   std::cout << "stream surface: flux " << tangential.alignment.normalized_flux << ", "
-            << crossing_curves.size() << " seed curves, mean |cos(segment, flow)| " << crossing_cosine
-            << "\n";
+            << crossing_curves.size() << " seed curves\n";
 
   std::error_code ec;
   std::filesystem::create_directories(out, ec);
@@ -153,9 +115,5 @@ int main(int argc, char** argv)
   std::cout << "wrote " << out
             << "/surface.vtp, seed_curves.csv, circular_seeds.csv, seed_points.csv, "
                "stream_surface_seed_curves.csv\n";
-  return report.normalized_flux >= 0.99 && !seed_curves.empty() && circular_seeds.size() == 4 &&
-                 cosine < 0.05 && tangential.alignment.normalized_flux <= 0.01 && !crossing_curves.empty() &&
-                 crossing_cosine < 0.1
-             ? 0
-             : 1;
+  return 0;
 }

@@ -7,16 +7,16 @@
 //
 // writes DIR/surface.vtp (the orthogonal surface, velocity and flux) and DIR/streamlines.vtp (one polyline per
 // seed; per point the speed, per line its length and why each direction stopped, as the
-// numbers of FAS::Streamline_termination).  The stream lines of a point source are rays from
-// it: exits with 1 if a point is farther than 1e-6 from its seed's ray.
+// numbers of FAS::Streamline_termination).  (The stream lines of a point source are rays from it:
+// the test SeedPointsOnAnOrthogonalSurfaceSeedRays of test/Flow_aligned_surfaces/test_workflows.cpp
+// checks that no point is farther than 1e-6 from its seed's ray.)
 
-#include "example_support.h"
+#include "demo_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
 #include <CGAL/Flow_aligned_surfaces/integrate_streamline.h>
 #include <CGAL/Flow_aligned_surfaces/seeds.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -26,37 +26,23 @@
 #include <string>
 #include <vector>
 
-using examples::Kernel;
-using examples::Mesh;
-using examples::Point;
-using examples::Vector;
-namespace FAS = CGAL::Flow_aligned_surfaces;
+using namespace fas_demo;
 
 int main(int argc, char** argv)
 {
-  std::size_t faces = 2000;
-  double spacing = 0.15, length = 1.5;
-  std::string out = "streamlines_output";
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--faces" && i + 1 < argc)
-      faces = std::strtoul(argv[++i], nullptr, 10);
-    else if (arg == "--spacing" && i + 1 < argc)
-      spacing = std::atof(argv[++i]);
-    else if (arg == "--length" && i + 1 < argc)
-      length = std::atof(argv[++i]);
-    else if (arg == "--output" && i + 1 < argc)
-      out = argv[++i];
-    else {
-      std::cerr << "usage: streamlines [--faces N] [--spacing H] [--length L] [--output DIR]\n";
-      return 2;
-    }
-  }
+  std::map<std::string, std::string> options{
+      {"faces", "2000"}, {"spacing", "0.15"}, {"length", "1.5"}, {"output", "streamlines_output"}};
+  if (!parse_options(argc, argv, options, "streamlines [--faces N] [--spacing H] [--length L] [--output DIR]"))
+    return 2;
+  const std::size_t faces = std::strtoul(options["faces"].c_str(), nullptr, 10);
+  const double spacing = std::strtod(options["spacing"].c_str(), nullptr);
+  const double length = std::strtod(options["length"].c_str(), nullptr);
+  const std::string out = options["output"];
 
   // 1. An orthogonal surface: a tilted disk beside the source becomes a piece of a sphere.
   const FAS::Point_source_flow<Kernel> flow;
   Mesh tm;
-  examples::make_orthogonal_disk(tm, flow, faces);
+  make_orthogonal_disk(tm, flow, faces);
 
   // 2. Seed points spread over it.
   std::vector<Point> seeds;
@@ -67,7 +53,6 @@ int main(int argc, char** argv)
   FAS::IO::Data_array speed{"speed", 1, {}}, line_length{"length", 1, {}}, backward{"backward_reason", 1, {}},
       forward{"forward_reason", 1, {}};
   std::map<std::string, int> reasons;
-  double worst_off_ray = 0;
   for (const Point& seed : seeds) {
     std::vector<Point> line;
     const FAS::Streamline_report report =
@@ -76,12 +61,8 @@ int main(int argc, char** argv)
                                                                           FAS::Integration_direction::BOTH)));
     ++reasons[std::string(FAS::to_string(report.backward.termination)) + " / " +
               FAS::to_string(report.forward.termination)];
-    const Vector ray = (seed - CGAL::ORIGIN) / std::sqrt((seed - CGAL::ORIGIN).squared_length());
-    for (const Point& p : line) {
-      const Vector x = p - CGAL::ORIGIN;
-      worst_off_ray = std::max(worst_off_ray, std::sqrt(CGAL::cross_product(x, ray).squared_length()));
+    for (const Point& p : line)
       speed.values.push_back(std::sqrt(flow(p)->squared_length()));
-    }
     line_length.values.push_back(report.length());
     backward.values.push_back(double(report.backward.termination));
     forward.values.push_back(double(report.forward.termination));
@@ -90,12 +71,12 @@ int main(int argc, char** argv)
   std::cout << lines.size() << " stream lines; backward / forward reasons:";
   for (const auto& [name, count] : reasons)
     std::cout << " " << name << " (" << count << ")";
-  std::cout << "\nlargest distance of a point to its seed's ray " << worst_off_ray << "\n";
+  std::cout << "\n";
 
   std::error_code ec;
   std::filesystem::create_directories(out, ec);
   std::string error;
-  if (!examples::write_surface_VTP(out + "/surface.vtp", tm, flow))
+  if (!write_surface_VTP(out + "/surface.vtp", tm, flow))
     return 1;
   if (!FAS::IO::write_VTP_polylines(out + "/streamlines.vtp", lines, {speed},
                                     {line_length, backward, forward}, &error)) {
@@ -103,5 +84,5 @@ int main(int argc, char** argv)
     return 1;
   }
   std::cout << "wrote " << out << "/surface.vtp and " << out << "/streamlines.vtp\n";
-  return worst_off_ray <= 1e-6 ? 0 : 1;
+  return 0;
 }
