@@ -8,6 +8,7 @@
 // executable: VTK's rendering and X11 stay out of the core test executable.
 
 #include "png_test_reader.h"
+#include "skip_without_tool.h"
 #include "test_files.h"
 #include "test_kernel.h"
 
@@ -36,12 +37,6 @@ using Mesh = CGAL::Surface_mesh<Point_3>;
 using Vertex = Mesh::Vertex_index;
 using Face = Mesh::Face_index;
 
-#if defined(__SANITIZE_ADDRESS__)
-#define FAS_SKIP_UNDER_ASAN()                                                                                \
-  GTEST_SKIP() << "not rendered under AddressSanitizer (Mesa's OpenGL driver leaks by design)"
-#else
-#define FAS_SKIP_UNDER_ASAN()
-#endif
 
 // A 2 x 2 square in z = 0 in the uniform flow (cos theta, sin theta, 0), with the texture
 // coordinates of the unnormalized tangential parametrization at `scale` repeats per unit.
@@ -129,14 +124,13 @@ double orientation_difference(double a, double b)
 
 TEST(RenderSurfacePNG, TextureStructureFollowsTheProjectedFlow)
 {
-  FAS_SKIP_UNDER_ASAN();
   const auto texture = FAS::make_noise_texture(256, 256, 32, 11);
   for (double degrees : {30.0, -65.0}) {
     auto p = textured_plane(degrees * CGAL_PI / 180, texture, 0.25); // a texel: 3.3 pixels
     p.what.camera = camera({0, 0, 5}, {0, 1, 0}); // looking down: the picture's x, y are the plane's
     const auto picture = render("flow_" + std::to_string(int(degrees)) + ".png", p.tm, p.what);
     if (!picture)
-      GTEST_SKIP() << "no display and no Xvfb";
+      FAS_SKIP_WITHOUT_TOOL("no display and no Xvfb");
     const auto [orientation, coherence] = structure_orientation(*picture);
     EXPECT_LT(orientation_difference(orientation, degrees), 5)
         << "flow at " << degrees << " degrees, structure at " << orientation;
@@ -146,7 +140,6 @@ TEST(RenderSurfacePNG, TextureStructureFollowsTheProjectedFlow)
 
 TEST(RenderSurfacePNG, TwoViewsShowTheSameTextureAtTheSameSurfacePoints)
 {
-  FAS_SKIP_UNDER_ASAN();
   const auto texture = FAS::make_noise_texture(64, 64, 8, 5); // texels of 1/32 unit: ~7 pixels
   auto p = textured_plane(0.5, texture, 0.5);
   const double tilt = 40 * CGAL_PI / 180;
@@ -158,7 +151,7 @@ TEST(RenderSurfacePNG, TwoViewsShowTheSameTextureAtTheSameSurfacePoints)
     p.what.camera = cameras[i];
     auto picture = render("view_" + std::to_string(i) + ".png", p.tm, p.what);
     if (!picture)
-      GTEST_SKIP() << "no display and no Xvfb";
+      FAS_SKIP_WITHOUT_TOOL("no display and no Xvfb");
     pictures[i] = std::move(*picture);
   }
   // The luminance at the projection of (x, y, 0) by a parallel camera: right = d x up.
@@ -205,7 +198,6 @@ TEST(RenderSurfacePNG, TwoViewsShowTheSameTextureAtTheSameSurfacePoints)
 
 TEST(RenderSurfacePNG, NaNParametrizationIsDrawnInTheMeanColour)
 {
-  FAS_SKIP_UNDER_ASAN();
   const auto texture = FAS::make_noise_texture(128, 128, 16, 2);
   auto p = textured_plane(0.3, texture, 0.5);
   // r is NaN right of x = 0.2: the mask (from the NaN) hides the garbage coordinates there.
@@ -225,7 +217,7 @@ TEST(RenderSurfacePNG, NaNParametrizationIsDrawnInTheMeanColour)
   p.what.camera = camera({0, 0, 5}, {0, 1, 0});
   const auto picture = render("masked.png", p.tm, p.what);
   if (!picture)
-    GTEST_SKIP() << "no display and no Xvfb";
+    FAS_SKIP_WITHOUT_TOOL("no display and no Xvfb");
   // Pixels of x in [0.35, 0.65] (masked) and of x in [-0.65, -0.35] (textured), y in [-0.5, 0.5].
   auto deviation = [&](double x0, double x1) {
     const double ppu = double(picture->height) / 2 / 0.7;
@@ -251,8 +243,7 @@ TEST(RenderSurfacePNG, NaNParametrizationIsDrawnInTheMeanColour)
 #else
 TEST(RenderSurfacePNG, NeedsVTKRenderingAndLibpng)
 {
-  GTEST_SKIP()
-      << "built without the demo's fas_demo_rendering (VTK RenderingOpenGL2, IOImage, X11) or "
-         "libpng: no pictures";
+  FAS_SKIP_WITHOUT_TOOL("built without the demo's fas_demo_rendering (VTK RenderingOpenGL2, IOImage, X11) or "
+                        "libpng: no pictures");
 }
 #endif
