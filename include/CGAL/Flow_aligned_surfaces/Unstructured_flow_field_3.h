@@ -120,19 +120,31 @@ public:
   class Point_coordinates {
   public:
     /// three times the number of points
-    std::size_t size() const { return f_ != nullptr ? f_->size() : d_->size(); }
+    std::size_t size() const
+    {
+      return m_float_points != nullptr ? m_float_points->size() : m_double_points->size();
+    }
     /// coordinate `i % 3` of point `i / 3`, converted to `double`
-    double operator[](std::size_t i) const { return f_ != nullptr ? double((*f_)[i]) : (*d_)[i]; }
+    double operator[](std::size_t i) const
+    {
+      return m_float_points != nullptr ? double((*m_float_points)[i]) : (*m_double_points)[i];
+    }
     /// the coordinates if they were given as `float`, else null
-    const float* float_data() const { return f_ != nullptr ? f_->data() : nullptr; }
+    const float* float_data() const { return m_float_points != nullptr ? m_float_points->data() : nullptr; }
     /// the coordinates if they were given as `double`, else null
-    const double* double_data() const { return f_ != nullptr ? nullptr : d_->data(); }
+    const double* double_data() const
+    {
+      return m_float_points != nullptr ? nullptr : m_double_points->data();
+    }
 
   private:
     friend class Unstructured_flow_field_3;
-    Point_coordinates(const std::vector<float>* f, const std::vector<double>* d) : f_(f), d_(d) {}
-    const std::vector<float>* f_;
-    const std::vector<double>* d_;
+    Point_coordinates(const std::vector<float>* f, const std::vector<double>* d)
+        : m_float_points(f), m_double_points(d)
+    {
+    }
+    const std::vector<float>* m_float_points;
+    const std::vector<double>* m_double_points;
   };
   /// @}
 
@@ -172,7 +184,7 @@ public:
     validate_and_store(*s, std::move(points), std::move(connectivity), std::move(offsets),
                        std::move(cell_types), std::move(vectors));
     build_hierarchy(*s);
-    storage_ = std::move(s);
+    m_storage = std::move(s);
   }
 
   /// creates the field from 64-bit `connectivity` and `offsets` (VTK's `vtkIdType`), converted
@@ -226,7 +238,7 @@ public:
     CGAL_precondition(cell < number_of_cells());
     const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     Hit hit;
-    if (!try_cell(*storage_, cell, x, hit))
+    if (!try_cell(*m_storage, cell, x, hit))
       return std::nullopt;
     return interpolate(hit);
   }
@@ -237,29 +249,29 @@ public:
   /// @{
 
   /// the number of points
-  std::size_t number_of_points() const { return storage_->vectors.size() / 3; }
+  std::size_t number_of_points() const { return m_storage->vectors.size() / 3; }
   /// the number of cells
-  std::size_t number_of_cells() const { return storage_->cell_types.size(); }
+  std::size_t number_of_cells() const { return m_storage->cell_types.size(); }
   /// the bounding box of the points
   Bbox_3 bbox() const
   {
-    const double* b = storage_->bbox;
+    const double* b = m_storage->bbox;
     return Bbox_3(b[0], b[1], b[2], b[3], b[4], b[5]);
   }
   /// the point coordinates, `x, y, z` per point, in the precision given to the constructor
   Point_coordinates points() const
   {
-    return Point_coordinates(float_points(*storage_), &storage_->double_points);
+    return Point_coordinates(float_points(*m_storage), &m_storage->double_points);
   }
   /// the velocities, `x, y, z` per point
-  const std::vector<float>& vectors() const { return storage_->vectors; }
+  const std::vector<float>& vectors() const { return m_storage->vectors; }
   /// the point indices of all cells, cell after cell
-  const std::vector<Index>& connectivity() const { return storage_->connectivity; }
+  const std::vector<Index>& connectivity() const { return m_storage->connectivity; }
   /// the `number_of_cells() + 1` positions in `connectivity()` where the cells start, the last
   /// one being `connectivity().size()` (whichever form was given to the constructor)
-  const std::vector<Index>& offsets() const { return storage_->offsets; }
+  const std::vector<Index>& offsets() const { return m_storage->offsets; }
   /// the VTK cell types
-  const std::vector<unsigned char>& cell_types() const { return storage_->cell_types; }
+  const std::vector<unsigned char>& cell_types() const { return m_storage->cell_types; }
   /// the cells sharing a face with cell `cell` (conforming faces with exactly the same points),
   /// in the order of the cell's faces; computed on each call (from the hierarchy, as the walk
   /// does, but without its cache).
@@ -267,7 +279,7 @@ public:
   std::vector<std::size_t> face_neighbours(std::size_t cell) const
   {
     CGAL_precondition(cell < number_of_cells());
-    const Storage& s = *storage_;
+    const Storage& s = *m_storage;
     double X[8][3];
     gather(s, cell, X);
     std::vector<std::size_t> r;
@@ -1044,7 +1056,7 @@ private:
   Vector_3 interpolate(const Hit& hit) const
   {
     double r[3] = {0., 0., 0.};
-    const Storage& s = *storage_;
+    const Storage& s = *m_storage;
     const Index* c = s.connectivity.data() + s.offsets[hit.cell];
     for (int i = 0; i < hit.n; ++i) {
       const float* v = s.vectors.data() + 3 * static_cast<std::size_t>(c[i]);
@@ -1098,7 +1110,7 @@ private:
 
   bool find(const double* x, Hit& hit) const
   {
-    const Storage& s = *storage_;
+    const Storage& s = *m_storage;
     // Written so that NaN coordinates fail too.
     if (!(x[0] >= s.bbox[0] && x[0] <= s.bbox[3] && x[1] >= s.bbox[1] && x[1] <= s.bbox[4] &&
           x[2] >= s.bbox[2] && x[2] <= s.bbox[5]))
@@ -1125,7 +1137,7 @@ private:
     return found;
   }
 
-  std::shared_ptr<const Storage> storage_;
+  std::shared_ptr<const Storage> m_storage;
 };
 
 } // namespace Flow_aligned_surfaces

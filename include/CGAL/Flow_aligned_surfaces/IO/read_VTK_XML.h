@@ -93,18 +93,18 @@ public:
   void Execute(vtkObject*, unsigned long event, void* data) override
   {
     if (event == vtkCommand::ErrorEvent)
-      errors_.push_back(cleaned(static_cast<const char*>(data)));
+      m_errors.push_back(cleaned(static_cast<const char*>(data)));
   }
 
-  bool has_errors() const { return !errors_.empty(); }
+  bool has_errors() const { return !m_errors.empty(); }
 
   // VTK's errors, without the pipeline's restatement of them ("Algorithm ... returned failure
   // for request: <a dump of the request>") unless it is all there is.
   std::string errors() const
   {
     std::string r;
-    for (const std::string& e : errors_) {
-      if (e.find("returned failure for request") != std::string::npos && errors_.size() > 1)
+    for (const std::string& e : m_errors) {
+      if (e.find("returned failure for request") != std::string::npos && m_errors.size() > 1)
         continue;
       if (r.find(e) != std::string::npos)
         continue;
@@ -140,7 +140,7 @@ private:
     return s;
   }
 
-  std::vector<std::string> errors_;
+  std::vector<std::string> m_errors;
 };
 
 // An observer watching a VTK XML reader, its XML parser and its pipeline.

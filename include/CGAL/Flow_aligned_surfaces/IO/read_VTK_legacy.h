@@ -74,10 +74,10 @@ using Flow_aligned_surfaces::IO::internal::printable;
 class VTK_legacy_parser {
 public:
   VTK_legacy_parser(const std::string& filename, Flow_aligned_surfaces::IO::internal::File_contents contents)
-      : contents_(std::move(contents)), in_("read_VTK_flow_field", filename, contents_.view())
+      : m_contents(std::move(contents)), m_in("read_VTK_flow_field", filename, m_contents.view())
   {
   }
-  VTK_legacy_parser(const VTK_legacy_parser&) = delete; // in_ views contents_
+  VTK_legacy_parser(const VTK_legacy_parser&) = delete; // m_in views m_contents
   VTK_legacy_parser& operator=(const VTK_legacy_parser&) = delete;
 
   std::array<std::size_t, 3> dimensions = {{0, 0, 0}};
@@ -94,10 +94,10 @@ public:
 
   [[noreturn]] void fail_at(std::size_t offset, std::size_t line, const std::string& what) const
   {
-    in_.fail_at(offset, line, what);
+    m_in.fail_at(offset, line, what);
   }
-  [[noreturn]] void fail(const std::string& what) const { in_.fail(what); }
-  [[noreturn]] void fail_file(const std::string& what) const { in_.fail_file(what); }
+  [[noreturn]] void fail(const std::string& what) const { m_in.fail(what); }
+  [[noreturn]] void fail_file(const std::string& what) const { m_in.fail_file(what); }
   // `fail_file` as a function object.
   auto file_failure() const
   {
@@ -108,12 +108,12 @@ public:
   // field type being read, for the message when `dataset` is not one it reads.
   void parse(std::initializer_list<const char*> accepted, const char* target)
   {
-    const std::string_view first = in_.read_line();
+    const std::string_view first = m_in.read_line();
     if (lower(first).rfind("# vtk datafile version", 0) != 0)
       fail_at(0, 1,
               "not a legacy VTK file: the first line is '" + printable(first) +
                   "'; expected '# vtk DataFile Version x.x'");
-    in_.read_line(); // the title, free text
+    m_in.read_line(); // the title, free text
     const std::string format = upper(token("the format (ASCII or BINARY)"));
     if (format == "BINARY")
       binary = true;
@@ -140,7 +140,7 @@ public:
     bool have_dimensions = false;
     std::string key;
     for (;;) {
-      key = upper(in_.token());
+      key = upper(m_in.token());
       if (key.empty())
         break;
       const int axis = key == "X_COORDINATES"   ? 0
@@ -170,12 +170,12 @@ public:
       }
       else if (key == "CELLS" && unstructured) {
         const std::size_t n = integer("CELLS"), size = integer("the CELLS size");
-        if (upper(in_.peek_token()) == "OFFSETS") {
+        if (upper(m_in.peek_token()) == "OFFSETS") {
           // VTK >= 9 (file version 5.1): n offsets (cells + 1) and `size` point indices.
           if (n == 0)
             fail("CELLS 0 " + std::to_string(size) +
                  ": the OFFSETS form needs the number of cells + 1 offsets");
-          in_.token();
+          m_in.token();
           offsets = geometry_array("OFFSETS", data_type("OFFSETS"), 1, n);
           expect_keyword("CONNECTIVITY");
           connectivity = geometry_array("CONNECTIVITY", data_type("CONNECTIVITY"), 1, size);
@@ -228,35 +228,35 @@ public:
         if (n != expected)
           fail(key + " " + std::to_string(n) + " does not match " + size_source(point_data) + ", which has " +
                std::to_string(expected) + (point_data ? " nodes" : " cells"));
-        section_tuples_ = n;
-        in_point_data_ = point_data;
-        in_section_ = true;
+        m_section_tuples = n;
+        m_in_point_data = point_data;
+        m_in_section = true;
       }
-      else if (!in_section_) {
+      else if (!m_in_section) {
         fail("unexpected keyword '" + key + "' before POINT_DATA or CELL_DATA");
       }
       else if (key == "SCALARS") {
         const std::string name(token("the SCALARS name"));
         const std::string type = data_type("SCALARS");
         std::size_t components = 1;
-        if (!in_.rest_of_line_blank() && !in_.peek_token().empty()) {
+        if (!m_in.rest_of_line_blank() && !m_in.peek_token().empty()) {
           components = integer("the SCALARS number of components");
           if (components < 1 || components > 4)
             fail("SCALARS '" + name + "' has " + std::to_string(components) + " components; expected 1 to 4");
         }
-        if (upper(in_.peek_token()) == "LOOKUP_TABLE") {
-          in_.token();
+        if (upper(m_in.peek_token()) == "LOOKUP_TABLE") {
+          m_in.token();
           token("the LOOKUP_TABLE name");
         }
-        array("SCALARS", name, type, components, section_tuples_);
+        array("SCALARS", name, type, components, m_section_tuples);
       }
       else if (key == "VECTORS" || key == "NORMALS") {
         const std::string name(token(key + " name"));
-        array(key, name, data_type(key.c_str()), 3, section_tuples_);
+        array(key, name, data_type(key.c_str()), 3, m_section_tuples);
       }
       else if (key == "TENSORS" || key == "TENSORS6") {
         const std::string name(token(key + " name"));
-        array(key, name, data_type(key.c_str()), key == "TENSORS" ? 9 : 6, section_tuples_);
+        array(key, name, data_type(key.c_str()), key == "TENSORS" ? 9 : 6, m_section_tuples);
       }
       else if (key == "TEXTURE_COORDINATES") {
         const std::string name(token("the TEXTURE_COORDINATES name"));
@@ -264,14 +264,14 @@ public:
         if (dim < 1 || dim > 3)
           fail("TEXTURE_COORDINATES '" + name + "' has dimension " + std::to_string(dim) +
                "; expected 1 to 3");
-        array(key, name, data_type(key.c_str()), dim, section_tuples_);
+        array(key, name, data_type(key.c_str()), dim, m_section_tuples);
       }
       else if (key == "COLOR_SCALARS") {
         const std::string name(token("the COLOR_SCALARS name"));
         const std::size_t n = integer("the COLOR_SCALARS number of values");
         if (n < 1 || n > 4)
           fail("COLOR_SCALARS '" + name + "' has " + std::to_string(n) + " values; expected 1 to 4");
-        array(key, name, binary ? "unsigned_char" : "float", n, section_tuples_);
+        array(key, name, binary ? "unsigned_char" : "float", n, m_section_tuples);
       }
       else if (key == "LOOKUP_TABLE") {
         const std::string name(token("the LOOKUP_TABLE name"));
@@ -279,14 +279,14 @@ public:
         array(key, name, binary ? "unsigned_char" : "float", 4, n);
       }
       else if (key == "FIELD") {
-        field(in_point_data_);
+        field(m_in_point_data);
       }
       else {
         fail("unknown keyword '" + key +
              "'; expected POINT_DATA, CELL_DATA, SCALARS, VECTORS, NORMALS, TENSORS, TEXTURE_COORDINATES, "
              "COLOR_SCALARS, LOOKUP_TABLE or FIELD");
       }
-      key = upper(in_.token());
+      key = upper(m_in.token());
     }
   }
 
@@ -400,18 +400,18 @@ public:
   decode(const VTK_legacy_array& a, const Out& out)
   {
     const std::size_t count = a.components * a.tuples;
-    in_.pos = a.begin;
-    in_.line = a.line;
+    m_in.pos = a.begin;
+    m_in.line = a.line;
     if (binary) {
       // Decoded in blocks that stay in the L1 cache, so that the block decoding is a tight loop.
       const std::size_t size = type_size(a.type);
       const Binary_type type = binary_type(a.type);
-      const unsigned char* data = reinterpret_cast<const unsigned char*>(in_.bytes().data());
+      const unsigned char* data = reinterpret_cast<const unsigned char*>(m_in.bytes().data());
       constexpr std::size_t block_size = 1024;
       double block[block_size];
-      // A local offset, not the cursor's: `out` storing bytes (the mask) could alias `in_.pos`,
+      // A local offset, not the cursor's: `out` storing bytes (the mask) could alias `m_in.pos`,
       // which would then be stored and reloaded per value.
-      std::size_t pos = in_.pos;
+      std::size_t pos = m_in.pos;
       for (std::size_t i0 = 0; i0 < count; i0 += block_size) {
         const std::size_t m = count - i0 < block_size ? count - i0 : block_size;
         // Big-endian, as VTK's legacy writer writes, whatever the host.
@@ -420,12 +420,12 @@ public:
         for (std::size_t j = 0; j < m; ++j, pos += size)
           out(i0 + j, block[j], pos, 0);
       }
-      in_.pos = pos;
+      m_in.pos = pos;
     }
     else {
       for (std::size_t i = 0; i < count; ++i) {
         const std::string_view t = value_token(a);
-        out(i, ascii_value(t, a), in_.pos - t.size(), in_.line);
+        out(i, ascii_value(t, a), m_in.pos - t.size(), m_in.line);
       }
     }
   }
@@ -442,7 +442,7 @@ public:
   };
   Binary_values binary_values(const VTK_legacy_array& a) const
   {
-    return {reinterpret_cast<const unsigned char*>(in_.bytes().data()) + a.begin, binary_type(a.type),
+    return {reinterpret_cast<const unsigned char*>(m_in.bytes().data()) + a.begin, binary_type(a.type),
             type_size(a.type), a.begin};
   }
 
@@ -466,7 +466,7 @@ private:
   // The next token of the values of `a`.
   std::string_view value_token(const VTK_legacy_array& a)
   {
-    const std::string_view t = in_.token();
+    const std::string_view t = m_in.token();
     if (t.empty())
       fail("the file ends inside the values of " + label(a.kind, a.name));
     return t;
@@ -474,7 +474,7 @@ private:
 
   std::string_view token(const std::string& what)
   {
-    const std::string_view t = in_.token();
+    const std::string_view t = m_in.token();
     if (t.empty())
       fail("the file ends where " + what + " was expected (truncated file?)");
     return t;
@@ -489,12 +489,12 @@ private:
 
   std::size_t integer(const char* what)
   {
-    return in_.count(token(std::string("a number of ") + what), what);
+    return m_in.count(token(std::string("a number of ") + what), what);
   }
 
   double real(const char* what)
   {
-    return in_.finite_number(token(std::string("a number of ") + what), what);
+    return m_in.finite_number(token(std::string("a number of ") + what), what);
   }
 
   // Bytes per value in BINARY files (as VTK's legacy writer writes them), 0 if unknown.
@@ -550,7 +550,7 @@ private:
              std::size_t components, std::size_t tuples, bool candidate = true)
   {
     arrays.push_back(skip_values(kind, name, type, components, tuples));
-    arrays.back().point_data = in_point_data_ && candidate && kind != "LOOKUP_TABLE";
+    arrays.back().point_data = m_in_point_data && candidate && kind != "LOOKUP_TABLE";
     skip_metadata();
   }
 
@@ -570,7 +570,7 @@ private:
   VTK_legacy_array skip_values(const std::string& kind, const std::string& name, const std::string& type,
                                std::size_t components, std::size_t tuples)
   {
-    const std::size_t left = in_.left();
+    const std::size_t left = m_in.left();
     if (components != 0 && tuples > left / components)
       fail(label(kind, name) + " needs " + std::to_string(tuples) + " x " + std::to_string(components) +
            " values but only " + std::to_string(left) + " bytes are left (truncated file or wrong count)");
@@ -581,34 +581,34 @@ private:
     a.type = type;
     a.components = components;
     a.tuples = tuples;
-    a.header = in_.pos;
-    a.header_line = in_.line;
+    a.header = m_in.pos;
+    a.header_line = m_in.line;
     if (binary) {
       // The values start right after the end of the header line.
-      const std::string_view b = in_.bytes();
-      while (in_.pos < b.size() && b[in_.pos] != '\n') {
-        if (!Text_cursor::is_space(b[in_.pos]))
+      const std::string_view b = m_in.bytes();
+      while (m_in.pos < b.size() && b[m_in.pos] != '\n') {
+        if (!Text_cursor::is_space(b[m_in.pos]))
           fail("unexpected text after the header of " + label(kind, name));
-        ++in_.pos;
+        ++m_in.pos;
       }
-      in_.read_line(); // the end of the header line
+      m_in.read_line(); // the end of the header line
       const std::size_t bytes = type == "bit" ? (count + 7) / 8 : count * type_size(type);
-      const std::size_t remaining = in_.left();
+      const std::size_t remaining = m_in.left();
       if (bytes > remaining)
         fail(label(kind, name) + " (" + type + ") needs " + std::to_string(bytes) +
              " bytes of binary data but only " + std::to_string(remaining) +
              " are left (truncated file or wrong count)");
-      a.begin = in_.pos;
+      a.begin = m_in.pos;
       a.line = 0;
-      in_.pos += bytes;
+      m_in.pos += bytes;
     }
     else {
       if (count > (left + 1) / 2)
         fail(label(kind, name) + " needs " + std::to_string(count) + " values but only " +
              std::to_string(left) + " bytes are left (truncated file or wrong count)");
-      in_.skip_space();
-      a.begin = in_.pos;
-      a.line = in_.line;
+      m_in.skip_space();
+      a.begin = m_in.pos;
+      a.line = m_in.line;
       for (std::size_t i = 0; i < count; ++i) {
         const std::string_view t = value_token(a);
         if (a.type != "bit")
@@ -621,12 +621,12 @@ private:
   // VTK ≥ 8 may follow an array with METADATA and INFORMATION lines, ended by an empty line.
   void skip_metadata()
   {
-    if (upper(in_.peek_token()) != "METADATA")
+    if (upper(m_in.peek_token()) != "METADATA")
       return;
-    in_.token();
-    in_.read_line();
-    while (!in_.at_end()) {
-      const std::string_view l = in_.read_line();
+    m_in.token();
+    m_in.read_line();
+    while (!m_in.at_end()) {
+      const std::string_view l = m_in.read_line();
       if (l.find_first_not_of(" \t\r") == std::string_view::npos)
         return;
     }
@@ -636,7 +636,7 @@ private:
   {
     double v = 0;
     if (!Text_cursor::parse_number(t, v))
-      fail_at(in_.pos - t.size(), in_.line,
+      fail_at(m_in.pos - t.size(), m_in.line,
               "'" + printable(t) + "' is not a number (in the values of " + label(a.kind, a.name) + ")");
     return v;
   }
@@ -667,10 +667,10 @@ private:
     return Binary_type::INT64;
   }
 
-  Flow_aligned_surfaces::IO::internal::File_contents contents_;
-  Text_cursor in_; // reads contents_.view()
-  std::size_t section_tuples_ = 0;
-  bool in_point_data_ = false, in_section_ = false;
+  Flow_aligned_surfaces::IO::internal::File_contents m_contents;
+  Text_cursor m_in; // reads m_contents.view()
+  std::size_t m_section_tuples = 0;
+  bool m_in_point_data = false, m_in_section = false;
 };
 
 inline std::string describe_arrays(const std::vector<VTK_legacy_array>& arrays)
