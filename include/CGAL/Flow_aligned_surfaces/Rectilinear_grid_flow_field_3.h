@@ -79,6 +79,10 @@ public:
   /// \name Creation
   /// @{
 
+  /// creates an empty field: no node, `std::nullopt` everywhere, `bbox()` the empty `Bbox_3()`.
+  /// It is what a reader such as `IO::read_VTK_flow_field()` fills.
+  Rectilinear_grid_flow_field_3() : m_storage(std::make_shared<const Storage>()) {}
+
   /// creates the field from its node coordinates and values.
   ///
   /// \param coordinates the node coordinates `{X, Y, Z}` along each axis, each strictly
@@ -147,8 +151,11 @@ private:
     s->values = std::move(values);
     s->mask = std::move(mask);
     m_storage = std::move(s);
-    for (int a = 0; a < 3; ++a)
+    for (int a = 0; a < 3; ++a) {
       m_coordinate_data[a] = m_storage->coordinates[a].data();
+      m_lo[a] = m_storage->coordinates[a].front();
+      m_hi[a] = m_storage->coordinates[a].back();
+    }
     m_value_data = m_storage->values.data();
     m_mask_data = m_storage->mask.empty() ? nullptr : m_storage->mask.data();
     m_stride_y = m_dimensions[0];
@@ -166,7 +173,7 @@ public:
     const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     // Written so that NaN coordinates fail too.
     for (int a = 0; a < 3; ++a)
-      if (!(x[a] >= m_coordinate_data[a][0] && x[a] <= m_coordinate_data[a][m_dimensions[a] - 1]))
+      if (!(x[a] >= m_lo[a] && x[a] <= m_hi[a]))
         return std::nullopt;
 
     std::size_t c[3];
@@ -201,12 +208,7 @@ public:
     return m_storage->coordinates[axis];
   }
   /// the closed box on which the field is defined (before the mask is applied)
-  Bbox_3 bbox() const
-  {
-    return Bbox_3(m_coordinate_data[0][0], m_coordinate_data[1][0], m_coordinate_data[2][0],
-                  m_coordinate_data[0][m_dimensions[0] - 1], m_coordinate_data[1][m_dimensions[1] - 1],
-                  m_coordinate_data[2][m_dimensions[2] - 1]);
-  }
+  Bbox_3 bbox() const { return Bbox_3(m_lo[0], m_lo[1], m_lo[2], m_hi[0], m_hi[1], m_hi[2]); }
 
   /// the position `(X[i], Y[j], Z[k])` of node `(i, j, k)`
   /// \pre `i < nx`, `j < ny`, `k < nz`
@@ -259,8 +261,10 @@ private:
 
   std::shared_ptr<const Storage> m_storage;
   Dimensions m_dimensions = {{0, 0, 0}};
-  // The hot path reads only these raw pointers into the shared storage (which the shared
-  // pointer keeps alive in every copy).
+  // The hot path reads only these: the box (the first and last coordinates; empty, +inf..-inf,
+  // without nodes) and raw pointers into the shared storage (which the shared pointer keeps
+  // alive in every copy).
+  double m_lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, m_hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   const double* m_coordinate_data[3] = {nullptr, nullptr, nullptr};
   const float* m_value_data = nullptr;
   const unsigned char* m_mask_data = nullptr;

@@ -12,6 +12,7 @@
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Origin.h>
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
@@ -89,6 +90,18 @@ public:
 
   /// \name Creation
   /// @{
+
+  /// creates an empty field: no node, `std::nullopt` everywhere, `bbox()` the empty `Bbox_3()`.
+  /// It is what a reader such as `IO::read_VTK_flow_field()` fills.
+  Regular_grid_flow_field_3() : m_origin(ORIGIN), m_spacing(NULL_VECTOR), m_dimensions{{0, 0, 0}}
+  {
+    // The empty box +inf..-inf, which no point (not even a NaN) is in.
+    for (int a = 0; a < 3; ++a) {
+      m_lo[a] = std::numeric_limits<double>::infinity();
+      m_hi[a] = -std::numeric_limits<double>::infinity();
+      m_h[a] = m_inv_h[a] = 0.;
+    }
+  }
 
   /// creates the field from its node values.
   ///
@@ -269,7 +282,11 @@ public:
   }
 
   /// the `3·nx·ny·nz` stored velocity components, in node order
-  const std::vector<float>& values() const { return *m_values; }
+  const std::vector<float>& values() const
+  {
+    static const std::vector<float> no_values;
+    return m_values ? *m_values : no_values;
+  }
 
   /// the `nx·ny·nz` mask flags, or an empty vector if the field has no mask
   const std::vector<unsigned char>& mask() const

@@ -59,6 +59,10 @@ public:
   /// \name Creation
   /// @{
 
+  /// holds an empty `Regular_grid` (`std::nullopt` everywhere), what
+  /// `IO::read_flow_field()` fills.
+  Sampled_flow_field_3() {}
+
   /// holds `field`, one of `Regular_grid`, `Rectilinear_grid`, `Unstructured_grid`.
   template <typename Field>
   Sampled_flow_field_3(Field field) : m_field(std::move(field))

@@ -57,6 +57,10 @@ public:
   /// \name Creation
   /// @{
 
+  /// creates an empty series: no step, `std::nullopt` at every time.  It is what
+  /// `IO::read_PVD_flow_field()` fills.
+  Unsteady_flow_field_3() : m_storage(std::make_shared<const Storage>()) {}
+
   /// creates the series from its times and steps (pass `steps` with `std::move()` to avoid a
   /// copy).
   ///
@@ -107,7 +111,7 @@ public:
   auto operator()(const Point_3& p, double t) const -> decltype(std::declval<const FlowField&>()(p))
   {
     const std::vector<double>& times = m_storage->times;
-    if (!(t >= times.front() && t <= times.back()))
+    if (times.empty() || !(t >= times.front() && t <= times.back()))
       return std::nullopt;
     // The first step after t; t = times.back() is the last step's own time.
     const std::size_t j =
@@ -152,9 +156,19 @@ public:
     return m_storage->steps[i];
   }
   /// the time of the first step
-  double start_time() const { return m_storage->times.front(); }
+  /// \pre `number_of_steps() > 0`
+  double start_time() const
+  {
+    CGAL_precondition(number_of_steps() > 0);
+    return m_storage->times.front();
+  }
   /// the time of the last step
-  double end_time() const { return m_storage->times.back(); }
+  /// \pre `number_of_steps() > 0`
+  double end_time() const
+  {
+    CGAL_precondition(number_of_steps() > 0);
+    return m_storage->times.back();
+  }
 
   /// @}
 
