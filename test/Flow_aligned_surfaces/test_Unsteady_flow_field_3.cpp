@@ -190,7 +190,7 @@ TEST(UnsteadyFlowField, AnalyticGridAndUnstructuredSteps)
 // What read_PVD_flow_field() fills: no step, undefined at every time.
 TEST(UnsteadyFlowField, DefaultConstructedSeriesIsEmpty)
 {
-  const auto step = [](const Point&) -> std::optional<Vector> { return Vector(1, 0, 0); };
+  auto step = [](const Point&) -> std::optional<Vector> { return Vector(1, 0, 0); };
   const FAS::Unsteady_flow_field_3<decltype(step)> series;
   EXPECT_EQ(series.number_of_steps(), 0u);
   for (double t : {0., -1e300, 1e300})
