@@ -103,7 +103,7 @@ int main(int argc, char** argv)
       return 1;
     t_cat.push_back(seconds_since(t0));
     cpu_cat.push_back(usage(RUSAGE_CHILDREN).first - c0.first);
-    std::optional<Grid> field;
+    Grid field;
     const auto u0 = usage();
     t0 = std::chrono::steady_clock::now();
     std::string error;

@@ -81,13 +81,15 @@ inline std::optional<Flow> make_built_in_flow(const std::string& name)
 inline std::optional<FAS::Sampled_flow_field_3<Kernel>> read_data_field(const std::string& file,
                                                                         const std::string& array)
 {
-  std::optional<FAS::Sampled_flow_field_3<Kernel>> field;
+  FAS::Sampled_flow_field_3<Kernel> field;
   std::string error;
   const bool read = array.empty()
                         ? FAS::IO::read_flow_field(file, field, CGAL::parameters::default_values(), &error)
                         : FAS::IO::read_flow_field(file, field, FAS::parameters::array_name(array), &error);
-  if (!read)
+  if (!read) {
     std::cerr << "error: " << error << "\n";
+    return std::nullopt;
+  }
   return field;
 }
 

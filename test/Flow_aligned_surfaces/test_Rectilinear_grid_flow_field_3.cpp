@@ -194,6 +194,19 @@ TEST(RectilinearGridFlowField3, MaskExcludesTheCellsTouchingASolidNode)
   EXPECT_FALSE(g(g.node_point(2, 1, 2)).has_value());
 }
 
+// What a reader fills: no node, no point inside.
+TEST(RectilinearGridFlowField3, DefaultConstructedFieldIsEmpty)
+{
+  const Field g;
+  EXPECT_EQ(g.number_of_nodes(), 0u);
+  EXPECT_EQ(g.bbox(), CGAL::Bbox_3());
+  EXPECT_TRUE(g.coordinates(0).empty());
+  EXPECT_TRUE(g.values().empty());
+  EXPECT_FALSE(g.has_mask());
+  for (const Point_3& p : {Point_3(0, 0, 0), Point_3(-1e300, -1e300, -1e300), Point_3(1e300, 1e300, 1e300)})
+    EXPECT_FALSE(g(p).has_value()) << p;
+}
+
 TEST(RectilinearGridFlowField3, CopiesShareStorage)
 {
   const Field g(kAxes, node_values(kAxes, trilinear));

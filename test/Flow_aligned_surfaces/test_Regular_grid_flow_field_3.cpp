@@ -252,6 +252,20 @@ TEST(RegularGridFlowField3, ClosedBoxIsInsideAndJustOutsideIsNot)
   EXPECT_FALSE(g(Point_3(lo[0], lo[1], nan)).has_value());
 }
 
+// What a reader fills: no node, no point inside (not even on the far side of an empty box).
+TEST(RegularGridFlowField3, DefaultConstructedFieldIsEmpty)
+{
+  const Grid g;
+  EXPECT_EQ(g.number_of_nodes(), 0u);
+  EXPECT_EQ(g.dimensions(), (Dimensions{{0, 0, 0}}));
+  EXPECT_EQ(g.bbox(), CGAL::Bbox_3());
+  EXPECT_TRUE(g.values().empty());
+  EXPECT_FALSE(g.has_mask());
+  for (const Point_3& p : {Point_3(0, 0, 0), Point_3(-1e300, -1e300, -1e300), Point_3(1e300, 1e300, 1e300)})
+    EXPECT_FALSE(g(p).has_value()) << p;
+  EXPECT_FALSE(g.with_interpolation(FAS::Grid_interpolation::TRICUBIC)(Point_3(0, 0, 0)).has_value());
+}
+
 TEST(RegularGridFlowField3, MaskExcludesTheCellsTouchingASolidNode)
 {
   // 5 x 5 x 5 nodes of unit spacing, node (2, 2, 2) solid with a NaN value (ignored).

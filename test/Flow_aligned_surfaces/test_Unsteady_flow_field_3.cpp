@@ -187,6 +187,16 @@ TEST(UnsteadyFlowField, AnalyticGridAndUnstructuredSteps)
   EXPECT_FALSE(grid_series(Point(2, 2, 2), 0.5));
 }
 
+// What read_PVD_flow_field() fills: no step, undefined at every time.
+TEST(UnsteadyFlowField, DefaultConstructedSeriesIsEmpty)
+{
+  auto step = [](const Point&) -> std::optional<Vector> { return Vector(1, 0, 0); };
+  const FAS::Unsteady_flow_field_3<decltype(step)> series;
+  EXPECT_EQ(series.number_of_steps(), 0u);
+  for (double t : {0., -1e300, 1e300})
+    EXPECT_FALSE(series(Point(0, 0, 0), t).has_value()) << t;
+}
+
 TEST(UnsteadyFlowField, BadTimesAreRefusedWithIndexAndValues)
 {
   typedef decltype(step_at(0.)) Step;

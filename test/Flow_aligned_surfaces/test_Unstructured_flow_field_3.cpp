@@ -268,6 +268,20 @@ void check_linear_field_is_reproduced(int kind, bool float_points = false)
   EXPECT_GT(found, 1200);
 }
 
+// What a reader fills: no point, no cell, no point inside.
+TEST(UnstructuredFlowField3, DefaultConstructedFieldIsEmpty)
+{
+  const Field f;
+  EXPECT_EQ(f.number_of_points(), 0u);
+  EXPECT_EQ(f.number_of_cells(), 0u);
+  EXPECT_EQ(f.points().size(), 0u);
+  EXPECT_EQ(f.bbox(), CGAL::Bbox_3());
+  for (const Point_3& p : {Point_3(0, 0, 0), Point_3(-1e300, -1e300, -1e300), Point_3(1e300, 1e300, 1e300)}) {
+    EXPECT_FALSE(f(p).has_value()) << p;
+    EXPECT_FALSE(f.locate(p).has_value()) << p;
+  }
+}
+
 TEST(UnstructuredFlowField3, LinearFieldIsReproducedOnTetrahedra)
 {
   check_linear_field_is_reproduced(10);

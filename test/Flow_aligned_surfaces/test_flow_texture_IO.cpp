@@ -1,10 +1,11 @@
 // The files a user opens, read back by other readers: the PNG by libpng's own reader (texel
 // values round(255 c), top row first), the OBJ by parsing its v/vt/f lines and its MTL, the VTP
-// by VTK's vtkXMLPolyDataReader, which must find the texture coordinates as TCoords.
+// by VTK's vtkXMLPolyDataReader in VTK/test_flow_texture_IO_VTK.cpp.
 
 #include "png_test_reader.h"
 #include "test_files.h"
 #include "test_kernel.h"
+#include "textured_patch.h"
 
 #include <CGAL/Flow_aligned_surfaces/IO/write_PNG.h>
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
@@ -12,15 +13,6 @@
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Surface_mesh.h>
-
-#ifdef FAS_HAVE_VTK
-#include <vtkCellData.h>
-#include <vtkDataArray.h>
-#include <vtkPointData.h>
-#include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
-#include <vtkXMLPolyDataReader.h>
-#endif
 
 #include <gtest/gtest.h>
 
@@ -37,20 +29,8 @@ namespace test_flow_texture_IO {
 namespace {
 
 using namespace fas_test;
-using Mesh = CGAL::Surface_mesh<Point_3>;
+using Mesh = Textured_mesh;
 using Vertex = Mesh::Vertex_index;
-using UV = std::array<double, 2>;
-
-// A 3 x 2 patch with uv = (x, 2 y + 0.5) and a NaN at vertex 0.
-Mesh::Property_map<Vertex, UV> textured_patch(Mesh& tm)
-{
-  FAS::make_planar_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), 3.0, 2.0, 60);
-  auto uv = tm.add_property_map<Vertex, UV>("v:uv").first;
-  for (Vertex v : tm.vertices())
-    uv[v] = {tm.point(v).x(), 2 * tm.point(v).y() + 0.5};
-  uv[Vertex(0)][0] = std::nan("");
-  return uv;
-}
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_PNG
 TEST(FlowTextureIO, PNGHoldsTheRoundedTexelsTopRowFirst)
@@ -159,46 +139,6 @@ TEST(FlowTextureIO, OBJHasOneTextureCoordinatePerVertexAndItsMaterial)
   EXPECT_NE(mtl.find("newmtl " + usemtl), std::string::npos) << mtl;
   EXPECT_NE(mtl.find("map_Kd flow_texture_io_patch.png"), std::string::npos) << mtl;
 }
-
-#ifdef FAS_HAVE_VTK
-TEST(FlowTextureIO, VTKFindsTheTextureCoordinatesAndTheMaskInTheVTP)
-{
-  Mesh tm;
-  const auto uv = textured_patch(tm);
-  std::vector<double> tcoords, mask;
-  for (Vertex v : tm.vertices())
-    tcoords.insert(tcoords.end(), {uv[v][0], uv[v][1]});
-  for (auto f : tm.faces())
-    mask.push_back(double(f) / double(tm.number_of_faces()));
-  FAS::IO::Data_array texture{"texture_coordinates", 2, tcoords};
-  texture.texture_coordinates = true;
-  const std::string file = temporary_file("flow_texture_io_", "patch.vtp");
-  std::string error;
-  ASSERT_TRUE(FAS::IO::write_VTP(file, tm,
-                                 {{"r", 1, std::vector<double>(tm.number_of_vertices(), 1.0)}, texture},
-                                 {{"texture_mask", 1, mask}}, CGAL::parameters::default_values(), &error))
-      << error;
-  auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkPolyData* polydata = reader->GetOutput();
-  ASSERT_EQ(polydata->GetNumberOfPoints(), vtkIdType(tm.number_of_vertices()));
-  vtkDataArray* t = polydata->GetPointData()->GetTCoords();
-  ASSERT_NE(t, nullptr) << "no TCoords";
-  EXPECT_STREQ(t->GetName(), "texture_coordinates");
-  ASSERT_EQ(t->GetNumberOfComponents(), 2);
-  EXPECT_TRUE(std::isnan(t->GetComponent(0, 0)));
-  for (Vertex v : tm.vertices())
-    if (v != Vertex(0)) {
-      EXPECT_EQ(t->GetComponent(vtkIdType(v), 0), uv[v][0]);
-      EXPECT_EQ(t->GetComponent(vtkIdType(v), 1), uv[v][1]);
-    }
-  vtkDataArray* m = polydata->GetCellData()->GetArray("texture_mask");
-  ASSERT_NE(m, nullptr);
-  for (auto f : tm.faces())
-    EXPECT_EQ(m->GetComponent(vtkIdType(f), 0), mask[f]);
-}
-#endif
 
 } // namespace
 

@@ -1,22 +1,12 @@
-// IO::write_VTP_polylines(): read back by VTK's own vtkXMLPolyDataReader (the peer) when VTK
-// is there; a wrong array size is refused, named, and leaves an existing file untouched.
+// IO::write_VTP_polylines(): a wrong array size is refused, named, and leaves an existing file
+// untouched (the file read back by VTK: VTK/test_write_VTP_polylines_VTK.cpp).
 
+#include "polylines_test_data.h"
 #include "test_kernel.h"
 
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
 
 #include <gtest/gtest.h>
-
-#ifdef FAS_HAVE_VTK
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkDataArray.h>
-#include <vtkIdList.h>
-#include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPolyData.h>
-#include <vtkXMLPolyDataReader.h>
-#endif
 
 #include <cmath>
 #include <filesystem>
@@ -33,62 +23,11 @@ namespace {
 
 using namespace fas_test;
 
-std::filesystem::path scratch(const std::string& name)
-{
-  const auto dir = std::filesystem::temp_directory_path() / "fas_test_write_VTP_polylines";
-  std::filesystem::create_directories(dir);
-  return dir / name;
-}
-
-const std::vector<std::vector<Point_3>> lines = {
-    {Point_3(0, 0, 0), Point_3(1, 0.5, 0.25), Point_3(2, 1. / 3, -1)},
-    {Point_3(5, 6, 7), Point_3(-1e-300, 2, 3)}};
-
-TEST(write_VTP_polylines, read_back_by_VTK)
-{
-  const auto path = scratch("lines.vtp");
-  std::string error;
-  ASSERT_TRUE(FAS::IO::write_VTP_polylines(path.string(), lines, {{"t", 1, {0., 1., 2., 0., std::nan("")}}},
-                                           {{"id", 1, {10., 11.}}}, &error))
-      << error;
-#ifdef FAS_HAVE_VTK
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.string().c_str());
-  reader->Update();
-  vtkPolyData* pd = reader->GetOutput();
-  ASSERT_EQ(pd->GetNumberOfPoints(), 5);
-  ASSERT_EQ(pd->GetNumberOfLines(), 2);
-  ASSERT_EQ(pd->GetNumberOfPolys(), 0);
-  vtkNew<vtkIdList> ids;
-  vtkIdType k = 0;
-  for (vtkIdType c = 0; c < 2; ++c) {
-    pd->GetCellPoints(c, ids);
-    ASSERT_EQ(ids->GetNumberOfIds(), vtkIdType(lines[std::size_t(c)].size()));
-    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i, ++k) {
-      EXPECT_EQ(ids->GetId(i), k);
-      double p[3];
-      pd->GetPoint(ids->GetId(i), p);
-      const Point_3& q = lines[std::size_t(c)][std::size_t(i)];
-      EXPECT_EQ(p[0], q.x());
-      EXPECT_EQ(p[1], q.y());
-      EXPECT_EQ(p[2], q.z());
-    }
-  }
-  vtkDataArray* t = pd->GetPointData()->GetArray("t");
-  ASSERT_NE(t, nullptr);
-  EXPECT_EQ(t->GetTuple1(2), 2.);
-  EXPECT_TRUE(std::isnan(t->GetTuple1(4)));
-  vtkDataArray* id = pd->GetCellData()->GetArray("id");
-  ASSERT_NE(id, nullptr);
-  EXPECT_EQ(id->GetTuple1(1), 11.);
-#else
-  GTEST_SKIP() << "VTK not found: the file is not read back by VTK";
-#endif
-}
+const std::vector<std::vector<Point_3>>& lines = test_polylines();
 
 TEST(write_VTP_polylines, wrong_array_size_leaves_the_file)
 {
-  const auto path = scratch("kept.vtp");
+  const auto path = polylines_scratch("kept.vtp");
   {
     std::ofstream os(path);
     os << "previous content";

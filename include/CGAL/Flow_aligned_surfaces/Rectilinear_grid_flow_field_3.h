@@ -81,6 +81,10 @@ public:
   /// \name Creation
   /// @{
 
+  /// creates an empty field: no node, `std::nullopt` everywhere, `bbox()` the empty `Bbox_3()`.
+  /// It is what a reader such as `IO::read_VTK_flow_field()` fills.
+  Rectilinear_grid_flow_field_3() : m_storage(std::make_shared<const Storage>()) {}
+
   /// creates the field from its node coordinates and values.
   ///
   /// \param coordinates the node coordinates `{X, Y, Z}` along each axis, each strictly
@@ -120,8 +124,8 @@ private:
     static const char* const who = "Rectilinear_grid_flow_field_3";
     static const char* const axis[3] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a)
-      n_[a] = coordinates[a].size();
-    internal::check_grid_dimensions(who, n_);
+      m_dimensions[a] = coordinates[a].size();
+    internal::check_grid_dimensions(who, m_dimensions);
     for (int a = 0; a < 3; ++a) {
       const std::vector<double>& X = coordinates[a];
       for (std::size_t i = 0; i < X.size(); ++i) {
@@ -141,20 +145,23 @@ private:
         }
       }
     }
-    const std::size_t nodes = internal::grid_node_count(who, n_);
-    internal::check_grid_node_values(who, n_, nodes, values, mask, values_checked);
+    const std::size_t nodes = internal::grid_node_count(who, m_dimensions);
+    internal::check_grid_node_values(who, m_dimensions, nodes, values, mask, values_checked);
 
     auto s = std::make_shared<Storage>();
     s->coordinates = std::move(coordinates);
     s->values = std::move(values);
     s->mask = std::move(mask);
-    storage_ = std::move(s);
-    for (int a = 0; a < 3; ++a)
-      x_[a] = storage_->coordinates[a].data();
-    v_ = storage_->values.data();
-    m_ = storage_->mask.empty() ? nullptr : storage_->mask.data();
-    stride_y_ = n_[0];
-    stride_z_ = n_[0] * n_[1];
+    m_storage = std::move(s);
+    for (int a = 0; a < 3; ++a) {
+      m_coordinate_data[a] = m_storage->coordinates[a].data();
+      m_lo[a] = m_storage->coordinates[a].front();
+      m_hi[a] = m_storage->coordinates[a].back();
+    }
+    m_value_data = m_storage->values.data();
+    m_mask_data = m_storage->mask.empty() ? nullptr : m_storage->mask.data();
+    m_stride_y = m_dimensions[0];
+    m_stride_z = m_dimensions[0] * m_dimensions[1];
   }
 
 public:
@@ -168,21 +175,22 @@ public:
     const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     // Written so that NaN coordinates fail too.
     for (int a = 0; a < 3; ++a)
-      if (!(x[a] >= x_[a][0] && x[a] <= x_[a][n_[a] - 1]))
+      if (!(x[a] >= m_lo[a] && x[a] <= m_hi[a]))
         return std::nullopt;
 
     std::size_t c[3];
     double f[3], g[3];
     for (int a = 0; a < 3; ++a) {
       // The last node not above x[a], clamped so that the upper boundary belongs to the last cell.
-      const double* X = x_[a];
-      const std::size_t i = static_cast<std::size_t>(std::upper_bound(X, X + n_[a], x[a]) - X);
-      c[a] = (std::min)(i - 1, n_[a] - 2);
+      const double* X = m_coordinate_data[a];
+      const std::size_t i = static_cast<std::size_t>(std::upper_bound(X, X + m_dimensions[a], x[a]) - X);
+      c[a] = (std::min)(i - 1, m_dimensions[a] - 2);
       f[a] = (std::min)((x[a] - X[c[a]]) / (X[c[a] + 1] - X[c[a]]), 1.);
       g[a] = 1. - f[a];
     }
-    return internal::masked_trilinear_vector<Vector_3, FT>(v_, m_, c[0] + stride_y_ * c[1] + stride_z_ * c[2],
-                                                           stride_y_, stride_z_, f, g);
+    return internal::masked_trilinear_vector<Vector_3, FT>(m_value_data, m_mask_data,
+                                                           c[0] + m_stride_y * c[1] + m_stride_z * c[2],
+                                                           m_stride_y, m_stride_z, f, g);
   }
 
   /// @}
@@ -191,28 +199,25 @@ public:
   /// @{
 
   /// the numbers of nodes `{nx, ny, nz}`
-  const Dimensions& dimensions() const { return n_; }
+  const Dimensions& dimensions() const { return m_dimensions; }
   /// the total number of nodes `nx·ny·nz`
-  std::size_t number_of_nodes() const { return n_[0] * n_[1] * n_[2]; }
+  std::size_t number_of_nodes() const { return m_dimensions[0] * m_dimensions[1] * m_dimensions[2]; }
   /// the node coordinates along axis `axis` (0 = x, 1 = y, 2 = z)
   /// \pre `axis < 3`
   const std::vector<double>& coordinates(int axis) const
   {
     CGAL_precondition(axis >= 0 && axis < 3);
-    return storage_->coordinates[axis];
+    return m_storage->coordinates[axis];
   }
   /// the closed box on which the field is defined (before the mask is applied)
-  Bbox_3 bbox() const
-  {
-    return Bbox_3(x_[0][0], x_[1][0], x_[2][0], x_[0][n_[0] - 1], x_[1][n_[1] - 1], x_[2][n_[2] - 1]);
-  }
+  Bbox_3 bbox() const { return Bbox_3(m_lo[0], m_lo[1], m_lo[2], m_hi[0], m_hi[1], m_hi[2]); }
 
   /// the position `(X[i], Y[j], Z[k])` of node `(i, j, k)`
   /// \pre `i < nx`, `j < ny`, `k < nz`
   Point_3 node_point(std::size_t i, std::size_t j, std::size_t k) const
   {
-    CGAL_precondition(i < n_[0] && j < n_[1] && k < n_[2]);
-    return Point_3(FT(x_[0][i]), FT(x_[1][j]), FT(x_[2][k]));
+    CGAL_precondition(i < m_dimensions[0] && j < m_dimensions[1] && k < m_dimensions[2]);
+    return Point_3(FT(m_coordinate_data[0][i]), FT(m_coordinate_data[1][j]), FT(m_coordinate_data[2][k]));
   }
 
   /// the velocity stored at node `(i, j, k)` (zero at a solid node whose given value was not
@@ -220,34 +225,34 @@ public:
   /// \pre `i < nx`, `j < ny`, `k < nz`
   Vector_3 node_value(std::size_t i, std::size_t j, std::size_t k) const
   {
-    CGAL_precondition(i < n_[0] && j < n_[1] && k < n_[2]);
-    const float* c = v_ + 3 * node_index(i, j, k);
+    CGAL_precondition(i < m_dimensions[0] && j < m_dimensions[1] && k < m_dimensions[2]);
+    const float* c = m_value_data + 3 * node_index(i, j, k);
     return Vector_3(FT(c[0]), FT(c[1]), FT(c[2]));
   }
 
   /// whether the field has a node mask
-  bool has_mask() const { return m_ != nullptr; }
+  bool has_mask() const { return m_mask_data != nullptr; }
 
   /// whether node `(i, j, k)` is fluid (always `true` without a mask)
   /// \pre `i < nx`, `j < ny`, `k < nz`
   bool is_fluid(std::size_t i, std::size_t j, std::size_t k) const
   {
-    CGAL_precondition(i < n_[0] && j < n_[1] && k < n_[2]);
-    return m_ == nullptr || m_[node_index(i, j, k)] != 0;
+    CGAL_precondition(i < m_dimensions[0] && j < m_dimensions[1] && k < m_dimensions[2]);
+    return m_mask_data == nullptr || m_mask_data[node_index(i, j, k)] != 0;
   }
 
   /// the `3·nx·ny·nz` stored velocity components, in node order
-  const std::vector<float>& values() const { return storage_->values; }
+  const std::vector<float>& values() const { return m_storage->values; }
 
   /// the `nx·ny·nz` mask flags, or an empty vector if the field has no mask
-  const std::vector<unsigned char>& mask() const { return storage_->mask; }
+  const std::vector<unsigned char>& mask() const { return m_storage->mask; }
 
   /// @}
 
 private:
   std::size_t node_index(std::size_t i, std::size_t j, std::size_t k) const
   {
-    return i + stride_y_ * j + stride_z_ * k;
+    return i + m_stride_y * j + m_stride_z * k;
   }
 
   struct Storage {
@@ -256,14 +261,16 @@ private:
     std::vector<unsigned char> mask;
   };
 
-  std::shared_ptr<const Storage> storage_;
-  Dimensions n_ = {{0, 0, 0}};
-  // The hot path reads only these raw pointers into the shared storage (which the shared
-  // pointer keeps alive in every copy).
-  const double* x_[3] = {nullptr, nullptr, nullptr};
-  const float* v_ = nullptr;
-  const unsigned char* m_ = nullptr;
-  std::size_t stride_y_ = 0, stride_z_ = 0;
+  std::shared_ptr<const Storage> m_storage;
+  Dimensions m_dimensions = {{0, 0, 0}};
+  // The hot path reads only these: the box (the first and last coordinates; empty, +inf..-inf,
+  // without nodes) and raw pointers into the shared storage (which the shared pointer keeps
+  // alive in every copy).
+  double m_lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, m_hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  const double* m_coordinate_data[3] = {nullptr, nullptr, nullptr};
+  const float* m_value_data = nullptr;
+  const unsigned char* m_mask_data = nullptr;
+  std::size_t m_stride_y = 0, m_stride_z = 0;
 };
 
 } // namespace Flow_aligned_surfaces

@@ -12,6 +12,7 @@
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Origin.h>
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
@@ -92,6 +93,18 @@ public:
   /// \name Creation
   /// @{
 
+  /// creates an empty field: no node, `std::nullopt` everywhere, `bbox()` the empty `Bbox_3()`.
+  /// It is what a reader such as `IO::read_VTK_flow_field()` fills.
+  Regular_grid_flow_field_3() : m_origin(ORIGIN), m_spacing(NULL_VECTOR), m_dimensions{{0, 0, 0}}
+  {
+    // The empty box +inf..-inf, which no point (not even a NaN) is in.
+    for (int a = 0; a < 3; ++a) {
+      m_lo[a] = std::numeric_limits<double>::infinity();
+      m_hi[a] = -std::numeric_limits<double>::infinity();
+      m_h[a] = m_inv_h[a] = 0.;
+    }
+  }
+
   /// creates the field from its node values.
   ///
   /// \param origin the position of node `(0, 0, 0)`, the lower corner of the domain
@@ -140,17 +153,17 @@ public:
 private:
   Regular_grid_flow_field_3(const Point_3& origin, const Vector_3& spacing, const Dimensions& dimensions,
                             std::vector<float> values, std::vector<unsigned char> mask, bool values_checked)
-      : origin_(origin), spacing_(spacing), n_(dimensions)
+      : m_origin(origin), m_spacing(spacing), m_dimensions(dimensions)
   {
     const std::size_t nodes = checked_number_of_nodes(origin, spacing, dimensions);
     internal::check_grid_node_values("Regular_grid_flow_field_3", dimensions, nodes, values, mask,
                                      values_checked);
 
-    values_ = std::make_shared<const std::vector<float>>(std::move(values));
-    v_ = values_->data();
+    m_values = std::make_shared<const std::vector<float>>(std::move(values));
+    m_value_data = m_values->data();
     if (!mask.empty()) {
-      mask_ = std::make_shared<const std::vector<unsigned char>>(std::move(mask));
-      m_ = mask_->data();
+      m_mask = std::make_shared<const std::vector<unsigned char>>(std::move(mask));
+      m_mask_data = m_mask->data();
     }
 
     const double o[3] = {CGAL::to_double(origin.x()), CGAL::to_double(origin.y()),
@@ -158,13 +171,13 @@ private:
     const double h[3] = {CGAL::to_double(spacing.x()), CGAL::to_double(spacing.y()),
                          CGAL::to_double(spacing.z())};
     for (int a = 0; a < 3; ++a) {
-      lo_[a] = o[a];
-      h_[a] = h[a];
-      hi_[a] = node_coordinate(o[a], h[a], n_[a] - 1);
-      inv_h_[a] = 1. / h[a];
+      m_lo[a] = o[a];
+      m_h[a] = h[a];
+      m_hi[a] = node_coordinate(o[a], h[a], m_dimensions[a] - 1);
+      m_inv_h[a] = 1. / h[a];
     }
-    stride_y_ = n_[0];
-    stride_z_ = n_[0] * n_[1];
+    m_stride_y = m_dimensions[0];
+    m_stride_z = m_dimensions[0] * m_dimensions[1];
   }
 
 public:
@@ -179,30 +192,32 @@ public:
     const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     // Written so that NaN coordinates fail too.  The box test is done in world coordinates so
     // that it agrees exactly with `bbox()`.
-    if (!(x[0] >= lo_[0] && x[0] <= hi_[0] && x[1] >= lo_[1] && x[1] <= hi_[1] && x[2] >= lo_[2] &&
-          x[2] <= hi_[2]))
+    if (!(x[0] >= m_lo[0] && x[0] <= m_hi[0] && x[1] >= m_lo[1] && x[1] <= m_hi[1] && x[2] >= m_lo[2] &&
+          x[2] <= m_hi[2]))
       return std::nullopt;
 
     std::size_t c[3];
     double f[3], g[3];
     for (int a = 0; a < 3; ++a) {
-      const double t = (x[a] - lo_[a]) * inv_h_[a]; // >= 0, so truncation is floor
+      const double t = (x[a] - m_lo[a]) * m_inv_h[a]; // >= 0, so truncation is floor
       // The upper boundary belongs to the last cell; rounding in t can only overshoot by ulps,
       // which the clamp on f absorbs.
-      c[a] = (std::min)(static_cast<std::size_t>(t), n_[a] - 2);
+      c[a] = (std::min)(static_cast<std::size_t>(t), m_dimensions[a] - 2);
       f[a] = (std::min)(t - static_cast<double>(c[a]), 1.);
       g[a] = 1. - f[a];
     }
-    if (interpolation_ == Grid_interpolation::TRICUBIC) {
-      const internal::Cubic_axis_stencil stencil[3] = {internal::cubic_axis_stencil(c[0], f[0], n_[0]),
-                                                       internal::cubic_axis_stencil(c[1], f[1], n_[1]),
-                                                       internal::cubic_axis_stencil(c[2], f[2], n_[2])};
+    if (m_interpolation == Grid_interpolation::TRICUBIC) {
+      const internal::Cubic_axis_stencil stencil[3] = {
+          internal::cubic_axis_stencil(c[0], f[0], m_dimensions[0]),
+          internal::cubic_axis_stencil(c[1], f[1], m_dimensions[1]),
+          internal::cubic_axis_stencil(c[2], f[2], m_dimensions[2])};
       double r[3];
-      if (internal::masked_tricubic_blend(v_, m_, stride_y_, stride_z_, stencil, r))
+      if (internal::masked_tricubic_blend(m_value_data, m_mask_data, m_stride_y, m_stride_z, stencil, r))
         return Vector_3(FT(r[0]), FT(r[1]), FT(r[2]));
     }
-    return internal::masked_trilinear_vector<Vector_3, FT>(v_, m_, c[0] + stride_y_ * c[1] + stride_z_ * c[2],
-                                                           stride_y_, stride_z_, f, g);
+    return internal::masked_trilinear_vector<Vector_3, FT>(m_value_data, m_mask_data,
+                                                           c[0] + m_stride_y * c[1] + m_stride_z * c[2],
+                                                           m_stride_y, m_stride_z, f, g);
   }
 
   /// @}
@@ -212,13 +227,13 @@ public:
 
   /// the interpolation of the node values, `Grid_interpolation::TRILINEAR` unless this field
   /// was made by `with_interpolation()`
-  Grid_interpolation interpolation() const { return interpolation_; }
+  Grid_interpolation interpolation() const { return m_interpolation; }
 
   /// returns this field with the interpolation `interpolation`: a copy sharing the node arrays
   Regular_grid_flow_field_3 with_interpolation(Grid_interpolation interpolation) const
   {
     Regular_grid_flow_field_3 r(*this);
-    r.interpolation_ = interpolation;
+    r.m_interpolation = interpolation;
     return r;
   }
 
@@ -228,23 +243,23 @@ public:
   /// @{
 
   /// the numbers of nodes `{nx, ny, nz}`
-  const Dimensions& dimensions() const { return n_; }
+  const Dimensions& dimensions() const { return m_dimensions; }
   /// the total number of nodes `nx·ny·nz`
-  std::size_t number_of_nodes() const { return n_[0] * n_[1] * n_[2]; }
+  std::size_t number_of_nodes() const { return m_dimensions[0] * m_dimensions[1] * m_dimensions[2]; }
   /// the position of node `(0, 0, 0)`
-  const Point_3& origin() const { return origin_; }
+  const Point_3& origin() const { return m_origin; }
   /// the node spacings `(hx, hy, hz)`
-  const Vector_3& spacing() const { return spacing_; }
+  const Vector_3& spacing() const { return m_spacing; }
   /// the closed box on which the field is defined (before the mask is applied)
-  Bbox_3 bbox() const { return Bbox_3(lo_[0], lo_[1], lo_[2], hi_[0], hi_[1], hi_[2]); }
+  Bbox_3 bbox() const { return Bbox_3(m_lo[0], m_lo[1], m_lo[2], m_hi[0], m_hi[1], m_hi[2]); }
 
   /// the position of node `(i, j, k)`
   /// \pre `i < nx`, `j < ny`, `k < nz`
   Point_3 node_point(std::size_t i, std::size_t j, std::size_t k) const
   {
-    CGAL_precondition(i < n_[0] && j < n_[1] && k < n_[2]);
-    return Point_3(FT(node_coordinate(lo_[0], h_[0], i)), FT(node_coordinate(lo_[1], h_[1], j)),
-                   FT(node_coordinate(lo_[2], h_[2], k)));
+    CGAL_precondition(i < m_dimensions[0] && j < m_dimensions[1] && k < m_dimensions[2]);
+    return Point_3(FT(node_coordinate(m_lo[0], m_h[0], i)), FT(node_coordinate(m_lo[1], m_h[1], j)),
+                   FT(node_coordinate(m_lo[2], m_h[2], k)));
   }
 
   /// the velocity stored at node `(i, j, k)` (zero at a solid node whose given value was not
@@ -252,30 +267,34 @@ public:
   /// \pre `i < nx`, `j < ny`, `k < nz`
   Vector_3 node_value(std::size_t i, std::size_t j, std::size_t k) const
   {
-    CGAL_precondition(i < n_[0] && j < n_[1] && k < n_[2]);
-    const float* c = v_ + 3 * node_index(i, j, k);
+    CGAL_precondition(i < m_dimensions[0] && j < m_dimensions[1] && k < m_dimensions[2]);
+    const float* c = m_value_data + 3 * node_index(i, j, k);
     return Vector_3(FT(c[0]), FT(c[1]), FT(c[2]));
   }
 
   /// whether the field has a node mask
-  bool has_mask() const { return m_ != nullptr; }
+  bool has_mask() const { return m_mask_data != nullptr; }
 
   /// whether node `(i, j, k)` is fluid (always `true` without a mask)
   /// \pre `i < nx`, `j < ny`, `k < nz`
   bool is_fluid(std::size_t i, std::size_t j, std::size_t k) const
   {
-    CGAL_precondition(i < n_[0] && j < n_[1] && k < n_[2]);
-    return m_ == nullptr || m_[node_index(i, j, k)] != 0;
+    CGAL_precondition(i < m_dimensions[0] && j < m_dimensions[1] && k < m_dimensions[2]);
+    return m_mask_data == nullptr || m_mask_data[node_index(i, j, k)] != 0;
   }
 
   /// the `3·nx·ny·nz` stored velocity components, in node order
-  const std::vector<float>& values() const { return *values_; }
+  const std::vector<float>& values() const
+  {
+    static const std::vector<float> no_values;
+    return m_values ? *m_values : no_values;
+  }
 
   /// the `nx·ny·nz` mask flags, or an empty vector if the field has no mask
   const std::vector<unsigned char>& mask() const
   {
     static const std::vector<unsigned char> no_mask;
-    return mask_ ? *mask_ : no_mask;
+    return m_mask ? *m_mask : no_mask;
   }
 
   /// @}
@@ -338,7 +357,7 @@ private:
 
   std::size_t node_index(std::size_t i, std::size_t j, std::size_t k) const
   {
-    return i + stride_y_ * j + stride_z_ * k;
+    return i + m_stride_y * j + m_stride_z * k;
   }
 
   // Validates the geometry and returns nx·ny·nz, guaranteed to fit with the factor 3 of the
@@ -373,18 +392,18 @@ private:
   }
 
   // The kernel objects, as given, for the accessors.
-  Point_3 origin_;
-  Vector_3 spacing_;
-  Dimensions n_;
-  std::shared_ptr<const std::vector<float>> values_;
-  std::shared_ptr<const std::vector<unsigned char>> mask_;
+  Point_3 m_origin;
+  Vector_3 m_spacing;
+  Dimensions m_dimensions;
+  std::shared_ptr<const std::vector<float>> m_values;
+  std::shared_ptr<const std::vector<unsigned char>> m_mask;
   // The hot path reads only these: doubles and raw pointers into the shared arrays (which the
   // shared pointers keep alive in every copy).
-  double lo_[3], hi_[3], h_[3], inv_h_[3];
-  std::size_t stride_y_ = 0, stride_z_ = 0;
-  Grid_interpolation interpolation_ = Grid_interpolation::TRILINEAR;
-  const float* v_ = nullptr;
-  const unsigned char* m_ = nullptr;
+  double m_lo[3], m_hi[3], m_h[3], m_inv_h[3];
+  std::size_t m_stride_y = 0, m_stride_z = 0;
+  Grid_interpolation m_interpolation = Grid_interpolation::TRILINEAR;
+  const float* m_value_data = nullptr;
+  const unsigned char* m_mask_data = nullptr;
 };
 
 /// \ingroup PkgFlowAlignedSurfacesFlows

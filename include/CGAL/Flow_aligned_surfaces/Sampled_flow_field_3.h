@@ -61,9 +61,13 @@ public:
   /// \name Creation
   /// @{
 
+  /// holds an empty `Regular_grid` (`std::nullopt` everywhere), what
+  /// `IO::read_flow_field()` fills.
+  Sampled_flow_field_3() {}
+
   /// holds `field`, one of `Regular_grid`, `Rectilinear_grid`, `Unstructured_grid`.
   template <typename Field>
-  Sampled_flow_field_3(Field field) : field_(std::move(field))
+  Sampled_flow_field_3(Field field) : m_field(std::move(field))
   {
   }
   /// @}
@@ -74,7 +78,7 @@ public:
   /// the velocity at `p` of the field held, or `std::nullopt` outside its domain.
   std::optional<Vector_3> operator()(const Point_3& p) const
   {
-    return std::visit([&p](const auto& f) { return f(p); }, field_);
+    return std::visit([&p](const auto& f) { return f(p); }, m_field);
   }
   /// @}
 
@@ -84,20 +88,20 @@ public:
   /// the bounding box of the field's domain
   Bbox_3 bbox() const
   {
-    return std::visit([](const auto& f) { return f.bbox(); }, field_);
+    return std::visit([](const auto& f) { return f.bbox(); }, m_field);
   }
   /// the field held, or null if it is not a `Field`
   template <typename Field>
   const Field* get_if() const
   {
-    return std::get_if<Field>(&field_);
+    return std::get_if<Field>(&m_field);
   }
   /// the field held
-  const Variant& variant() const { return field_; }
+  const Variant& variant() const { return m_field; }
   /// @}
 
 private:
-  Variant field_;
+  Variant m_field;
 };
 
 } // namespace Flow_aligned_surfaces

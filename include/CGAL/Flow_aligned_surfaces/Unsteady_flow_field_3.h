@@ -59,6 +59,10 @@ public:
   /// \name Creation
   /// @{
 
+  /// creates an empty series: no step, `std::nullopt` at every time.  It is what
+  /// `IO::read_PVD_flow_field()` fills.
+  Unsteady_flow_field_3() : m_storage(std::make_shared<const Storage>()) {}
+
   /// creates the series from its times and steps (pass `steps` with `std::move()` to avoid a
   /// copy).
   ///
@@ -93,7 +97,7 @@ public:
     auto s = std::make_shared<Storage>();
     s->times = std::move(times);
     s->steps = std::move(steps);
-    storage_ = std::move(s);
+    m_storage = std::move(s);
   }
 
   /// @}
@@ -108,25 +112,25 @@ public:
   template <typename Point_3>
   auto operator()(const Point_3& p, double t) const -> decltype(std::declval<const FlowField&>()(p))
   {
-    const std::vector<double>& times = storage_->times;
-    if (!(t >= times.front() && t <= times.back()))
+    const std::vector<double>& times = m_storage->times;
+    if (times.empty() || !(t >= times.front() && t <= times.back()))
       return std::nullopt;
     // The first step after t; t = times.back() is the last step's own time.
     const std::size_t j =
         static_cast<std::size_t>(std::upper_bound(times.begin(), times.end(), t) - times.begin());
     if (j == times.size() || times[j - 1] == t)
-      return storage_->steps[j - 1](p);
+      return m_storage->steps[j - 1](p);
     const std::size_t i = j - 1;
     const double s = (t - times[i]) / (times[j] - times[i]);
     // s is in (0, 1) here, but may round to 0 or 1 for t within an ulp of a step's time.
     if (s <= 0.)
-      return storage_->steps[i](p);
+      return m_storage->steps[i](p);
     if (s >= 1.)
-      return storage_->steps[j](p);
-    const auto a = storage_->steps[i](p);
+      return m_storage->steps[j](p);
+    const auto a = m_storage->steps[i](p);
     if (!a)
       return std::nullopt;
-    const auto b = storage_->steps[j](p);
+    const auto b = m_storage->steps[j](p);
     if (!b)
       return std::nullopt;
     return (1. - s) * *a + s * *b;
@@ -138,25 +142,35 @@ public:
   /// @{
 
   /// the number of steps
-  std::size_t number_of_steps() const { return storage_->times.size(); }
+  std::size_t number_of_steps() const { return m_storage->times.size(); }
   /// the time of step `i`
   /// \pre `i < number_of_steps()`
   double time(std::size_t i) const
   {
     CGAL_precondition(i < number_of_steps());
-    return storage_->times[i];
+    return m_storage->times[i];
   }
   /// step `i`
   /// \pre `i < number_of_steps()`
   const FlowField& step(std::size_t i) const
   {
     CGAL_precondition(i < number_of_steps());
-    return storage_->steps[i];
+    return m_storage->steps[i];
   }
   /// the time of the first step
-  double start_time() const { return storage_->times.front(); }
+  /// \pre `number_of_steps() > 0`
+  double start_time() const
+  {
+    CGAL_precondition(number_of_steps() > 0);
+    return m_storage->times.front();
+  }
   /// the time of the last step
-  double end_time() const { return storage_->times.back(); }
+  /// \pre `number_of_steps() > 0`
+  double end_time() const
+  {
+    CGAL_precondition(number_of_steps() > 0);
+    return m_storage->times.back();
+  }
 
   /// @}
 
@@ -165,7 +179,7 @@ private:
     std::vector<double> times;
     std::vector<FlowField> steps;
   };
-  std::shared_ptr<const Storage> storage_;
+  std::shared_ptr<const Storage> m_storage;
 };
 
 } // namespace Flow_aligned_surfaces

@@ -13,7 +13,6 @@
 #include <exception>
 #include <fstream>
 #include <iostream>
-#include <optional>
 #include <string>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -44,10 +43,10 @@ int main(int argc, char** argv)
     std::ofstream(file, std::ios::binary) << "NRRD0004\ntype: float\ndimension: 4\nsizes: 3 2 2 2\n"
                                              "endian: little\nencoding: gzip\n\n"
                                           << gz;
-    std::optional<FAS::Regular_grid_flow_field_3<K>> grid;
+    FAS::Regular_grid_flow_field_3<K> grid;
     std::string error;
     if (!FAS::IO::read_NRRD_flow_field(file, grid, CGAL::parameters::default_values(), &error) ||
-        grid->node_value(1, 0, 1) != Vector(1, 0, 1)) {
+        grid.node_value(1, 0, 1) != Vector(1, 0, 1)) {
       std::cerr << "consumer: the gzip NRRD file was not read right: " << error << "\n";
       return 3;
     }

@@ -28,7 +28,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <string>
 
 typedef CGAL::Simple_cartesian<double> K;
@@ -37,12 +36,12 @@ namespace FAS = CGAL::Flow_aligned_surfaces;
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   const std::string file = fuzz_input_file(data, size, FAS_FUZZ_EXTENSION);
-  std::optional<FAS::Regular_grid_flow_field_3<K>> field;
+  FAS::Regular_grid_flow_field_3<K> field;
   std::string error;
   if (FAS::IO::FAS_FUZZ_READ(file, field, CGAL::parameters::default_values(), &error)) {
     // A field read must answer at its own nodes.
-    const auto n = field->dimensions();
-    (void)(*field)(field->node_point(n[0] / 2, n[1] / 2, n[2] / 2));
+    const auto n = field.dimensions();
+    (void)field(field.node_point(n[0] / 2, n[1] / 2, n[2] / 2));
   }
   else if (error.empty())
     __builtin_trap(); // a failure must say why

@@ -16,7 +16,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -48,33 +47,33 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string file = fuzz_input_file(data, size, ".vti");
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   std::string error;
-  std::optional<Cells> cells;
+  Cells cells;
   bool read = FAS::IO::read_VTK_XML_flow_field(file, cells, CGAL::parameters::default_values(), &error);
   check(read, error);
   if (read) // a field read must answer at one of its points
-    (void)(*cells)(K::Point_3(cells->points()[0], cells->points()[1], cells->points()[2]));
+    (void)cells(K::Point_3(cells.points()[0], cells.points()[1], cells.points()[2]));
   if (bytes.find("ImageData") != std::string_view::npos) {
-    std::optional<FAS::Regular_grid_flow_field_3<K>> grid;
+    FAS::Regular_grid_flow_field_3<K> grid;
     error.clear();
     read = FAS::IO::read_VTK_XML_flow_field(
         file, grid, FAS::parameters::array_name("velocity", FAS::parameters::mask_array_name("inside")),
         &error);
     check(read, error);
     if (read) {
-      const auto n = grid->dimensions();
-      (void)(*grid)(grid->node_point(n[0] / 2, n[1] / 2, n[2] / 2));
+      const auto n = grid.dimensions();
+      (void)grid(grid.node_point(n[0] / 2, n[1] / 2, n[2] / 2));
     }
   }
   const std::size_t separator = bytes.find("\n--DATA--\n");
   if (separator != std::string_view::npos) {
     const std::string pvd = fuzz_folder() + "/input.pvd";
     fuzz_write(pvd, bytes.substr(0, separator + 1));
-    std::optional<FAS::Unsteady_flow_field_3<Cells>> series;
+    FAS::Unsteady_flow_field_3<Cells> series;
     error.clear();
     read = FAS::IO::read_PVD_flow_field(pvd, series, CGAL::parameters::default_values(), &error);
     check(read, error);
     if (read)
-      (void)(*series)(K::Point_3(0., 0., 0.), series->start_time());
+      (void)series(K::Point_3(0., 0., 0.), series.start_time());
   }
   return 0;
 }

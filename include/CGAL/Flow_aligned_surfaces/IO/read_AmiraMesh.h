@@ -138,16 +138,16 @@ private:
       Token t;
       t.offset = in.pos;
       t.line = in.line;
-      if (in.at_end() || header_done_)
+      if (in.at_end() || m_header_done)
         return t;
       const std::string_view b = in.bytes();
       const char c = b[in.pos];
       if (c == '#') {
         const std::string comment = Text_cursor::lower(in.read_line());
         if (comment.find("data section follows") != std::string::npos) {
-          header_done_ = true;
-          data_start_ = in.pos;
-          data_line_ = in.line;
+          m_header_done = true;
+          m_data_start = in.pos;
+          m_data_line = in.line;
         }
         continue;
       }
@@ -203,14 +203,14 @@ private:
   Token peek()
   {
     const std::size_t p = in.pos, l = in.line;
-    const bool done = header_done_;
-    const std::size_t ds = data_start_, dl = data_line_;
+    const bool done = m_header_done;
+    const std::size_t ds = m_data_start, dl = m_data_line;
     Token t = next();
     in.pos = p;
     in.line = l;
-    header_done_ = done;
-    data_start_ = ds;
-    data_line_ = dl;
+    m_header_done = done;
+    m_data_start = ds;
+    m_data_line = dl;
     return t;
   }
 
@@ -259,9 +259,9 @@ private:
         break;
       if (t.kind == '@') {
         // No `# Data section follows` line: the data start at the first section marker.
-        header_done_ = true;
-        data_start_ = t.offset;
-        data_line_ = t.line;
+        m_header_done = true;
+        m_data_start = t.offset;
+        m_data_line = t.line;
         in.pos = t.offset;
         in.line = t.line;
         break;
@@ -283,7 +283,7 @@ private:
         declaration(t);
       }
     }
-    if (!header_done_)
+    if (!m_header_done)
       in.fail("the file has no data section (no '# Data section follows' line and no '@1' marker)");
   }
 
@@ -306,14 +306,14 @@ private:
         fail_at(name, "the define '" + std::string(name.text) + "' has too many elements");
       product *= s;
     }
-    locations_[std::string(name.text)] = product;
+    m_locations[std::string(name.text)] = product;
     if (name.text == "Lattice") {
       if (sizes.size() != 3)
         fail_at(name, "'define Lattice' has " + std::to_string(sizes.size()) +
                           " sizes; this reader reads 3D lattices (define Lattice nx ny nz)");
       for (int a = 0; a < 3; ++a)
         dimensions[a] = sizes[a];
-      lattice_ = name;
+      m_lattice = name;
       nodes = product;
     }
   }
@@ -335,16 +335,16 @@ private:
         --depth;
       else if (depth == 1 && entry_start && t.kind == 'w' && t.text == "BoundingBox") {
         for (int i = 0; i < 6; ++i)
-          bounding_box_[i] = real(next(), "the BoundingBox xmin xmax ymin ymax zmin zmax");
-        have_bounding_box_ = true;
-        bounding_box_token_ = t;
+          m_bounding_box[i] = real(next(), "the BoundingBox xmin xmax ymin ymax zmin zmax");
+        m_have_bounding_box = true;
+        m_bounding_box_token = t;
       }
       else if (depth == 1 && entry_start && t.kind == 'w' && t.text == "CoordType") {
         const Token v = next();
         if (v.kind != 's' && v.kind != 'w')
           fail_at(v, "found " + shown(v) + " where the CoordType (a quoted string) was expected");
-        coord_type_ = std::string(v.text);
-        coord_type_token_ = v;
+        m_coord_type = std::string(v.text);
+        m_coord_type_token = v;
       }
       const Token after = peek();
       entry_start = t.kind == ',' || t.kind == '{' || t.kind == '}' || after.line != t.line;
@@ -435,43 +435,44 @@ private:
   // The lattice and its uniform coordinates.
   void geometry()
   {
-    if (lattice_.kind == 0)
+    if (m_lattice.kind == 0)
       in.fail_file("the header has no 'define Lattice nx ny nz'; this reader reads uniform lattices");
     for (int a = 0; a < 3; ++a)
       if (dimensions[a] < 2)
-        fail_at(lattice_,
+        fail_at(m_lattice,
                 "define Lattice " + dimensions_string() +
                     ": a grid needs at least 2 nodes along each axis (empty, 1D and 2D lattices are not "
                     "supported)");
-    if (coord_type_token_.kind != 0 && coord_type_ != "uniform")
-      fail_at(coord_type_token_, "CoordType \"" + Flow_aligned_surfaces::IO::internal::printable(coord_type_) +
-                                     "\" is not supported; this reader reads uniform lattices "
-                                     "(CoordType \"uniform\")");
-    if (!have_bounding_box_)
+    if (m_coord_type_token.kind != 0 && m_coord_type != "uniform")
+      fail_at(m_coord_type_token, "CoordType \"" +
+                                      Flow_aligned_surfaces::IO::internal::printable(m_coord_type) +
+                                      "\" is not supported; this reader reads uniform lattices "
+                                      "(CoordType \"uniform\")");
+    if (!m_have_bounding_box)
       in.fail_file("the Parameters have no BoundingBox xmin xmax ymin ymax zmin zmax; the node positions are "
                    "unknown");
     for (int a = 0; a < 3; ++a) {
-      const double lo = bounding_box_[2 * a], hi = bounding_box_[2 * a + 1];
+      const double lo = m_bounding_box[2 * a], hi = m_bounding_box[2 * a + 1];
       origin[a] = lo;
       spacing[a] = (hi - lo) / static_cast<double>(dimensions[a] - 1);
       if (!(hi > lo) || !(spacing[a] > 0.) || !std::isfinite(spacing[a]))
-        fail_at(bounding_box_token_, "the BoundingBox gives [" + std::to_string(lo) + ", " +
-                                         std::to_string(hi) + "] along axis " + std::to_string(a) +
-                                         "; expected min < max (the first and the last node)");
+        fail_at(m_bounding_box_token, "the BoundingBox gives [" + std::to_string(lo) + ", " +
+                                          std::to_string(hi) + "] along axis " + std::to_string(a) +
+                                          "; expected min < max (the first and the last node)");
     }
   }
 
   // Pass 1 over the data: every `@N` section in turn, its size checked against the bytes left.
   void sections()
   {
-    in.pos = data_start_;
-    in.line = data_line_;
+    in.pos = m_data_start;
+    in.line = m_data_line;
     for (;;) {
       in.skip_space();
       if (in.at_end())
         break;
       // Lines mean nothing after binary data: no line is named then.
-      const std::size_t marker = in.pos, marker_line = after_binary_ ? 0 : in.line;
+      const std::size_t marker = in.pos, marker_line = m_after_binary ? 0 : in.line;
       const std::string_view l = in.read_line();
       std::size_t n = 0;
       const auto r = l.empty() ? std::from_chars_result{l.data(), std::errc::invalid_argument}
@@ -500,8 +501,8 @@ private:
 
   void section(AmiraMesh_data& d, std::size_t marker, std::size_t marker_line)
   {
-    const auto location = locations_.find(d.location);
-    if (location == locations_.end())
+    const auto location = m_locations.find(d.location);
+    if (location == m_locations.end())
       in.fail_at(d.declaration_offset, d.declaration_line,
                  "the data '" + d.array.name + "' is declared on '" + d.location + "', which has no define");
     d.array.tuples = location->second;
@@ -525,7 +526,7 @@ private:
                    what + " has " + std::to_string(d.compressed_size) + " compressed bytes but only " +
                        std::to_string(left) + " are left (truncated file or wrong size)");
       in.pos += d.compressed_size;
-      after_binary_ = true;
+      m_after_binary = true;
       return;
     }
     if (ascii) {
@@ -550,16 +551,16 @@ private:
                  what + " needs " + std::to_string(count * size) + " bytes but only " + std::to_string(left) +
                      " are left (truncated file or wrong sizes)");
     in.pos += count * size;
-    after_binary_ = true;
+    m_after_binary = true;
   }
 
-  std::map<std::string, std::size_t> locations_; // define name -> number of elements
-  Token lattice_, bounding_box_token_, coord_type_token_;
-  std::array<double, 6> bounding_box_ = {{0, 0, 0, 0, 0, 0}};
-  bool have_bounding_box_ = false;
-  std::string coord_type_;
-  bool header_done_ = false, after_binary_ = false;
-  std::size_t data_start_ = 0, data_line_ = 0;
+  std::map<std::string, std::size_t> m_locations; // define name -> number of elements
+  Token m_lattice, m_bounding_box_token, m_coord_type_token;
+  std::array<double, 6> m_bounding_box = {{0, 0, 0, 0, 0, 0}};
+  bool m_have_bounding_box = false;
+  std::string m_coord_type;
+  bool m_header_done = false, m_after_binary = false;
+  std::size_t m_data_start = 0, m_data_line = 0;
 };
 
 // Expands HxByteRLE data (a control byte c: c < 128 = the next byte c times; c ≥ 128 = the
@@ -680,30 +681,6 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
 /*!
 \ingroup PkgFlowAlignedSurfacesIO
 
-\brief Reads a velocity field on a uniform grid from an AmiraMesh file into an optional, for
-callers that have no field yet; same as the overload below otherwise.
-
-\param filename the file to read
-\param field receives the field on success; left untouched on failure
-\param np the named parameters of the overload below
-\param error if not null, receives the reason of a failure
-\returns `true` on success.
-*/
-template <class K, class NamedParameters = parameters::Default_named_parameters>
-bool read_AmiraMesh_flow_field(const std::string& filename,
-                               std::optional<Regular_grid_flow_field_3<K>>& field,
-                               const NamedParameters& np = CGAL::parameters::default_values(),
-                               std::string* error = nullptr)
-{
-  const Flow_aligned_surfaces::IO::internal::Array_names names = Flow_aligned_surfaces::IO::internal::array_names(np);
-  return Flow_aligned_surfaces::IO::internal::read_into("read_AmiraMesh_flow_field", filename, field, error, [&] {
-    return internal::read_AmiraMesh_grid<K>(filename, names.array, names.mask);
-  });
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
 \brief Reads a velocity field on a uniform grid from an AmiraMesh file (`.am`, Amira and Avizo).
 
 The first line is `# AmiraMesh BINARY-LITTLE-ENDIAN 2.1`, `# AmiraMesh 3D BINARY 2.0`
@@ -733,7 +710,8 @@ names the file, the line and/or byte, and what is wrong.
 \tparam NamedParameters a sequence of named parameters
 
 \param filename the file to read
-\param field receives the field on success; left untouched on failure
+\param field the field to fill, for instance a default-constructed (empty) one: assigned on
+       success, left untouched on failure
 \param np an optional sequence of named parameters among the ones listed below
 \param error if not null, receives the reason of a failure
 
@@ -760,8 +738,11 @@ bool read_AmiraMesh_flow_field(const std::string& filename, Regular_grid_flow_fi
                                const NamedParameters& np = CGAL::parameters::default_values(),
                                std::string* error = nullptr)
 {
-  return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular_grid_flow_field_3<K>>(
-      field, [&](auto& result) { return read_AmiraMesh_flow_field(filename, result, np, error); });
+  const Flow_aligned_surfaces::IO::internal::Array_names names =
+      Flow_aligned_surfaces::IO::internal::array_names(np);
+  return Flow_aligned_surfaces::IO::internal::read_into(
+      "read_AmiraMesh_flow_field", filename, field, error,
+      [&] { return internal::read_AmiraMesh_grid<K>(filename, names.array, names.mask); });
 }
 
 } // namespace IO

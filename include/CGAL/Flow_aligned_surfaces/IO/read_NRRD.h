@@ -473,29 +473,6 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
 /*!
 \ingroup PkgFlowAlignedSurfacesIO
 
-\brief Reads a velocity field on a uniform grid from a NRRD file into an optional, for callers
-that have no field yet; same as the overload below otherwise.
-
-\param filename the file to read
-\param field receives the field on success; left untouched on failure
-\param np the named parameters of the overload below
-\param error if not null, receives the reason of a failure
-\returns `true` on success.
-*/
-template <class K, class NamedParameters = parameters::Default_named_parameters>
-bool read_NRRD_flow_field(const std::string& filename, std::optional<Regular_grid_flow_field_3<K>>& field,
-                          const NamedParameters& np = CGAL::parameters::default_values(),
-                          std::string* error = nullptr)
-{
-  const Flow_aligned_surfaces::IO::internal::Array_names names = Flow_aligned_surfaces::IO::internal::array_names(np);
-  return Flow_aligned_surfaces::IO::internal::read_into("read_NRRD_flow_field", filename, field, error, [&] {
-    return internal::read_NRRD_grid<K>(filename, names.array, names.mask);
-  });
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
 \brief Reads a velocity field on a uniform grid from a NRRD file (`.nrrd`, or a `.nhdr` header
 with its data in another file), the way to read raw float32 files.
 
@@ -540,7 +517,8 @@ is wrong.
 \tparam NamedParameters a sequence of named parameters
 
 \param filename the file to read
-\param field receives the field on success; left untouched on failure
+\param field the field to fill, for instance a default-constructed (empty) one: assigned on
+       success, left untouched on failure
 \param np an optional sequence of named parameters among the ones listed below
 \param error if not null, receives the reason of a failure
 
@@ -567,8 +545,11 @@ bool read_NRRD_flow_field(const std::string& filename, Regular_grid_flow_field_3
                           const NamedParameters& np = CGAL::parameters::default_values(),
                           std::string* error = nullptr)
 {
-  return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular_grid_flow_field_3<K>>(
-      field, [&](auto& result) { return read_NRRD_flow_field(filename, result, np, error); });
+  const Flow_aligned_surfaces::IO::internal::Array_names names =
+      Flow_aligned_surfaces::IO::internal::array_names(np);
+  return Flow_aligned_surfaces::IO::internal::read_into("read_NRRD_flow_field", filename, field, error, [&] {
+    return internal::read_NRRD_grid<K>(filename, names.array, names.mask);
+  });
 }
 
 } // namespace IO

@@ -89,6 +89,17 @@ inline Flow_field_file_kind flow_field_file_kind(const std::string& filename, st
   return Flow_field_file_kind::UNKNOWN;
 }
 
+// Reads a `Field` with `read(Field&)` and assigns it to `field` on success only.
+template <class Field, class Sampled, class Read>
+bool read_as(Sampled& field, const Read& read)
+{
+  Field f;
+  if (!read(f))
+    return false;
+  field = std::move(f);
+  return true;
+}
+
 } // namespace internal
 /// \endcond
 
@@ -119,7 +130,8 @@ without it such a file gets a message saying so.  Time series (`.pvd`) are read 
 \tparam NamedParameters a sequence of named parameters
 
 \param filename the file to read
-\param field receives the field on success; left untouched on failure
+\param field the field to fill, for instance a default-constructed (empty) one: assigned on
+       success, left untouched on failure
 \param np an optional sequence of named parameters, passed on to the reader of the format:
 `array_name` and `mask_array_name` (see `read_VTK_flow_field()`)
 \param error if not null, receives the reason of a failure: the one of the reader of the
@@ -130,7 +142,7 @@ format, or, for a file of no supported format, a message naming the file and its
 \sa `Sampled_flow_field_3`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
-bool read_flow_field(const std::string& filename, std::optional<Sampled_flow_field_3<K>>& field,
+bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field,
                      const NamedParameters& np = CGAL::parameters::default_values(),
                      std::string* error = nullptr)
 {
@@ -141,27 +153,27 @@ bool read_flow_field(const std::string& filename, std::optional<Sampled_flow_fie
   std::string head;
   switch (internal::flow_field_file_kind(filename, head)) {
   case internal::Flow_field_file_kind::LEGACY_UNIFORM_GRID:
-    return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular>(
-        field, [&](std::optional<Regular>& f) { return read_VTK_flow_field(filename, f, np, error); });
+    return internal::read_as<Regular>(
+        field, [&](Regular& f) { return read_VTK_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::LEGACY_RECTILINEAR_GRID:
-    return Flow_aligned_surfaces::IO::internal::read_and_assign<Rectilinear>(
-        field, [&](std::optional<Rectilinear>& f) { return read_VTK_flow_field(filename, f, np, error); });
+    return internal::read_as<Rectilinear>(
+        field, [&](Rectilinear& f) { return read_VTK_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::LEGACY_CELLS:
-    return Flow_aligned_surfaces::IO::internal::read_and_assign<Cells>(
-        field, [&](std::optional<Cells>& f) { return read_VTK_flow_field(filename, f, np, error); });
+    return internal::read_as<Cells>(field,
+                                    [&](Cells& f) { return read_VTK_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::AMIRA_MESH:
-    return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular>(
-        field, [&](std::optional<Regular>& f) { return read_AmiraMesh_flow_field(filename, f, np, error); });
+    return internal::read_as<Regular>(
+        field, [&](Regular& f) { return read_AmiraMesh_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::NRRD_FILE:
-    return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular>(
-        field, [&](std::optional<Regular>& f) { return read_NRRD_flow_field(filename, f, np, error); });
+    return internal::read_as<Regular>(
+        field, [&](Regular& f) { return read_NRRD_flow_field(filename, f, np, error); });
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_VTK
   case internal::Flow_field_file_kind::XML_IMAGE_DATA:
-    return Flow_aligned_surfaces::IO::internal::read_and_assign<Regular>(
-        field, [&](std::optional<Regular>& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
+    return internal::read_as<Regular>(
+        field, [&](Regular& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::XML_CELLS:
-    return Flow_aligned_surfaces::IO::internal::read_and_assign<Cells>(
-        field, [&](std::optional<Cells>& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
+    return internal::read_as<Cells>(
+        field, [&](Cells& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
 #else
   case internal::Flow_field_file_kind::XML_IMAGE_DATA:
   case internal::Flow_field_file_kind::XML_CELLS:
@@ -185,21 +197,6 @@ bool read_flow_field(const std::string& filename, std::optional<Sampled_flow_fie
                "AmiraMesh file ('# AmiraMesh') or a NRRD file ('NRRD000x')";
   }
   return false;
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief Reads a velocity field from a file of any supported format; same as the overload
-above, for callers that have a field already (it is assigned only on success).
-*/
-template <class K, class NamedParameters = parameters::Default_named_parameters>
-bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field,
-                     const NamedParameters& np = CGAL::parameters::default_values(),
-                     std::string* error = nullptr)
-{
-  return Flow_aligned_surfaces::IO::internal::read_and_assign<Sampled_flow_field_3<K>>(
-      field, [&](auto& f) { return read_flow_field(filename, f, np, error); });
 }
 
 } // namespace IO

@@ -95,29 +95,29 @@ public:
         // The parsers read the file front to back: ask for read-ahead of all of it now.
         ::madvise(p, size, MADV_SEQUENTIAL);
         ::madvise(p, size, MADV_WILLNEED);
-        map_ = p;
-        size_ = size;
+        m_map = p;
+        m_size = size;
       }
     }
     if (fd >= 0)
       ::close(fd); // the mapping keeps the file
-    if (map_ != nullptr)
+    if (m_map != nullptr)
       return;
 #endif
-    copy_ = read_file_contents(filename, reader);
+    m_copy = read_file_contents(filename, reader);
   }
   File_contents(File_contents&& other) noexcept
-      : map_(std::exchange(other.map_, nullptr)), size_(std::exchange(other.size_, 0)),
-        copy_(std::move(other.copy_))
+      : m_map(std::exchange(other.m_map, nullptr)), m_size(std::exchange(other.m_size, 0)),
+        m_copy(std::move(other.m_copy))
   {
   }
   File_contents& operator=(File_contents&& other) noexcept
   {
     if (this != &other) {
       release();
-      map_ = std::exchange(other.map_, nullptr);
-      size_ = std::exchange(other.size_, 0);
-      copy_ = std::move(other.copy_);
+      m_map = std::exchange(other.m_map, nullptr);
+      m_size = std::exchange(other.m_size, 0);
+      m_copy = std::move(other.m_copy);
     }
     return *this;
   }
@@ -131,29 +131,29 @@ public:
   /// All the bytes of the file; valid while `*this` lives (and is not moved from).
   std::string_view view() const
   {
-    return map_ != nullptr ? std::string_view(static_cast<const char*>(map_), size_)
-                           : std::string_view(copy_);
+    return m_map != nullptr ? std::string_view(static_cast<const char*>(m_map), m_size)
+                            : std::string_view(m_copy);
   }
   /// Whether the bytes are a mapping of the file rather than a copy.
   bool is_mapped() const
   {
-    return map_ != nullptr;
+    return m_map != nullptr;
   }
 
 private:
   void release()
   {
 #if defined(CGAL_FLOW_ALIGNED_SURFACES_HAS_MMAP)
-    if (map_ != nullptr)
-      ::munmap(map_, size_);
+    if (m_map != nullptr)
+      ::munmap(m_map, m_size);
 #endif
-    map_ = nullptr;
-    size_ = 0;
+    m_map = nullptr;
+    m_size = 0;
   }
 
-  void* map_ = nullptr;
-  std::size_t size_ = 0;
-  std::string copy_;
+  void* m_map = nullptr;
+  std::size_t m_size = 0;
+  std::string m_copy;
 };
 
 /// A token shown in a message: at most 40 characters, non-printable bytes escaped as `\xNN`.

@@ -4,8 +4,7 @@
 // The frame that every public flow-field reader puts around its parser: the array names of
 // the named parameters (`array_name`, `mask_array_name`, each either given or not), the
 // translation of the internal `Read_error` (and of `std::bad_alloc`) into `false` + message
-// with the output untouched, and the `Field&` overload built on the `std::optional<Field>&`
-// one.
+// with the output untouched.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READER_SUPPORT_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READER_SUPPORT_H
@@ -64,15 +63,16 @@ Field construct_field(const Fail& fail, Args&&... args)
   }
 }
 
-/// Runs `read()` (which returns the field or throws `Read_error`) into `field`; on failure
-/// leaves `field` untouched, writes the reason to `*error` (if not null) and returns `false`.
-/// `reader` and `filename` name the message about a lack of memory.
+/// Runs `read()` (which returns the field or throws `Read_error`) and assigns its result to
+/// `field` (a field, or anything assignable from one); on failure leaves `field` untouched,
+/// writes the reason to `*error` (if not null) and returns `false`.  `reader` and `filename`
+/// name the message about a lack of memory.
 template <class Field, class Read>
-bool read_into(const std::string& reader, const std::string& filename, std::optional<Field>& field,
-               std::string* error, const Read& read)
+bool read_into(const std::string& reader, const std::string& filename, Field& field, std::string* error,
+               const Read& read)
 {
   try {
-    field.emplace(read());
+    field = read();
     return true;
   } catch (const Read_error& e) {
     if (error)
@@ -82,19 +82,6 @@ bool read_into(const std::string& reader, const std::string& filename, std::opti
       *error = reader + ": " + filename + ": not enough memory for the field";
   }
   return false;
-}
-
-/// The `Field&` overload of a reader from its `std::optional<Field>&` one, called as
-/// `read(result)` with a `std::optional<Field>`: `target` (a `Field`, or anything assignable
-/// from one) is assigned only on success.
-template <class Field, class Target, class Read_optional>
-bool read_and_assign(Target& target, const Read_optional& read)
-{
-  std::optional<Field> result;
-  if (!read(result))
-    return false;
-  target = std::move(*result);
-  return true;
 }
 
 } // namespace internal

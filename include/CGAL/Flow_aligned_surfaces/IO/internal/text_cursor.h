@@ -30,22 +30,22 @@ class Text_cursor {
 public:
   /// `reader` and `file` name the messages; `bytes` must outlive the cursor.
   Text_cursor(std::string reader, std::string file, std::string_view bytes)
-      : reader_(std::move(reader)), file_(std::move(file)), buf_(bytes)
+      : m_reader(std::move(reader)), m_file(std::move(file)), m_buffer(bytes)
   {
   }
 
   std::size_t pos = 0;  ///< the byte offset of the next byte to read
   std::size_t line = 1; ///< the line of `pos`, 0 once in binary data (no line is named then)
 
-  std::string_view bytes() const { return buf_; }
-  const std::string& file() const { return file_; }
-  bool at_end() const { return pos >= buf_.size(); }
-  std::size_t left() const { return pos < buf_.size() ? buf_.size() - pos : 0; }
+  std::string_view bytes() const { return m_buffer; }
+  const std::string& file() const { return m_file; }
+  bool at_end() const { return pos >= m_buffer.size(); }
+  std::size_t left() const { return pos < m_buffer.size() ? m_buffer.size() - pos : 0; }
 
   [[noreturn]] void fail_at(std::size_t offset, std::size_t at_line, const std::string& what) const
   {
     std::ostringstream msg;
-    msg << reader_ << ": " << file_ << ": ";
+    msg << m_reader << ": " << m_file << ": ";
     if (at_line != 0)
       msg << "line " << at_line << ", ";
     msg << "byte " << offset << ": " << what;
@@ -54,7 +54,7 @@ public:
   [[noreturn]] void fail(const std::string& what) const { fail_at(pos, line, what); }
   [[noreturn]] void fail_file(const std::string& what) const
   {
-    throw Read_error(reader_ + ": " + file_ + ": " + what);
+    throw Read_error(m_reader + ": " + m_file + ": " + what);
   }
 
   static bool is_space(char c)
@@ -66,10 +66,10 @@ public:
   std::string_view read_line()
   {
     const std::size_t start = pos;
-    while (pos < buf_.size() && buf_[pos] != '\n')
+    while (pos < m_buffer.size() && m_buffer[pos] != '\n')
       ++pos;
-    std::string_view l = buf_.substr(start, pos - start);
-    if (pos < buf_.size()) {
+    std::string_view l = m_buffer.substr(start, pos - start);
+    if (pos < m_buffer.size()) {
       ++pos;
       ++line;
     }
@@ -81,8 +81,8 @@ public:
   /// Skips white space, new lines included.
   void skip_space()
   {
-    while (pos < buf_.size() && is_space(buf_[pos])) {
-      if (buf_[pos] == '\n')
+    while (pos < m_buffer.size() && is_space(m_buffer[pos])) {
+      if (m_buffer[pos] == '\n')
         ++line;
       ++pos;
     }
@@ -91,7 +91,7 @@ public:
   /// Skips spaces and tabs (and `\r`), not the end of the line.
   void skip_blanks()
   {
-    while (pos < buf_.size() && (buf_[pos] == ' ' || buf_[pos] == '\t' || buf_[pos] == '\r'))
+    while (pos < m_buffer.size() && (m_buffer[pos] == ' ' || m_buffer[pos] == '\t' || m_buffer[pos] == '\r'))
       ++pos;
   }
 
@@ -100,9 +100,9 @@ public:
   {
     skip_space();
     const std::size_t start = pos;
-    while (pos < buf_.size() && !is_space(buf_[pos]))
+    while (pos < m_buffer.size() && !is_space(m_buffer[pos]))
       ++pos;
-    return buf_.substr(start, pos - start);
+    return m_buffer.substr(start, pos - start);
   }
 
   /// The next token as `token()` would return it, without moving.
@@ -119,9 +119,9 @@ public:
   bool rest_of_line_blank() const
   {
     std::size_t p = pos;
-    while (p < buf_.size() && (buf_[p] == ' ' || buf_[p] == '\t' || buf_[p] == '\r'))
+    while (p < m_buffer.size() && (m_buffer[p] == ' ' || m_buffer[p] == '\t' || m_buffer[p] == '\r'))
       ++p;
-    return p >= buf_.size() || buf_[p] == '\n';
+    return p >= m_buffer.size() || m_buffer[p] == '\n';
   }
 
   /// Parses `t` as a number; a value out of the range of `double` becomes an infinity.
@@ -180,8 +180,8 @@ public:
   }
 
 private:
-  std::string reader_, file_;
-  std::string_view buf_;
+  std::string m_reader, m_file;
+  std::string_view m_buffer;
 };
 
 } // namespace internal

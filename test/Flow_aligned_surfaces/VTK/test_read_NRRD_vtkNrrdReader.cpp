@@ -25,7 +25,7 @@ TEST(ReadNRRDAgainstVTK, SkippedWithoutVTKIOImage)
 
 #include <CGAL/Flow_aligned_surfaces/IO/read_NRRD.h>
 
-#include "grid_reader_test_helpers.h"
+#include "../grid_reader_test_helpers.h"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
