@@ -29,18 +29,18 @@ int main(int argc, char* argv[])
   }
 
   // The field holds whichever grid the file has (uniform, rectilinear, or cells).
-  std::optional<FAS::Sampled_flow_field_3<Kernel>> field;
+  FAS::Sampled_flow_field_3<Kernel> field;
   std::string error;
   if (!FAS::IO::read_flow_field(filename, field, CGAL::parameters::default_values(), &error)) {
     std::cerr << error << std::endl; // names the file, the place in it and what is wrong
     return 1;
   }
 
-  const CGAL::Bbox_3 box = field->bbox();
+  const CGAL::Bbox_3 box = field.bbox();
   const Point_3 center((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
                        (box.zmin() + box.zmax()) / 2);
   std::cout << filename << ": domain " << box << std::endl;
-  if (const std::optional<Vector_3> v = (*field)(center))
+  if (const std::optional<Vector_3> v = field(center))
     std::cout << "velocity at the center " << center << ": " << *v << std::endl;
   else
     std::cout << "the center " << center << " is outside the domain" << std::endl;
