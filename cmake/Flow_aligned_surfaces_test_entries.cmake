@@ -7,7 +7,7 @@
 # names the test case.
 #
 # The suites are read from the file (`TEST(Suite, ...)`, `TEST_F`, `TYPED_TEST`, ...); a suite
-# used in two files would run twice, so that is refused at configure time.  The entry
+# used in two files of one executable would run twice, so that is refused at configure time.  The entry
 # `<target>_every_test_case_has_an_entry` fails when the executable holds a test case that no
 # entry's filter selects (a suite defined by a macro the pattern does not see).
 function(fas_add_test_file_entries)
@@ -27,12 +27,12 @@ function(fas_add_test_file_entries)
     endif()
     set(filter "")
     foreach(suite IN LISTS suites)
-      get_property(owner GLOBAL PROPERTY FAS_TEST_SUITE_${suite})
+      get_property(owner GLOBAL PROPERTY FAS_TEST_SUITE_${ARG_EXECUTABLE}_${suite})
       if(owner)
         message(FATAL_ERROR "GoogleTest suite ${suite} is defined in ${owner} and in ${source}: "
                             "give it a name of its own, or its test cases run in both entries")
       endif()
-      set_property(GLOBAL PROPERTY FAS_TEST_SUITE_${suite} "${source}")
+      set_property(GLOBAL PROPERTY FAS_TEST_SUITE_${ARG_EXECUTABLE}_${suite} "${source}")
       # Typed suites are named Suite/0, Suite/1, ...
       list(APPEND filter "${suite}.*" "${suite}/*")
     endforeach()
