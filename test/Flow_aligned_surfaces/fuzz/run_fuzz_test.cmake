@@ -3,7 +3,7 @@
 # the test data files of its format in SEED_DIRS), so that a run does not depend on what other
 # tests or users left in a temporary folder.  Fails on a crash,
 # a sanitizer report or a timeout, naming the input saved in <WORK_DIR>/artifacts/.  Prints
-# FUZZ_SKIPPED (a skip for ctest) when clang++ or libFuzzer is missing.
+# FUZZ_SKIPPED (a skip for ctest) when clang++ or libFuzzer is missing, or fails under FUZZ_REQUIRED.
 # Run as: cmake -DFUZZ_SOURCE_DIR=... -DWORK_DIR=... -P run_fuzz_test.cmake
 # Optional: -DFUZZ_CXX_COMPILER=clang++, -DSEED_DIRS="dir;dir",
 #           -DFUZZ_RUNS=10000 (fuzz_read_VTK_XML: a quarter), -DFUZZ_MAX_TIME=20 (seconds per target), -DFUZZ_JOBS=2,
