@@ -84,7 +84,7 @@ inline std::optional<FAS::Sampled_flow_field_3<Kernel>> read_data_field(const st
   FAS::Sampled_flow_field_3<Kernel> field;
   std::string error;
   const bool read = array.empty()
-                        ? FAS::IO::read_flow_field(file, field, CGAL::parameters::default_values(), &error)
+                        ? FAS::IO::read_flow_field(file, field, &error)
                         : FAS::IO::read_flow_field(file, field, FAS::parameters::array_name(array), &error);
   if (!read) {
     std::cerr << "error: " << error << "\n";

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -138,6 +139,46 @@ TEST(FlowTextureIO, OBJHasOneTextureCoordinatePerVertexAndItsMaterial)
   const std::string mtl = read_bytes(temporary_file("flow_texture_io_", "patch.mtl"));
   EXPECT_NE(mtl.find("newmtl " + usemtl), std::string::npos) << mtl;
   EXPECT_NE(mtl.find("map_Kd flow_texture_io_patch.png"), std::string::npos) << mtl;
+}
+
+// The MTL and the PNG beside the OBJ are files the caller did not name: a user's file of that name
+// is kept and nothing is written; the files of an earlier call for the same OBJ are replaced.
+TEST(FlowTextureIO, OBJKeepsAUsersFileBesideItAndReplacesItsOwn)
+{
+  Mesh tm;
+  const auto uv = textured_patch(tm);
+  const FAS::Texture_image texture = FAS::make_arrow_texture(16, 16, 2, 2);
+  const std::string obj = temporary_file("flow_texture_io_", "keep.obj");
+  const std::string mtl = temporary_file("flow_texture_io_", "keep.mtl");
+  const std::string png = temporary_file("flow_texture_io_", "keep.png");
+  std::filesystem::remove(obj);
+  std::filesystem::remove(mtl);
+  write_bytes(png, "the user's picture");
+  std::string error;
+  EXPECT_FALSE(FAS::IO::write_textured_OBJ(obj, tm, uv, texture, CGAL::parameters::default_values(), &error));
+  EXPECT_NE(error.find("flow_texture_io_keep.png exists"), std::string::npos) << error;
+  EXPECT_NE(error.find("nothing was written"), std::string::npos) << error;
+  EXPECT_EQ(read_bytes(png), "the user's picture");
+  EXPECT_FALSE(std::filesystem::exists(obj));
+  EXPECT_FALSE(std::filesystem::exists(mtl));
+
+  // A material file that is not this OBJ's is kept too.
+  std::filesystem::remove(png);
+  write_bytes(mtl, "newmtl brick\n");
+  EXPECT_FALSE(FAS::IO::write_textured_OBJ(obj, tm, uv, texture, CGAL::parameters::default_values(), &error));
+  EXPECT_NE(error.find("flow_texture_io_keep.mtl exists"), std::string::npos) << error;
+  EXPECT_EQ(read_bytes(mtl), "newmtl brick\n");
+
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_PNG
+  // Written once from scratch, then again over its own files.
+  std::filesystem::remove(mtl);
+  ASSERT_TRUE(FAS::IO::write_textured_OBJ(obj, tm, uv, texture, CGAL::parameters::default_values(), &error)) << error;
+  const Png_picture first = read_png(png);
+  ASSERT_TRUE(FAS::IO::write_textured_OBJ(obj, tm, uv, FAS::make_arrow_texture(8, 8, 2, 2),
+                                          CGAL::parameters::default_values(), &error)) << error;
+  EXPECT_EQ(first.width, 16u);
+  EXPECT_EQ(read_png(png).width, 8u);
+#endif
 }
 
 } // namespace

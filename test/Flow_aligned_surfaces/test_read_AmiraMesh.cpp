@@ -216,7 +216,7 @@ TEST(ReadAmiraMeshBadInput, NotAmiraMeshAndMissingParts)
   EXPECT_NE(error.find("cannot open"), std::string::npos) << error;
   fas_test::expect_untouched(g);
   checks.expect_failure("not_am.am", "# vtk DataFile Version 3.0\n", {"line 1", "not an AmiraMesh file"});
-  checks.expect_failure("empty.am", "", {"not an AmiraMesh file"});
+  checks.expect_failure("empty.am", "", {"the file is empty"});
   checks.expect_failure("no_lattice.am",
                         "# AmiraMesh 3D ASCII 2.0\ndefine Markers 3\n# Data section follows\n",
                         {"define Lattice"});

@@ -179,7 +179,7 @@ const std::string ascii_file = header("float", "encoding: ascii\n\n") + ascii_ve
 TEST(ReadNRRDBadInput, NotNRRDMissingFieldsAndMissingData)
 {
   checks.expect_failure("not_nrrd.nrrd", "# AmiraMesh 3D ASCII 2.0\n", {"line 1", "not a NRRD file"});
-  checks.expect_failure("empty.nrrd", "", {"not a NRRD file"});
+  checks.expect_failure("empty.nrrd", "", {"the file is empty"});
   checks.expect_failure("no_type.nrrd", "NRRD0004\ndimension: 4\nsizes: 3 2 2 2\n\n", {"no 'type' field"});
   checks.expect_failure("no_sizes.nrrd", "NRRD0004\ntype: float\ndimension: 4\n\n", {"'sizes: 3 nx ny nz'"});
   checks.expect_failure("no_data.nrrd", header("float", "encoding: ascii\n"), {"no data attached"});

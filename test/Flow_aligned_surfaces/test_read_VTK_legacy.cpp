@@ -386,7 +386,7 @@ TEST(ReadVTKLegacyBadInput, MissingFileAndNotVTK)
   expect_untouched(g);
   EXPECT_FALSE(FAS::IO::read_VTK_flow_field(missing, g)); // no message wanted: no crash either
   expect_failure("not_vtk.vtk", "solid cube\n facet normal 0 0 1\n", {"line 1", "not a legacy VTK file"});
-  expect_failure("empty.vtk", "", {"not a legacy VTK file"});
+  expect_failure("empty.vtk", "", {"the file is empty"});
   expect_failure("format.vtk", "# vtk DataFile Version 3.0\nt\nXML\n",
                  {"line 3", "unknown file format 'XML'"});
 }

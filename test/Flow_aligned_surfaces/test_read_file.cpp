@@ -61,13 +61,16 @@ TEST(File_contents, moved_contents_keep_their_bytes)
   EXPECT_TRUE(s.view() == bytes);
 }
 
-TEST(File_contents, empty_file_gives_no_bytes)
+TEST(File_contents, empty_file_is_named_as_empty)
 {
   const std::string file = temporary_file("read_file_", "empty.bin");
   write_bytes(file, "");
-  const FI::File_contents c(file, "test_reader");
-  EXPECT_TRUE(c.view().empty());
-  EXPECT_FALSE(c.is_mapped()); // nothing to map: read instead
+  try {
+    FI::File_contents c(file, "test_reader");
+    FAIL() << "no exception";
+  } catch (const FI::Read_error& e) {
+    EXPECT_EQ(std::string(e.what()), "test_reader: " + file + ": the file is empty (0 bytes)");
+  }
 }
 
 TEST(File_contents, missing_file_is_named_in_the_message)

@@ -5,6 +5,7 @@
 // file and a reader's failure give false with a message naming the file, and the field kept.
 
 #include <CGAL/Flow_aligned_surfaces/IO/read_flow_field.h>
+#include <CGAL/Flow_aligned_surfaces/IO/read_session.h>
 #include <CGAL/Flow_aligned_surfaces/IO/write_flow_field.h>
 #include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
 
@@ -137,6 +138,32 @@ TEST(ReadFlowField, FailuresNameTheFileAndKeepTheField)
 
   ASSERT_NE(field.get_if<Sampled::Regular_grid>(), nullptr);
   EXPECT_EQ(*field(probe), before);
+}
+
+// An empty file is called empty by every reader, and every reader gives its message without
+// naming the default named parameters first (the overloads taking the error pointer third).
+TEST(ReadFlowField, EmptyFileIsCalledEmptyByEveryReader)
+{
+  const std::string empty = scratch("empty.vtk");
+  write_bytes(empty, "");
+  auto expect_empty = [&empty](bool read, const std::string& error, const std::string& reader) {
+    EXPECT_FALSE(read) << reader;
+    EXPECT_EQ(error, reader + ": " + empty + ": the file is empty (0 bytes)");
+  };
+  std::string error;
+  Sampled sampled(linear_grid());
+  expect_empty(FAS::IO::read_flow_field(empty, sampled, &error), error, "read_flow_field");
+  EXPECT_NE(sampled.get_if<Sampled::Regular_grid>(), nullptr) << "the field is kept";
+  Sampled::Regular_grid regular;
+  expect_empty(FAS::IO::read_VTK_flow_field(empty, regular, &error), error, "read_VTK_flow_field");
+  Sampled::Rectilinear_grid rectilinear;
+  expect_empty(FAS::IO::read_VTK_flow_field(empty, rectilinear, &error), error, "read_VTK_flow_field");
+  Sampled::Unstructured_grid cells;
+  expect_empty(FAS::IO::read_VTK_flow_field(empty, cells, &error), error, "read_VTK_flow_field");
+  expect_empty(FAS::IO::read_AmiraMesh_flow_field(empty, regular, &error), error, "read_AmiraMesh_flow_field");
+  expect_empty(FAS::IO::read_NRRD_flow_field(empty, regular, &error), error, "read_NRRD_flow_field");
+  FAS::Session session;
+  expect_empty(FAS::IO::read_session(empty, session, &error), error, "read_session");
 }
 
 TEST(ReadFlowField, RealDataInBothForms)

@@ -143,7 +143,7 @@ TEST(ReadSession, MalformedLinesNameTheFileTheLineAndTheFault)
       {"patch disk 0 0 0 0 0 1 0 100\n", "line 1: the radius 0 is not positive"},
       {"patch disk 0 0 0 0 0 1 1 -5\n", "line 1: '-5' is not a positive integer (the target number of faces)"},
       {"flow cylinder\n", "no 'patch' line gives the initial surface"},
-      {"", "no 'patch' line gives the initial surface"},
+      {"", "the file is empty (0 bytes)"},
   };
   int i = 0;
   for (const Case& c : cases) {

@@ -616,6 +616,24 @@ TEST(ReadVTKXML, BadFilesGiveClearMessagesAndChangeNothing)
 // Headers whose structure VTK 9.1 trusts (found by fuzzing: a .vts whose piece reached outside
 // the whole extent, with 8-component points, crashed VTK; an array of 10^100 components kept
 // it busy for minutes): refused before VTK reads any data.
+// An empty file is called empty, and the message is reachable without naming the default named
+// parameters (the overloads taking the error pointer third).
+TEST(ReadVTKXML, EmptyFileIsCalledEmpty)
+{
+  const std::string empty = temporary("empty.vti");
+  write_bytes(empty, "");
+  std::string error;
+  Grid grid;
+  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(empty, grid, &error));
+  EXPECT_EQ(error, "read_VTK_XML_flow_field: " + empty + ": the file is empty (0 bytes)");
+  Cells cells;
+  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(empty, cells, &error));
+  EXPECT_EQ(error, "read_VTK_XML_flow_field: " + empty + ": the file is empty (0 bytes)");
+  FAS::Unsteady_flow_field_3<Grid> series;
+  EXPECT_FALSE(FAS::IO::read_PVD_flow_field(empty, series, &error));
+  EXPECT_EQ(error, "read_PVD_flow_field: " + empty + ": the file is empty (0 bytes)");
+}
+
 TEST(ReadVTKXML, PiecesOutsideTheWholeExtentAndImpossibleComponentCountsAreRefused)
 {
   auto vts = [](const std::string& whole, int point_components) {

@@ -552,6 +552,19 @@ bool read_NRRD_flow_field(const std::string& filename, Regular_grid_flow_field_3
   });
 }
 
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief As the overload above with the default named parameters: the reason of a failure is in
+`error` without naming `CGAL::parameters::default_values()` first, as in
+`read_NRRD_flow_field(filename, field, &error)`.
+*/
+template <class K>
+bool read_NRRD_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field, std::string* error)
+{
+  return read_NRRD_flow_field(filename, field, CGAL::parameters::default_values(), error);
+}
+
 } // namespace IO
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL

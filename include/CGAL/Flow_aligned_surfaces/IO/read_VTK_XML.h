@@ -96,6 +96,19 @@ bool read_VTK_XML_flow_field(const std::string& filename, Regular_grid_flow_fiel
 /*!
 \ingroup PkgFlowAlignedSurfacesIO
 
+\brief As the overload above with the default named parameters: the reason of a failure is in
+`error` without naming `CGAL::parameters::default_values()` first, as in
+`read_VTK_XML_flow_field(filename, field, &error)`.
+*/
+template <class K>
+bool read_VTK_XML_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field, std::string* error)
+{
+  return read_VTK_XML_flow_field(filename, field, CGAL::parameters::default_values(), error);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
 \brief Reads a velocity field on cells from a VTK XML UnstructuredGrid (`.vtu`), StructuredGrid
 (`.vts`) or ImageData (`.vti`) file with VTK's readers.
 
@@ -133,6 +146,19 @@ bool read_VTK_XML_flow_field(const std::string& filename, Unstructured_flow_fiel
   return Flow_aligned_surfaces::IO::internal::read_into(c.reader, filename, field, error, [&] {
     return internal::read_VTK_XML_cells<K>(c, names.array_name(), names.mask_name());
   });
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief As the overload above with the default named parameters: the reason of a failure is in
+`error` without naming `CGAL::parameters::default_values()` first, as in
+`read_VTK_XML_flow_field(filename, field, &error)`.
+*/
+template <class K>
+bool read_VTK_XML_flow_field(const std::string& filename, Unstructured_flow_field_3<K>& field, std::string* error)
+{
+  return read_VTK_XML_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 /*!
@@ -203,6 +229,19 @@ bool read_PVD_flow_field(const std::string& filename, Unsteady_flow_field_3<Fiel
     }
     return Unsteady_flow_field_3<Field>(std::move(times), std::move(fields));
   });
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief As the overload above with the default named parameters: the reason of a failure is in
+`error` without naming `CGAL::parameters::default_values()` first, as in
+`read_PVD_flow_field(filename, field, &error)`.
+*/
+template <class Field>
+bool read_PVD_flow_field(const std::string& filename, Unsteady_flow_field_3<Field>& field, std::string* error)
+{
+  return read_PVD_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 } // namespace IO

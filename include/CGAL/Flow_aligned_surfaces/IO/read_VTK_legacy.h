@@ -85,6 +85,19 @@ bool read_VTK_flow_field(const std::string& filename, Regular_grid_flow_field_3<
 /*!
 \ingroup PkgFlowAlignedSurfacesIO
 
+\brief As the overload above with the default named parameters: the reason of a failure is in
+`error` without naming `CGAL::parameters::default_values()` first, as in
+`read_VTK_flow_field(filename, field, &error)`.
+*/
+template <class K>
+bool read_VTK_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field, std::string* error)
+{
+  return read_VTK_flow_field(filename, field, CGAL::parameters::default_values(), error);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
 \brief Reads a velocity field on a rectilinear grid from a legacy VTK file.
 
 As the `Regular_grid_flow_field_3` overload, for `DATASET RECTILINEAR_GRID` (`DIMENSIONS`, then
@@ -114,6 +127,19 @@ bool read_VTK_flow_field(const std::string& filename, Rectilinear_grid_flow_fiel
                          std::string* error = nullptr)
 {
   return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_rectilinear<K>);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief As the overload above with the default named parameters: the reason of a failure is in
+`error` without naming `CGAL::parameters::default_values()` first, as in
+`read_VTK_flow_field(filename, field, &error)`.
+*/
+template <class K>
+bool read_VTK_flow_field(const std::string& filename, Rectilinear_grid_flow_field_3<K>& field, std::string* error)
+{
+  return read_VTK_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 /*!
@@ -163,6 +189,19 @@ bool read_VTK_flow_field(const std::string& filename, Unstructured_flow_field_3<
                          std::string* error = nullptr)
 {
   return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_cells<K>);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief As the overload above with the default named parameters: the reason of a failure is in
+`error` without naming `CGAL::parameters::default_values()` first, as in
+`read_VTK_flow_field(filename, field, &error)`.
+*/
+template <class K>
+bool read_VTK_flow_field(const std::string& filename, Unstructured_flow_field_3<K>& field, std::string* error)
+{
+  return read_VTK_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 } // namespace IO

@@ -190,6 +190,8 @@ bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field
     std::ifstream probe(filename, std::ios::binary);
     if (!probe)
       *error = "read_flow_field: " + filename + ": cannot open the file for reading";
+    else if (head.empty())
+      *error = "read_flow_field: " + filename + ": the file is empty (0 bytes)";
     else
       *error = "read_flow_field: " + filename + ": unknown file format (it starts with '" +
                Flow_aligned_surfaces::IO::internal::printable(head.substr(0, 24)) +
@@ -197,6 +199,19 @@ bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field
                "AmiraMesh file ('# AmiraMesh') or a NRRD file ('NRRD000x')";
   }
   return false;
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief As the overload above with the default named parameters: the reason of a failure is in
+`error` without naming `CGAL::parameters::default_values()` first, as in
+`read_flow_field(filename, field, &error)`.
+*/
+template <class K>
+bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field, std::string* error)
+{
+  return read_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 } // namespace IO

@@ -180,6 +180,19 @@ bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_f
 /*!
 \ingroup PkgFlowAlignedSurfacesIO
 
+\brief As the overload above with the default named parameters: the reason of a failure is in
+`error` without naming `CGAL::parameters::default_values()` first, as in
+`write_VTK_flow_field(filename, field, &error)`.
+*/
+template <class K>
+bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_field_3<K>& field, std::string* error)
+{
+  return write_VTK_flow_field(filename, field, CGAL::parameters::default_values(), error);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
 \brief Writes a grid flow field to `filename` as a VTK XML ImageData file (`.vti`).
 
 The file holds an `ImageData` with `WholeExtent` `0 nx-1 0 ny-1 0 nz-1` and the field's
@@ -316,6 +329,19 @@ bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_f
         os << "\n  </AppendedData>\n</VTKFile>\n";
       });
   return written ? true : fail(reason);
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
+
+\brief As the overload above with the default named parameters: the reason of a failure is in
+`error` without naming `CGAL::parameters::default_values()` first, as in
+`write_VTI_flow_field(filename, field, &error)`.
+*/
+template <class K>
+bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_field_3<K>& field, std::string* error)
+{
+  return write_VTI_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 } // namespace IO

@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <string>
 
@@ -40,7 +41,9 @@ namespace IO {
 Texture coordinates are written as they are (textures repeat, so they may leave
 \f$ [0, 1] \f$); one that is not finite is written as `0 0` (such faces are the masked ones of
 `compute_flow_texture_mask()`).  Each file is written beside its name and renamed over it when
-complete.  When the PNG cannot be written (no libpng: see `write_PNG()`), the OBJ and the MTL
+complete.  The MTL and the PNG are replaced only if they are this OBJ's, written by an earlier
+call for the same `filename`: a file of these names that is not (a texture of the user's, say)
+makes the function return `false` with its name, before anything is written.  When the PNG cannot be written (no libpng: see `write_PNG()`), the OBJ and the MTL
 are still written and the function returns `false` with the reason.
 
 \tparam TriangleMesh a model of `FaceListGraph`
@@ -80,9 +83,27 @@ bool write_textured_OBJ(const std::string& filename, const TriangleMesh& tm, UVM
     return false;
   };
 
+  // The MTL and the PNG are files the caller did not name: one that exists is replaced only if it
+  // is this OBJ's, that is, if the MTL beside it is one that an earlier call wrote for this OBJ.
+  const std::string mtl_first_line = "# flow texture of " + obj.filename().string();
+  const bool mtl_exists = std::filesystem::exists(mtl), png_exists = std::filesystem::exists(png);
+  if (mtl_exists || png_exists) {
+    std::string line;
+    if (mtl_exists) {
+      std::ifstream is(mtl);
+      std::getline(is, line);
+    }
+    if (line != mtl_first_line) {
+      const std::filesystem::path& other = mtl_exists ? mtl : png;
+      return fail(other.string() + " exists and is not the texture file of " + obj.filename().string() +
+                  " written by an earlier write_textured_OBJ(); nothing was written (move it away or "
+                  "choose another name for the OBJ)");
+    }
+  }
+
   std::string reason;
   if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(mtl.string(), reason, [&](std::ostream& os) {
-        os << "# flow texture of " << obj.filename().string() << "\nnewmtl flow_texture\n"
+        os << mtl_first_line << "\nnewmtl flow_texture\n"
            << "Ka 1 1 1\nKd 1 1 1\nKs 0 0 0\nillum 1\nmap_Kd " << png.filename().string() << "\n";
       }))
     return fail(mtl.string() + ": " + reason);

@@ -157,6 +157,8 @@ inline void check_readable(const VTK_XML_context& c)
   if (!is)
     c.fail(std::filesystem::exists(c.file, ec) ? "cannot open the file for reading (permissions?)"
                                                : "no such file");
+  if (is.peek() == std::ifstream::traits_type::eof())
+    c.fail("the file is empty (0 bytes)");
 }
 
 template <class Reader>

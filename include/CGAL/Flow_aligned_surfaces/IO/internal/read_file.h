@@ -51,7 +51,7 @@ struct Read_error : std::runtime_error {
 };
 
 /// The contents of `filename`; throws `Read_error` naming `reader` and the file if it cannot be
-/// read.  Reading the whole file at once is the fastest way on every system (one `read()`), and
+/// read or is empty.  Reading the whole file at once is the fastest way on every system (one `read()`), and
 /// lets the parsers check every count against the bytes that are really there.
 inline std::string read_file_contents(const std::string& filename, const std::string& reader)
 {
@@ -69,6 +69,8 @@ inline std::string read_file_contents(const std::string& filename, const std::st
   is.read(&contents[0], size);
   if (!is)
     throw Read_error(reader + ": " + filename + ": reading the file failed");
+  if (contents.empty())
+    throw Read_error(reader + ": " + filename + ": the file is empty (0 bytes)");
   return contents;
 }
 
