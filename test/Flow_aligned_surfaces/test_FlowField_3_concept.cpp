@@ -178,8 +178,8 @@ TEST(FlowField3Concept, DeformationStepsMovesAndGrowsAcrossTheFlow)
   // sides along the flow) to 2 x (1 + 2d).
   const Point center(0.5, 0.25, -0.75);
   Mesh tm = make_patch(center, n_along, u);
-  FAS::Flow_aligned_deformation<Mesh, FlowField_3_archetype> deformation(tm, uniform_flow(),
-                                                                           FAS::Alignment::TANGENTIAL);
+  const FlowField_3_archetype flow = uniform_flow(); // held by reference: outlives the deformation
+  FAS::Flow_aligned_deformation<Mesh, FlowField_3_archetype> deformation(tm, flow, FAS::Alignment::TANGENTIAL);
   const FAS::Iteration_report first = deformation.step();
   EXPECT_NEAR(first.normalized_flux, 0.0, 1e-12);
   EXPECT_LT(first.max_rotation_angle, 1e-9);
@@ -227,8 +227,8 @@ TEST(FlowField3Concept, ParametrizationsOfPlanesAreLinear)
 
   // The deformation's own parametrization of the same plane agrees with the free function's up
   // to its soft constraint (a relative difference of the order of 1e-3 h / diameter).
-  FAS::Flow_aligned_deformation<Mesh, FlowField_3_archetype> deformation(along, uniform_flow(),
-                                                                           FAS::Alignment::TANGENTIAL);
+  const FlowField_3_archetype flow = uniform_flow();
+  FAS::Flow_aligned_deformation<Mesh, FlowField_3_archetype> deformation(along, flow, FAS::Alignment::TANGENTIAL);
   auto r2 = along.add_property_map<vertex_descriptor, double>("v:r2", 0).first;
   auto s2 = along.add_property_map<vertex_descriptor, double>("v:s2", 0).first;
   deformation.parametrize_tangential(r2, s2);

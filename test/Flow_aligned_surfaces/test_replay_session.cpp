@@ -70,7 +70,8 @@ TEST(ReplaySession, MovesMakeTheFluxSpikesTheyMust)
 {
   const FAS::Session session = read("tilt.session", tilt_session);
   Mesh tm = make_patch(session);
-  FAS::Flow_aligned_deformation<Mesh, Flow> deformation(tm, Flow(), FAS::Alignment::TANGENTIAL);
+  const Flow flow;
+  FAS::Flow_aligned_deformation<Mesh, Flow> deformation(tm, flow, FAS::Alignment::TANGENTIAL);
   std::vector<std::size_t> saved_at; // the number of iterations done at each save
   std::vector<std::size_t> save_lines;
   const FAS::Session_replay_report replay = FAS::replay_session(deformation, session, [&](const Op& op) {
@@ -126,8 +127,8 @@ TEST(ReplaySession, TheSameSessionGivesTheSameNumbersBitForBit)
   using Cylinder = FAS::Cylinder_potential_flow<K>;
   auto replay_once = [&](std::vector<Point_3>& points) {
     Mesh tm = make_patch(session);
-    FAS::Flow_aligned_deformation<Mesh, Cylinder> deformation(tm, Cylinder(1.0, 1.0),
-                                                              FAS::Alignment::TANGENTIAL);
+    const Cylinder flow(1.0, 1.0);
+    FAS::Flow_aligned_deformation<Mesh, Cylinder> deformation(tm, flow, FAS::Alignment::TANGENTIAL);
     const FAS::Session_replay_report replay = FAS::replay_session(deformation, session, [](const Op&) {});
     for (auto v : tm.vertices())
       points.push_back(tm.point(v));
@@ -163,7 +164,8 @@ TEST(ReplaySession, ARefusedOperationNamesItsSessionLine)
                                                            "grow 0.1 0 0 1\n"
                                                            "save never.vtp\n");
   Mesh tm = make_patch(session);
-  FAS::Flow_aligned_deformation<Mesh, Flow> deformation(tm, Flow(), FAS::Alignment::TANGENTIAL);
+  const Flow flow;
+  FAS::Flow_aligned_deformation<Mesh, Flow> deformation(tm, flow, FAS::Alignment::TANGENTIAL);
   bool saved = false;
   try {
     FAS::replay_session(deformation, session, [&](const Op&) { saved = true; });

@@ -29,12 +29,18 @@ left as it is by the alignment (its transformation is the identity) and is left 
 measures.  Only the direction of the vector matters to the alignment; its length weighs
 nothing, as the measures normalize it.
 
-<b>Copies.</b>  The algorithms copy the field (a `Flow_aligned_deformation` keeps its own
-copy), so a copy must be cheap and must answer like the original.
-Fields holding large arrays share them between copies, as
-`CGAL::Flow_aligned_surfaces::Regular_grid_flow_field_3` does with a `std::shared_ptr`.  The
-call operator is `const`; it should not modify state shared between calls, so that a field
-can be sampled from several threads at once.
+<b>Copies.</b>  The algorithms never copy the field: the free functions take it by `const`
+reference, a `Flow_aligned_deformation` holds a reference to it (the field must outlive the
+deformation, as the mesh must), and `parameters::flow_field()` holds a reference to a field given
+as a variable (a temporary is kept by value).  So a model may hold its samples by value, a
+`std::vector` of a large grid for instance, at no cost; the copy constructor is needed only by
+a user's own code and by the field classes that combine fields
+(`CGAL::Flow_aligned_surfaces::Sampled_flow_field_3`,
+`CGAL::Flow_aligned_surfaces::Unsteady_flow_field_3`, which take their fields by value or by
+move).  Its copy must answer like the original; the package's grid fields share their arrays
+between copies with a `std::shared_ptr`, so their copies are cheap too.  The call operator is
+`const`; it should not modify state shared between calls, so that a field can be sampled from
+several threads at once (`parameters::use_parallelism(true)`).
 
 \cgalHasModelsBegin
 \cgalHasModels{Any callable `std::optional<Vector_3>(const Point_3&)`, such as a lambda}

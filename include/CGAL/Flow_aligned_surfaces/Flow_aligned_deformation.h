@@ -75,7 +75,10 @@ discretized; iterations never accumulate errors because they always reconstruct 
         factor once and solve the three coordinates at once.  Default:
         `CGAL::Eigen_solver_traits<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>>>`
         when CHOLMOD was found (the macro `CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD`), else
-        `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`.
+        `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`; both run
+        on the calling thread only (see \ref fas_threads).
+
+The field is held by reference, not copied, as the mesh is: both must outlive this object.
 
 \sa `align_to_flow()`, `normalized_flux()`
 */
@@ -119,7 +122,9 @@ public:
 
   \param tm the surface; it must stay alive and keep its connectivity while this object is used
             (except through `grow()`)
-  \param field the flow field (copied)
+  \param field the flow field; held by reference, never copied, so it must stay alive (and
+               unchanged, unless the user wants the next iterations to see the change) as long
+               as this object is used.  A temporary is refused at compile time.
   \param alignment tangential (stream surface) or orthogonal (seeding surface)
   \param np an optional sequence of named parameters among the ones listed below
 
@@ -188,11 +193,14 @@ public:
       \cgalParamDefault{`1e-3`}
     \cgalParamNEnd
     \cgalParamNBegin{use_parallelism}
-      \cgalParamDescription{whether the field is sampled and the faces are transformed on all
-        cores (with TBB, when the macro `CGAL_LINKED_WITH_TBB` is defined, as the CMake target
-        `CGAL::Flow_aligned_surfaces` does when TBB is found, and for 4096 faces or more); the
-        field's `operator()` must then be safe to call concurrently.  The surfaces are the same
-        either way.}
+      \cgalParamDescription{whether the field is sampled and the faces are transformed in
+        parallel (with TBB, when the macro `CGAL_LINKED_WITH_TBB` is defined, as the CMake target
+        `CGAL::Flow_aligned_surfaces` does when TBB is found, and for 4096 faces or more), in the
+        TBB task arena that `step()` is called from: a caller limits the threads with its own
+        `tbb::task_arena`.  The field's `operator()` must then be safe to call concurrently.  The
+        surfaces are the same either way.  Without it (the default) this object runs on the
+        calling thread only and starts no thread, the factorization included (see
+        \ref fas_threads).}
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
@@ -242,6 +250,12 @@ public:
     internal::check_finite_positions(m_reference, "Flow_aligned_deformation: tm");
     rebuild_operators(m_reference);
   }
+
+  /// The field is held by reference: a temporary would be destroyed before the first
+  /// iteration.  Keep the field in a variable that outlives the deformation.
+  template <class NamedParameters = parameters::Default_named_parameters>
+  Flow_aligned_deformation(TriangleMesh& tm, const FlowField&& field, Alignment alignment,
+                           const NamedParameters& np = CGAL::parameters::default_values()) = delete;
   /// @}
 
   /// \name Iterations
@@ -268,7 +282,9 @@ public:
 
     Face_pass face_pass;
 #ifdef CGAL_LINKED_WITH_TBB
-    // Faces are independent; below a few thousand the threads cost more than they save.
+    // Faces are independent; below a few thousand the threads cost more than they save.  The
+    // algorithm runs in the caller's task arena (tbb::this_task_arena), so a caller's
+    // tbb::task_arena bounds the threads.
     if (m_parallel && n >= 4096)
       face_pass = tbb::parallel_reduce(
           tbb::blocked_range<std::size_t>(0, n, 1024), Face_pass(),
@@ -888,7 +904,7 @@ private:
   }
 
   TriangleMesh& m_tm;
-  FlowField m_field;
+  const FlowField& m_field; // not a copy: a field may hold gigabytes of samples by value
   Alignment m_alignment;
   Vertex_point_map m_vpm;
   Geom_traits m_gt;

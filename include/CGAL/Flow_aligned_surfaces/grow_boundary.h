@@ -666,7 +666,8 @@ Growth_report grow_boundary(TriangleMesh& tm, double distance,
         [](const Eigen::Vector3d&) { return internal::Flow_sample(); }, caller);
   }
   else {
-    const auto& field = get_parameter(np, internal_np::flow_field_t());
+    // By reference: get_parameter() would copy the field.
+    const auto& field = CGAL::parameters::get_parameter_reference(np, internal_np::flow_field_t());
     strip = internal::make_boundary_strip(
         tm, vim, x, nullptr, distance, options,
         [&](const Eigen::Vector3d& p) {

@@ -16,6 +16,10 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <functional>
+#include <type_traits>
+#include <utility>
+
 namespace CGAL {
 namespace Flow_aligned_surfaces {
 
@@ -105,7 +109,9 @@ CGAL_FAS_NAMED_PARAMETER(area_correction, bool)
 CGAL_FAS_NAMED_PARAMETER(constraint_weight, double)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// Whether the per-face work of an iteration (field samples, local transformations) runs in
-/// parallel with TBB; the field must then be safe to call concurrently.  Default: `false`.
+/// parallel with TBB, in the task arena of the caller (a `tbb::task_arena` bounds the threads);
+/// the field must then be safe to call concurrently.  Without it (the default, `false`) the
+/// algorithms run on the calling thread and start no thread, the factorization included.
 CGAL_FAS_NAMED_PARAMETER(use_parallelism, bool)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// The name of the velocity array that a flow field reader reads, or that a writer writes.
@@ -220,13 +226,18 @@ growth_direction(const Vector_3& direction, const NamedParameters& np = NamedPar
 }
 
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
-/// The flow field (a model of `FlowField_3`, copied) of a function that needs one besides its
-/// mesh, such as `grow_boundary()` with `across_flow(true)`.  Default: none.
+/// The flow field (a model of `FlowField_3`) of a function that needs one besides its mesh,
+/// such as `grow_boundary()` with `across_flow(true)`.  A field given as a variable is held by
+/// reference, not copied (the pack must then not outlive it); a temporary is kept by value.
+/// Default: none.
 template <typename FlowField, typename NamedParameters = Default_named_parameters>
-CGAL::Named_function_parameters<FlowField, internal_np::flow_field_t, NamedParameters>
-flow_field(const FlowField& field, const NamedParameters& np = NamedParameters())
+auto flow_field(FlowField&& field, const NamedParameters& np = NamedParameters())
 {
-  return CGAL::Named_function_parameters<FlowField, internal_np::flow_field_t, NamedParameters>(field, np);
+  using Field = std::remove_cv_t<std::remove_reference_t<FlowField>>;
+  using Stored = std::conditional_t<std::is_lvalue_reference<FlowField>::value,
+                                    std::reference_wrapper<const Field>, Field>;
+  return CGAL::Named_function_parameters<Stored, internal_np::flow_field_t, NamedParameters>(
+      Stored(std::forward<FlowField>(field)), np);
 }
 
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters

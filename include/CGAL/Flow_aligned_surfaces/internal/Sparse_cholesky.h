@@ -6,6 +6,16 @@
 // SparseLinearAlgebraWithFactorTraits_d wrapping an Eigen solver
 // (CGAL::Eigen_solver_traits<S>); its Eigen solver is used directly so that the
 // three coordinate columns are solved in one call.
+//
+// Threads: the default solver starts none.  CHOLMOD's simplicial LDL^T calls no BLAS and runs no
+// OpenMP loop; CHOLMOD 3's supernodal factorization does both (loops with
+// num_threads(CHOLMOD_OMP_NUM_THREADS) = 4, which omp_set_num_threads() cannot lower, and
+// dgemm/dsyrk of the system's BLAS, OpenBLAS with its own thread pool on Debian); the threads
+// of both spin after their work and, on a loaded machine, steal the cores of the caller.  CHOLMOD
+// 3 has no Common->nthreads_max (CHOLMOD 4 has), and the other knobs (omp_set_*,
+// openblas_set_num_threads) change the whole process, so the supernodal factorization is not the
+// default: a user who wants it passes it as the SparseLinearSolver and controls its threads with
+// the environment (OMP_THREAD_LIMIT, OPENBLAS_NUM_THREADS).
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SPARSE_CHOLESKY_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SPARSE_CHOLESKY_H
@@ -26,7 +36,8 @@ namespace Flow_aligned_surfaces {
 namespace internal {
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
-/// CHOLMOD's LDL^T: factored the way CHOLMOD's own switch chooses (simplicial when
+/// Not the default (it may start threads, see the top of this file); kept for the benchmark's
+/// comparison.  CHOLMOD's LDL^T: factored the way CHOLMOD's own switch chooses (simplicial when
 /// flops / nnz(L) < 40, i.e. below about 5e3 faces; supernodal LL^T above, blocked BLAS-3 and 1.5
 /// to 2.4 times faster there), then left by `cholmod_factorize` as a simplicial LDL^T factor
 /// (`final_super = 0`, `final_ll = 0`) without the zeros of relaxed supernodal amalgamation
@@ -52,8 +63,10 @@ public:
   }
 };
 
+/// CHOLMOD's simplicial LDL^T (fill-reducing ordering by CHOLMOD's default strategy): one thread,
+/// no BLAS; its back-substitutions sweep the three coordinate columns at once.
 using Default_sparse_linear_solver =
-    CGAL::Eigen_solver_traits<Cholmod_auto_LDLT<Eigen::SparseMatrix<double>>>;
+    CGAL::Eigen_solver_traits<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>>>;
 #else
 using Default_sparse_linear_solver =
     CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>;
