@@ -83,9 +83,11 @@ inline std::optional<FAS::Sampled_flow_field_3<Kernel>> read_data_field(const st
 {
   FAS::Sampled_flow_field_3<Kernel> field;
   std::string error;
-  const bool read = array.empty()
-                        ? FAS::IO::read_flow_field(file, field, &error)
-                        : FAS::IO::read_flow_field(file, field, FAS::parameters::array_name(array), &error);
+  // The applications decode large binary arrays on all cores.
+  const auto parallel = FAS::parameters::use_parallelism(true);
+  const bool read = array.empty() ? FAS::IO::read_flow_field(file, field, parallel, &error)
+                                  : FAS::IO::read_flow_field(
+                                        file, field, FAS::parameters::array_name(array, parallel), &error);
   if (!read) {
     std::cerr << "error: " << error << "\n";
     return std::nullopt;

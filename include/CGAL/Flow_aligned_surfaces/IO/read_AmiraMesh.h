@@ -727,6 +727,12 @@ names the file, the line and/or byte, and what is wrong.
     \cgalParamType{`std::string`}
     \cgalParamDefault{`"inside"` if the file has it, else no mask}
   \cgalParamNEnd
+  \cgalParamNBegin{use_parallelism}
+    \cgalParamDescription{decode binary arrays on the threads of the caller's TBB arena
+      (`FAS::parameters::use_parallelism()`); without it the reader starts no thread}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
@@ -741,7 +747,7 @@ bool read_AmiraMesh_flow_field(const std::string& filename, Regular_grid_flow_fi
   const Flow_aligned_surfaces::IO::internal::Array_names names =
       Flow_aligned_surfaces::IO::internal::array_names(np);
   return Flow_aligned_surfaces::IO::internal::read_into(
-      "read_AmiraMesh_flow_field", filename, field, error,
+      "read_AmiraMesh_flow_field", filename, field, error, Flow_aligned_surfaces::IO::internal::reads_in_parallel(np),
       [&] { return internal::read_AmiraMesh_grid<K>(filename, names.array, names.mask); });
 }
 

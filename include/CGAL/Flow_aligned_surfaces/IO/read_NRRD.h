@@ -534,6 +534,12 @@ is wrong.
     \cgalParamType{`std::string`}
     \cgalParamDefault{no mask}
   \cgalParamNEnd
+  \cgalParamNBegin{use_parallelism}
+    \cgalParamDescription{decode binary arrays on the threads of the caller's TBB arena
+      (`FAS::parameters::use_parallelism()`); without it the reader starts no thread}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
@@ -547,7 +553,8 @@ bool read_NRRD_flow_field(const std::string& filename, Regular_grid_flow_field_3
 {
   const Flow_aligned_surfaces::IO::internal::Array_names names =
       Flow_aligned_surfaces::IO::internal::array_names(np);
-  return Flow_aligned_surfaces::IO::internal::read_into("read_NRRD_flow_field", filename, field, error, [&] {
+  return Flow_aligned_surfaces::IO::internal::read_into("read_NRRD_flow_field", filename, field, error,
+      Flow_aligned_surfaces::IO::internal::reads_in_parallel(np), [&] {
     return internal::read_NRRD_grid<K>(filename, names.array, names.mask);
   });
 }

@@ -75,6 +75,12 @@ points are accepted and stored as zero.
     \cgalParamType{`std::string`}
     \cgalParamDefault{`"inside"` if the file has it, else no mask}
   \cgalParamNEnd
+  \cgalParamNBegin{use_parallelism}
+    \cgalParamDescription{decode binary arrays on the threads of the caller's TBB arena
+      (`FAS::parameters::use_parallelism()`); without it the reader starts no thread}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
@@ -88,7 +94,8 @@ bool read_VTK_XML_flow_field(const std::string& filename, Regular_grid_flow_fiel
 {
   const Flow_aligned_surfaces::IO::internal::Array_names names = Flow_aligned_surfaces::IO::internal::array_names(np);
   const internal::VTK_XML_context c{"read_VTK_XML_flow_field", filename};
-  return Flow_aligned_surfaces::IO::internal::read_into(c.reader, filename, field, error, [&] {
+  return Flow_aligned_surfaces::IO::internal::read_into(c.reader, filename, field, error,
+      Flow_aligned_surfaces::IO::internal::reads_in_parallel(np), [&] {
     return internal::read_VTK_XML_grid<K>(c, names.array_name(), names.mask_name());
   });
 }
@@ -127,7 +134,7 @@ there, and also a grid without cells or without any cell whose points are all fl
 \param filename the file to read
 \param field the field to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
-\param np an optional sequence of named parameters: `array_name` and `mask_array_name`, as for
+\param np an optional sequence of named parameters: `array_name`, `mask_array_name` and `use_parallelism`, as for
        the overload reading a `Regular_grid_flow_field_3`
 \param error if not null, receives the reason of a failure
 
@@ -143,7 +150,8 @@ bool read_VTK_XML_flow_field(const std::string& filename, Unstructured_flow_fiel
   const Flow_aligned_surfaces::IO::internal::Array_names names =
       Flow_aligned_surfaces::IO::internal::array_names(np);
   const internal::VTK_XML_context c{"read_VTK_XML_flow_field", filename};
-  return Flow_aligned_surfaces::IO::internal::read_into(c.reader, filename, field, error, [&] {
+  return Flow_aligned_surfaces::IO::internal::read_into(c.reader, filename, field, error,
+      Flow_aligned_surfaces::IO::internal::reads_in_parallel(np), [&] {
     return internal::read_VTK_XML_cells<K>(c, names.array_name(), names.mask_name());
   });
 }
@@ -180,7 +188,7 @@ time and its file) and the reason given by the step's reader.
 \param filename the `.pvd` file to read
 \param field the series to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
-\param np an optional sequence of named parameters: `array_name` and `mask_array_name`, as for
+\param np an optional sequence of named parameters: `array_name`, `mask_array_name` and `use_parallelism`, as for
        `read_VTK_XML_flow_field()`
 \param error if not null, receives the reason of a failure
 
@@ -195,7 +203,8 @@ bool read_PVD_flow_field(const std::string& filename, Unsteady_flow_field_3<Fiel
 {
   const Flow_aligned_surfaces::IO::internal::Array_names names = Flow_aligned_surfaces::IO::internal::array_names(np);
   const internal::VTK_XML_context c{"read_PVD_flow_field", filename};
-  return Flow_aligned_surfaces::IO::internal::read_into(c.reader, filename, field, error, [&] {
+  return Flow_aligned_surfaces::IO::internal::read_into(c.reader, filename, field, error,
+      Flow_aligned_surfaces::IO::internal::reads_in_parallel(np), [&] {
     std::vector<internal::PVD_step> steps = internal::read_PVD_steps(c);
     std::stable_sort(
         steps.begin(), steps.end(),

@@ -68,6 +68,12 @@ as in `Regular_grid_flow_field_3`.
     \cgalParamType{`std::string`}
     \cgalParamDefault{`"inside"` if the file has it, else no mask}
   \cgalParamNEnd
+  \cgalParamNBegin{use_parallelism}
+    \cgalParamDescription{decode binary arrays on the threads of the caller's TBB arena
+      (`FAS::parameters::use_parallelism()`); without it the reader starts no thread}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
@@ -113,7 +119,7 @@ not finite or not increasing is named with its axis and index.
 \param filename the file to read
 \param field the field to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
-\param np an optional sequence of named parameters: `array_name` and `mask_array_name`, as
+\param np an optional sequence of named parameters: `array_name`, `mask_array_name` and `use_parallelism`, as
           in the `Regular_grid_flow_field_3` overload
 \param error if not null, receives the reason of a failure
 
@@ -175,7 +181,7 @@ zero); every other point must have a finite velocity.
 \param filename the file to read
 \param field the field to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
-\param np an optional sequence of named parameters: `array_name` and `mask_array_name`, as
+\param np an optional sequence of named parameters: `array_name`, `mask_array_name` and `use_parallelism`, as
           in the `Regular_grid_flow_field_3` overload
 \param error if not null, receives the reason of a failure
 

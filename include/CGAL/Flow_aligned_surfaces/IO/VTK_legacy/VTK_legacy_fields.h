@@ -431,7 +431,8 @@ bool read_VTK_legacy(const std::string& filename, Field& field, const NamedParam
 {
   const Flow_aligned_surfaces::IO::internal::Array_names names =
       Flow_aligned_surfaces::IO::internal::array_names(np);
-  return Flow_aligned_surfaces::IO::internal::read_into("read_VTK_flow_field", filename, field, error, [&] {
+  return Flow_aligned_surfaces::IO::internal::read_into("read_VTK_flow_field", filename, field, error,
+      Flow_aligned_surfaces::IO::internal::reads_in_parallel(np), [&] {
     return read(filename, names.array_name(), names.mask_name());
   });
 }

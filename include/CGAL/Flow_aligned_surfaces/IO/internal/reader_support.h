@@ -4,13 +4,17 @@
 // The frame that every public flow-field reader puts around its parser: the array names of
 // the named parameters (`array_name`, `mask_array_name`, each either given or not), the
 // translation of the internal `Read_error` (and of `std::bad_alloc`) into `false` + message
-// with the output untouched.
+// with the output untouched, and the threads a reader may use (`use_parallelism`).
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READER_SUPPORT_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READER_SUPPORT_H
 
 #include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
 
 #include <new>
 #include <optional>
@@ -63,15 +67,33 @@ Field construct_field(const Fail& fail, Args&&... args)
   }
 }
 
+/// Whether `np` asks for `use_parallelism(true)`: the readers then decode binary arrays on all
+/// the threads of the caller's TBB arena; by default they run on the calling thread only.
+template <class NamedParameters>
+bool reads_in_parallel(const NamedParameters& np)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::use_parallelism_t()), false);
+}
+
 /// Runs `read()` (which returns the field or throws `Read_error`) and assigns its result to
 /// `field` (a field, or anything assignable from one); on failure leaves `field` untouched,
 /// writes the reason to `*error` (if not null) and returns `false`.  `reader` and `filename`
-/// name the message about a lack of memory.
+/// name the message about a lack of memory.  Unless `parallel`, `read()` runs in a TBB arena of
+/// one thread, so that its parallel loops start no thread the caller did not ask for.
 template <class Field, class Read>
 bool read_into(const std::string& reader, const std::string& filename, Field& field, std::string* error,
-               const Read& read)
+               bool parallel, const Read& read)
 {
   try {
+#ifdef CGAL_LINKED_WITH_TBB
+    if (!parallel) {
+      tbb::task_arena calling_thread_only(1);
+      calling_thread_only.execute([&] { field = read(); });
+      return true;
+    }
+#else
+    (void)parallel;
+#endif
     field = read();
     return true;
   } catch (const Read_error& e) {
