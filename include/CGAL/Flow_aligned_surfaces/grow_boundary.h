@@ -31,6 +31,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -50,6 +52,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -68,6 +71,11 @@ struct Growth_report {
   double remesh_ms = 0;        ///< time spent tessellating the strip (split and isotropic remeshing)
   double reference_map_ms = 0; ///< time spent placing the new vertices in \f$ M_0 \f$ and appending them
   double factor_ms = 0;        ///< time spent rebuilding and refactoring the operators (the class only)
+  std::size_t number_of_grown_edges = 0; ///< boundary edges that were grown (the size of `grown_edges`)
+  /// The boundary edges that were grown, each as the indices of its two vertices (source and
+  /// target of its border halfedge): positions in the order of `vertices(tm)` before growing for
+  /// `grow_boundary()`, indices into `Flow_aligned_deformation::vertices()` for `grow()`.
+  std::vector<std::pair<std::size_t, std::size_t>> grown_edges;
 };
 
 /// \cond SKIP_IN_MANUAL
@@ -94,6 +102,13 @@ struct Boundary_strip {
 constexpr double growth_cone_cosine = 0.5;
 // Below this sine, a direction is taken as parallel to the face normal (no in-plane part).
 constexpr double parallel_sine = 1e-6;
+// Above this convex turn of the boundary between two grown edges, the offset curve goes round
+// the vertex on an arc (a fan of triangles) instead of a miter: a rectangle's corners keep their
+// miter, and a miter is never longer than sqrt(2) d.
+constexpr double fan_turn = CGAL_PI / 2 + 1e-9;
+// Beyond this concave turn between two grown edges (an inside angle below 60 degrees), the two
+// offsets would meet more than 2 d from the vertex: growing there is refused.
+constexpr double max_concave_turn = 2 * CGAL_PI / 3;
 
 template <class Options>
 Growth_options read_growth_options(const Options& np, const char* caller)
@@ -184,6 +199,66 @@ Eigen::Matrix3d boundary_vertex_frame(const TriangleMesh& tm, VertexIndexMap vim
   throw std::invalid_argument(caller + ": " + what + "; the surface is left untouched");
 }
 
+// The guard on the result: the old faces of `tm` (positions `x`) and the new faces (new vertex
+// i at `added[i - m]`), as one mesh, must be manifold, and no new face may intersect another
+// face other than along their shared vertices or edge.  Throws naming where otherwise.
+template <class TriangleMesh, class VertexIndexMap>
+void check_grown_surface(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x,
+                         const std::vector<Eigen::Vector3d>& added,
+                         const std::vector<std::array<Eigen::Index, 3>>& new_faces, const std::string& caller)
+{
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const Eigen::Index m = x.rows();
+  Mesh whole;
+  std::vector<Mesh::Vertex_index> vs;
+  for (Eigen::Index i = 0; i < m; ++i)
+    vs.push_back(whole.add_vertex(Epick::Point_3(x(i, 0), x(i, 1), x(i, 2))));
+  for (const Eigen::Vector3d& p : added)
+    vs.push_back(whole.add_vertex(Epick::Point_3(p.x(), p.y(), p.z())));
+  for (auto f : faces(tm)) {
+    std::vector<Mesh::Vertex_index> fv;
+    for (auto v : vertices_around_face(halfedge(f, tm), tm))
+      fv.push_back(vs[get(vim, v)]);
+    whole.add_face(fv);
+  }
+  const std::size_t old_faces = whole.number_of_faces();
+  auto centroid = [&](const std::array<Eigen::Index, 3>& f) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (Eigen::Index v : f)
+      c += v < m ? Eigen::Vector3d(x.row(v).transpose()) : added[std::size_t(v - m)];
+    std::ostringstream os;
+    os << "(" << c.x() / 3 << ", " << c.y() / 3 << ", " << c.z() / 3 << ")";
+    return os.str();
+  };
+  for (const auto& f : new_faces)
+    if (whole.add_face(vs[std::size_t(f[0])], vs[std::size_t(f[1])], vs[std::size_t(f[2])]) == Mesh::null_face())
+      throw_growth_error(caller, "the new face at " + centroid(f) +
+                                     " would make the surface non-manifold (grow by a smaller distance)");
+  std::vector<Mesh::Halfedge_index> non_manifold;
+  PMP::non_manifold_vertices(whole, std::back_inserter(non_manifold));
+  if (!non_manifold.empty()) { // tm itself was checked to be manifold
+      const auto& p = whole.point(whole.target(non_manifold.front()));
+      std::ostringstream os;
+      os << "the grown surface would be non-manifold at the point (" << p << ") (grow by a smaller distance)";
+      throw_growth_error(caller, os.str());
+    }
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+  PMP::self_intersections(whole, std::back_inserter(pairs));
+  for (const auto& pair : pairs) {
+    const std::size_t a = std::size_t(pair.first), b = std::size_t(pair.second);
+    if (a < old_faces && b < old_faces)
+      continue; // the old surface's own intersections are not the growth's doing
+    const std::array<Eigen::Index, 3>& f = new_faces[(a >= old_faces ? a : b) - old_faces];
+    throw_growth_error(caller, std::string("the new face at ") + centroid(f) + " would cut through " +
+                                   ((a >= old_faces && b >= old_faces) ? "another new face"
+                                                                         : "an old face of the surface") +
+                                   " (the boundary comes back near itself there; grow by a smaller "
+                                   "distance or along fewer edges)");
+  }
+}
+
 /*
 Selects the boundary edges to grow, offsets their vertices and tessellates the strip; reads
 `tm` only.  `x` are the current positions in the order of `vim`; `reference`, when not null,
@@ -224,22 +299,18 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
   if (loops.empty())
     throw_growth_error(caller, "the mesh has no boundary (it is closed), so there is nothing to grow");
 
-  // Per border edge: selected or not, and its growth direction g_e.
-  struct Edge {
-    bool selected = false;
-    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
-  };
-  std::vector<std::vector<Edge>> loop_edges(loops.size());
+  // Per border edge: selected or not.  The flow or the direction only selects the edges; every
+  // selected edge then moves along its own outward direction, so that the offset curve is the
+  // same whatever selected it.
+  std::vector<std::vector<char>> loop_selected(loops.size());
   std::size_t number_of_edges = 0, parallel_to_normal = 0, without_flow = 0, selected = 0;
   for (std::size_t l = 0; l < loops.size(); ++l) {
-    loop_edges[l].resize(loops[l].size());
+    loop_selected[l].assign(loops[l].size(), 0);
     for (std::size_t i = 0; i < loops[l].size(); ++i) {
       const halfedge_descriptor h = loops[l][i];
       ++number_of_edges;
       Eigen::Vector3d normal, outward;
       border_edge_frame(tm, vim, x, h, normal, outward);
-      Edge& e = loop_edges[l][i];
-      e.direction = outward;
       bool facing = true;
       if (options.direction) {
         Eigen::Vector3d in_plane = *options.direction - options.direction->dot(normal) * normal;
@@ -254,20 +325,15 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
         const Eigen::Vector3d midpoint = 0.5 * (position<TriangleMesh>(x, vim, source(h, tm)) +
                                                 position<TriangleMesh>(x, vim, target(h, tm)));
         const Flow_sample s = sample(midpoint);
-        Eigen::Vector3d across = normal.cross(s.direction);
+        const Eigen::Vector3d across = normal.cross(s.direction);
         if (s.kind != Sample_kind::VALID || across.norm() <= parallel_sine) {
           ++without_flow;
           facing = false;
         }
-        else {
-          across.normalize();
-          if (across.dot(outward) < 0)
-            across = -across;
-          facing = facing && across.dot(outward) >= growth_cone_cosine;
-          e.direction = across;
-        }
+        else
+          facing = facing && std::abs(across.normalized().dot(outward)) >= growth_cone_cosine;
       }
-      e.selected = facing;
+      loop_selected[l][i] = facing ? 1 : 0;
       selected += facing ? 1 : 0;
     }
   }
@@ -288,101 +354,162 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
                        what + " (an edge is grown when its outward direction is within 60 degrees of it)");
   }
 
-  // The raw strip: for each selected edge (p, q) the quad p q q' p' (counterclockwise like the
-  // old faces), split along its shorter diagonal.
+  // The raw strip, on a separate mesh.
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Strip_mesh = CGAL::Surface_mesh<Epick::Point_3>;
   using strip_vertex = Strip_mesh::Vertex_index;
   Strip_mesh strip;
-  std::vector<strip_vertex> inner(static_cast<std::size_t>(m)), outer(static_cast<std::size_t>(m));
-  std::vector<char> has_strip_vertex(static_cast<std::size_t>(m), 0);
+  // Per old vertex: its copy in the strip, and the first and last points of its offset (for the
+  // incoming and the outgoing grown edge; the same point at a miter).
+  std::vector<strip_vertex> inner(static_cast<std::size_t>(m)), outer_in(static_cast<std::size_t>(m)),
+      outer_out(static_cast<std::size_t>(m));
   std::vector<Eigen::Vector3d> raw_reference; // reference position of each strip vertex
   auto base = strip.add_property_map<strip_vertex, Eigen::Index>("v:fas_base", -1).first;
   auto vertex_constrained = strip.add_property_map<strip_vertex, bool>("v:fas_constrained", false).first;
   auto edge_constrained =
       strip.add_property_map<Strip_mesh::Edge_index, bool>("e:fas_constrained", false).first;
   auto to_point = [](const Eigen::Vector3d& p) { return Epick::Point_3(p.x(), p.y(), p.z()); };
-  const double cos_corner = std::cos(CGAL_PI / 6);
+  auto point = [&](strip_vertex v) {
+    const auto& s = strip.point(v);
+    return Eigen::Vector3d(s.x(), s.y(), s.z());
+  };
+  auto add_face = [&](strip_vertex a, strip_vertex b, strip_vertex c) {
+    if (strip.add_face(a, b, c) == Strip_mesh::null_face())
+      throw std::logic_error(caller + ": building the raw strip failed");
+  };
+  auto where = [&](Eigen::Index v) {
+    std::ostringstream os;
+    os << "vertex " << v << " (" << x(v, 0) << ", " << x(v, 1) << ", " << x(v, 2) << ")";
+    return os.str();
+  };
+  auto degrees = [](double angle) { return std::to_string(int(std::lround(angle * 180 / CGAL_PI))); };
 
+  Growth_report report;
   double grown_length = 0, longest_inner_edge = 0;
   for (std::size_t l = 0; l < loops.size(); ++l) {
     const std::size_t k = loops[l].size();
-    // Offset every vertex touching a selected edge; vertex i is target(loops[l][i]).
+    const std::vector<char>& grown = loop_selected[l];
+    // The offset of every vertex on a grown edge, in the tangent plane at the vertex; vertex i is
+    // target(loops[l][i]), between the border edges i (incoming) and i + 1 (outgoing).
+    std::vector<std::vector<strip_vertex>> fans(k);
     for (std::size_t i = 0; i < k; ++i) {
-      const Edge& e_in = loop_edges[l][i];
-      const Edge& e_out = loop_edges[l][(i + 1) % k];
-      if (!e_in.selected && !e_out.selected)
+      const bool in = grown[i] != 0, out = grown[(i + 1) % k] != 0;
+      if (!in && !out)
         continue;
-      const halfedge_descriptor h_in = loops[l][i];
-      const auto b = target(h_in, tm);
-      const Eigen::Index bi = static_cast<Eigen::Index>(get(vim, b));
+      const halfedge_descriptor h_in = loops[l][i], h_out = loops[l][(i + 1) % k];
+      const Eigen::Index bi = static_cast<Eigen::Index>(get(vim, target(h_in, tm)));
+      const Eigen::Vector3d b = x.row(bi).transpose();
       const Eigen::Vector3d n = vertex_normal(tm, vim, x, h_in);
-      Eigen::Vector3d g = (e_in.selected ? e_in.direction : Eigen::Vector3d::Zero()) +
-                          (e_out.selected ? e_out.direction : Eigen::Vector3d::Zero());
-      g -= g.dot(n) * n;
-      if (!(g.norm() > parallel_sine))
-        throw_growth_error(caller, "the boundary turns back on itself at vertex " + std::to_string(bi) +
-                                       " (its two edges grow in opposite directions)");
-      g.normalize();
-      double miter = 1;
-      if (e_in.selected && e_out.selected)
-        miter = 1 / (std::max)(0.5, g.dot(e_in.direction));
-      const Eigen::Vector3d offset = distance * miter * g;
-      const Eigen::Vector3d p = x.row(bi).transpose();
+      auto tangent = [&](Eigen::Vector3d t) -> Eigen::Vector3d {
+        t -= t.dot(n) * n;
+        if (!(t.norm() > parallel_sine * (t.norm() + 1)))
+          throw_growth_error(caller, "a boundary edge at " + where(bi) +
+                                         " is along the surface normal there, so it has no outward direction");
+        return t.normalized();
+      };
+      const Eigen::Vector3d t_in = tangent(b - position<TriangleMesh>(x, vim, source(h_in, tm)));
+      const Eigen::Vector3d t_out = tangent(position<TriangleMesh>(x, vim, target(h_out, tm)) - b);
+      // The boundary runs with the outside on its left (o = n x t); its turn at the vertex is
+      // positive where the surface is convex there: the outside angle is pi + turn.
+      const Eigen::Vector3d o_in = n.cross(t_in), o_out = n.cross(t_out);
+      const double turn = -std::atan2(t_in.cross(t_out).dot(n), t_in.dot(t_out));
+      std::vector<Eigen::Vector3d> offsets; // from the incoming edge's side to the outgoing one's
+      bool corner = true;
+      if (in && out) {
+        if (turn > fan_turn) {
+          // A sharp convex corner: the arc of radius d about the vertex, in pieces of <= 60 degrees.
+          const int pieces = int(std::ceil(turn / (CGAL_PI / 3)));
+          for (int j = 0; j <= pieces; ++j) {
+            const double theta = turn * j / pieces;
+            offsets.push_back(distance * (std::cos(theta) * o_in + std::sin(theta) * t_in));
+          }
+        }
+        else {
+          // A miter: the intersection of the two edges' offset lines.
+          if (turn < -max_concave_turn)
+            throw_growth_error(caller, "the boundary has a concave corner of " + degrees(CGAL_PI + turn) +
+                                           " degrees at " + where(bi) +
+                                           ", too sharp to grow its two sides (at least " +
+                                           degrees(CGAL_PI - max_concave_turn) + " degrees are needed)");
+          offsets.push_back(distance / std::cos(turn / 2) * (o_in + o_out).normalized());
+          corner = std::abs(turn) >= CGAL_PI / 6;
+        }
+      }
+      else {
+        // An end of a grown run: a cap orthogonal to the grown edge, turned toward it where the old
+        // boundary beyond bends into the strip's way, so that 30 degrees stay between them.
+        const double outside = CGAL_PI + turn;
+        const double beta = (std::min)(CGAL_PI / 2, outside - CGAL_PI / 6);
+        if (beta < CGAL_PI / 6)
+          throw_growth_error(caller, "the boundary folds back at the end of the grown part at " + where(bi) +
+                                         " (an outside angle of " + degrees(outside) +
+                                         " degrees, at least 60 are needed for the strip's end)");
+        const Eigen::Vector3d along = out ? t_out : Eigen::Vector3d(-t_in);
+        const Eigen::Vector3d away = out ? o_out : o_in;
+        offsets.push_back(distance / std::sin(beta) * (std::cos(beta) * along + std::sin(beta) * away));
+      }
 
-      inner[bi] = strip.add_vertex(to_point(p));
-      outer[bi] = strip.add_vertex(to_point(p + offset));
-      has_strip_vertex[bi] = 1;
+      inner[bi] = strip.add_vertex(to_point(b));
       put(base, inner[bi], bi);
       put(vertex_constrained, inner[bi], true);
-      // Keep the corners of the offset curve: the ends of a grown part and sharp turns.
-      put(vertex_constrained, outer[bi],
-          !(e_in.selected && e_out.selected) || e_in.direction.dot(e_out.direction) < cos_corner);
+      Eigen::Matrix3d frame, reference_frame;
       if (reference) {
-        const Eigen::Vector3d p0 = reference->row(bi).transpose();
-        const Eigen::Vector3d coefficients = boundary_vertex_frame(tm, vim, x, h_in).transpose() * offset;
+        frame = boundary_vertex_frame(tm, vim, x, h_in);
+        reference_frame = boundary_vertex_frame(tm, vim, *reference, h_in);
         raw_reference.resize(strip.number_of_vertices());
-        raw_reference[inner[bi]] = p0;
-        raw_reference[outer[bi]] = p0 + boundary_vertex_frame(tm, vim, *reference, h_in) * coefficients;
+        raw_reference[inner[bi]] = reference->row(bi).transpose();
       }
+      for (const Eigen::Vector3d& offset : offsets) {
+        const strip_vertex v = strip.add_vertex(to_point(b + offset));
+        fans[i].push_back(v);
+        put(vertex_constrained, v, corner);
+        if (reference) {
+          raw_reference.resize(strip.number_of_vertices());
+          raw_reference[v] = raw_reference[inner[bi]] + reference_frame * (frame.transpose() * offset);
+        }
+      }
+      outer_in[bi] = fans[i].front();
+      outer_out[bi] = fans[i].back();
     }
+    // The quads of the grown edges (p, q): p q q' p', counterclockwise like the old faces, split
+    // along the shorter diagonal; then the fans at the vertices.
     for (std::size_t i = 0; i < k; ++i) {
-      if (!loop_edges[l][i].selected)
+      if (!grown[i])
         continue;
       const halfedge_descriptor h = loops[l][i];
       const Eigen::Index p = static_cast<Eigen::Index>(get(vim, source(h, tm)));
       const Eigen::Index q = static_cast<Eigen::Index>(get(vim, target(h, tm)));
-      auto point = [&](strip_vertex v) {
-        const auto& s = strip.point(v);
-        return Eigen::Vector3d(s.x(), s.y(), s.z());
-      };
+      report.grown_edges.emplace_back(std::size_t(p), std::size_t(q));
+      const strip_vertex pp = outer_out[p], qq = outer_in[q];
       const Eigen::Vector3d pq = point(inner[q]) - point(inner[p]);
       grown_length += pq.norm();
       longest_inner_edge = (std::max)(longest_inner_edge, pq.norm());
       // An offset edge reversed with respect to its edge: the offset curve folds over.
-      const Eigen::Vector3d offset_pq = point(outer[q]) - point(outer[p]);
-      bool folds = !(offset_pq.dot(pq) > 0);
+      bool folds = !((point(qq) - point(pp)).dot(pq) > 0);
       if (reference && !folds)
-        folds = !((raw_reference[outer[q]] - raw_reference[outer[p]])
-                      .dot(raw_reference[inner[q]] - raw_reference[inner[p]]) > 0);
+        folds = !((raw_reference[qq] - raw_reference[pp]).dot(raw_reference[inner[q]] - raw_reference[inner[p]]) >
+                  0);
       if (folds) {
         std::ostringstream os;
-        os << "the distance " << distance << " is too large for the boundary near vertex " << p
+        os << "the distance " << distance << " is too large for the boundary near " << where(p)
            << ": the offset curve folds over there (grow by a smaller distance, in several steps)";
         throw_growth_error(caller, os.str());
       }
-      const bool first_diagonal = (point(inner[p]) - point(outer[q])).squaredNorm() <=
-                                  (point(inner[q]) - point(outer[p])).squaredNorm();
-      const std::array<std::array<strip_vertex, 3>, 2> triangles =
-          first_diagonal ? std::array<std::array<strip_vertex, 3>, 2>{{{{inner[p], inner[q], outer[q]}},
-                                                                       {{inner[p], outer[q], outer[p]}}}}
-                         : std::array<std::array<strip_vertex, 3>, 2>{
-                               {{{inner[p], inner[q], outer[p]}}, {{inner[q], outer[q], outer[p]}}}};
-      for (const auto& t : triangles)
-        if (strip.add_face(t[0], t[1], t[2]) == Strip_mesh::null_face())
-          throw std::logic_error(caller + ": building the raw strip failed");
+      if ((point(inner[p]) - point(qq)).squaredNorm() <= (point(inner[q]) - point(pp)).squaredNorm()) {
+        add_face(inner[p], inner[q], qq);
+        add_face(inner[p], qq, pp);
+      }
+      else {
+        add_face(inner[p], inner[q], pp);
+        add_face(inner[q], qq, pp);
+      }
       put(edge_constrained, strip.edge(strip.halfedge(inner[p], inner[q])), true);
     }
+    for (std::size_t i = 0; i < k; ++i)
+      for (std::size_t j = 0; j + 1 < fans[i].size(); ++j) {
+        const Eigen::Index bi = static_cast<Eigen::Index>(get(vim, target(loops[l][i], tm)));
+        add_face(inner[bi], fans[i][j + 1], fans[i][j]);
+      }
   }
 
   // Target length: the mesh's mean edge length, raised if needed so that the protected old
@@ -419,6 +546,8 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
   // Number the new vertices and place them on the reference strip: same triangle of the raw
   // strip, same barycentric coordinates.
   Boundary_strip result;
+  result.report.number_of_grown_edges = report.grown_edges.size();
+  result.report.grown_edges = std::move(report.grown_edges);
   auto index = strip.add_property_map<strip_vertex, Eigen::Index>("v:fas_index", -1).first;
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Strip_mesh>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, Primitive>>;
@@ -467,6 +596,7 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
       check_face(fv, *reference, result.reference_points, " in the reference mesh M_0");
     result.faces.push_back(fv);
   }
+  check_grown_surface(tm, vim, x, result.points, result.faces, caller);
   result.report.number_of_new_vertices = result.points.size();
   result.report.number_of_new_faces = result.faces.size();
   result.report.grown_boundary_length = grown_length;
