@@ -109,6 +109,12 @@ constexpr double fan_turn = CGAL_PI / 2 + 1e-9;
 // Beyond this concave turn between two grown edges (an inside angle below 60 degrees), the two
 // offsets would meet more than 2 d from the vertex: growing there is refused.
 constexpr double max_concave_turn = 2 * CGAL_PI / 3;
+// A strip whose height is below this fraction of the mesh's mean edge length is thin: it is not
+// remeshed, and its quads whose old edge is longer than mid_vertex_ratio times the height get a
+// vertex in the middle of their outer side (a right quad of sides a and d then splits into
+// triangles with angles >= 20 degrees for a / d in [2.5, 5.5], two triangles do for a / d <= 2.75).
+constexpr double thin_strip = 0.6;
+constexpr double mid_vertex_ratio = 2.5;
 
 template <class Options>
 Growth_options read_growth_options(const Options& np, const char* caller)
@@ -384,6 +390,20 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
   };
   auto degrees = [](double angle) { return std::to_string(int(std::lround(angle * 180 / CGAL_PI))); };
 
+  // A strip thinner than the edges is built directly, and not remeshed: the remesher could only
+  // keep the old boundary's edges, too long for the strip's height, by making thin triangles.
+  double total_length = 0;
+  std::size_t number_of_mesh_edges = 0;
+  for (auto e : edges(tm)) {
+    const auto h = halfedge(e, tm);
+    total_length +=
+        (position<TriangleMesh>(x, vim, target(h, tm)) - position<TriangleMesh>(x, vim, source(h, tm)))
+            .norm();
+    ++number_of_mesh_edges;
+  }
+  const double mean_length = total_length / static_cast<double>(number_of_mesh_edges);
+  const bool thin = distance < thin_strip * mean_length;
+
   Growth_report report;
   double grown_length = 0, longest_inner_edge = 0;
   for (std::size_t l = 0; l < loops.size(); ++l) {
@@ -495,7 +515,19 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
            << ": the offset curve folds over there (grow by a smaller distance, in several steps)";
         throw_growth_error(caller, os.str());
       }
-      if ((point(inner[p]) - point(qq)).squaredNorm() <= (point(inner[q]) - point(pp)).squaredNorm()) {
+      if (thin && pq.norm() > mid_vertex_ratio * distance) {
+        // A thin quad: a vertex in the middle of its outer side makes three triangles whose
+        // angles stay above 20 degrees while the edge is at most 5.5 times the distance.
+        const strip_vertex mid = strip.add_vertex(to_point(0.5 * (point(pp) + point(qq))));
+        if (reference) {
+          raw_reference.resize(strip.number_of_vertices());
+          raw_reference[mid] = 0.5 * (raw_reference[pp] + raw_reference[qq]);
+        }
+        add_face(inner[p], inner[q], mid);
+        add_face(inner[q], qq, mid);
+        add_face(inner[p], mid, pp);
+      }
+      else if ((point(inner[p]) - point(qq)).squaredNorm() <= (point(inner[q]) - point(pp)).squaredNorm()) {
         add_face(inner[p], inner[q], qq);
         add_face(inner[p], qq, pp);
       }
@@ -514,33 +546,25 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
 
   // Target length: the mesh's mean edge length, raised if needed so that the protected old
   // edges are no longer than 4/3 of it (the remesher's precondition for protected edges).
-  double total_length = 0;
-  std::size_t number_of_mesh_edges = 0;
-  for (auto e : edges(tm)) {
-    const auto h = halfedge(e, tm);
-    total_length +=
-        (position<TriangleMesh>(x, vim, target(h, tm)) - position<TriangleMesh>(x, vim, source(h, tm)))
-            .norm();
-    ++number_of_mesh_edges;
-  }
-  const double target_length =
-      (std::max)(total_length / static_cast<double>(number_of_mesh_edges), 0.76 * longest_inner_edge);
+  const double target_length = (std::max)(mean_length, 0.76 * longest_inner_edge);
   const Strip_mesh raw = strip;
   const auto offset_done = Clock::now();
 
   namespace PMP = CGAL::Polygon_mesh_processing;
-  std::vector<Strip_mesh::Edge_index> free_edges;
-  for (auto e : strip.edges())
-    if (!get(edge_constrained, e))
-      free_edges.push_back(e);
-  PMP::split_long_edges(free_edges, 4. / 3. * target_length, strip,
-                        CGAL::parameters::edge_is_constrained_map(edge_constrained));
-  const std::vector<Strip_mesh::Face_index> strip_faces(strip.faces().begin(), strip.faces().end());
-  PMP::isotropic_remeshing(strip_faces, target_length, strip,
-                           CGAL::parameters::number_of_iterations(3)
-                               .edge_is_constrained_map(edge_constrained)
-                               .vertex_is_constrained_map(vertex_constrained)
-                               .protect_constraints(true));
+  if (!thin) {
+    std::vector<Strip_mesh::Edge_index> free_edges;
+    for (auto e : strip.edges())
+      if (!get(edge_constrained, e))
+        free_edges.push_back(e);
+    PMP::split_long_edges(free_edges, 4. / 3. * target_length, strip,
+                          CGAL::parameters::edge_is_constrained_map(edge_constrained));
+    const std::vector<Strip_mesh::Face_index> strip_faces(strip.faces().begin(), strip.faces().end());
+    PMP::isotropic_remeshing(strip_faces, target_length, strip,
+                             CGAL::parameters::number_of_iterations(3)
+                                 .edge_is_constrained_map(edge_constrained)
+                                 .vertex_is_constrained_map(vertex_constrained)
+                                 .protect_constraints(true));
+  }
   const auto remeshed = Clock::now();
 
   // Number the new vertices and place them on the reference strip: same triangle of the raw
