@@ -9,6 +9,8 @@
 // closed-form d^2 of each of the rectangle's four mitred corners), a report that lists the grown
 // edges, and, after growing the deformation itself, iterations that reach the alignment again.
 
+#include "expect_invalid_argument.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
@@ -19,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <gtest/gtest.h>
@@ -224,6 +227,96 @@ TEST(GrowBoundaryPoses, DeformationGrownAcrossTheFlowReconverges)
       expect_reconverges(source, source_center, source_normal, pose, fraction);
       expect_reconverges(saddle, saddle_center, saddle_normal, pose, fraction);
     }
+}
+
+// --- Corners and where growing is impossible ------------------------------------------------
+
+// A planar mesh of unit cells (two triangles each) at the cells (i, j) of an n x n grid for
+// which `keep(i, j)` holds.
+template <class Keep>
+Mesh cells(int n, const Keep& keep)
+{
+  Mesh tm;
+  std::vector<Mesh::Vertex_index> v((n + 1) * (n + 1));
+  auto at = [&](int i, int j) -> Mesh::Vertex_index& { return v[std::size_t(j * (n + 1) + i)]; };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      at(i, j) = tm.add_vertex(Point(i, j, 0));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (keep(i, j)) {
+        tm.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+        tm.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+      }
+  std::vector<Mesh::Vertex_index> isolated;
+  for (auto w : tm.vertices())
+    if (tm.is_isolated(w))
+      isolated.push_back(w);
+  for (auto w : isolated)
+    tm.remove_vertex(w);
+  tm.collect_garbage();
+  return tm;
+}
+
+template <class Call>
+void expect_refused_untouched(Mesh& tm, const Call& call, const std::vector<std::string>& parts)
+{
+  const std::size_t vertices = tm.number_of_vertices(), faces = tm.number_of_faces();
+  const std::vector<Point> before(tm.points().begin(), tm.points().end());
+  expect_invalid_argument(call, parts);
+  EXPECT_EQ(tm.number_of_vertices(), vertices);
+  EXPECT_EQ(tm.number_of_faces(), faces);
+  EXPECT_TRUE(std::equal(before.begin(), before.end(), tm.points().begin()));
+}
+
+// An equilateral triangle turns by 120 degrees at each corner: the offset curve goes round the
+// corners on an arc of radius d (a fan), so every new boundary vertex is within d of the old
+// triangle and no closer than the arc's chords (d cos 30 degrees); a miter would reach 2 d.
+TEST(GrowBoundaryCorners, SharpConvexCornersGoRoundOnAnArc)
+{
+  const double s = 1.0, d = 0.1;
+  const Point a(0, 0, 0), b(s, 0, 0), c(s / 2, s * std::sqrt(3.) / 2, 0);
+  Mesh tm;
+  CGAL::make_triangle(a, b, c, tm);
+  const FAS::Growth_report report = FAS::grow_boundary(tm, d);
+  EXPECT_EQ(report.number_of_grown_edges, 3u);
+  EXPECT_NEAR(report.grown_boundary_length, 3 * s, 1e-12);
+  const K::Triangle_3 old(a, b, c);
+  for (auto h : tm.halfedges())
+    if (tm.is_border(h)) {
+      const double r = std::sqrt(CGAL::squared_distance(tm.point(tm.target(h)), old));
+      EXPECT_LE(r, d * (1 + 1e-9));
+      EXPECT_GE(r, d * std::cos(CGAL_PI / 6) * (1 - 1e-9));
+    }
+  // d x length plus three fans of two 60-degree pieces each.
+  EXPECT_NEAR(report.added_area, 3 * s * d + 3 * 2 * 0.5 * d * d * std::sin(CGAL_PI / 3), 1e-12);
+  EXPECT_FALSE(PMP::does_self_intersect(tm));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(tm));
+}
+
+// A square ring cut open by a slit one cell wide: grown all around by more than half the slit,
+// the two ends would overlap.  The growth is refused, saying where, and nothing is modified.
+TEST(GrowBoundaryCorners, OverlapAcrossASlitIsRefusedSayingWhere)
+{
+  Mesh tm = cells(5, [](int i, int j) { return !(i >= 1 && i <= 3 && j >= 1 && j <= 3) && !(i == 4 && j == 2); });
+  expect_refused_untouched(tm, [&] { FAS::grow_boundary(tm, 0.6); },
+                           {"grow_boundary()", "would cut through", "at (", "untouched"});
+  // Below half the slit it grows.
+  const FAS::Growth_report report = FAS::grow_boundary(tm, 0.3);
+  EXPECT_GT(report.number_of_new_faces, 0u);
+  EXPECT_FALSE(PMP::does_self_intersect(tm));
+}
+
+// An arrowhead whose notch has an inside angle of 58 degrees: its two sides cannot both grow.
+TEST(GrowBoundaryCorners, TooSharpConcaveCornerIsRefusedNamingTheVertex)
+{
+  Mesh tm;
+  const auto tip = tm.add_vertex(Point(2, 0, 0)), up = tm.add_vertex(Point(0, 1, 0)),
+             notch = tm.add_vertex(Point(1.8, 0, 0)), down = tm.add_vertex(Point(0, -1, 0));
+  tm.add_face(tip, up, notch);
+  tm.add_face(tip, notch, down);
+  expect_refused_untouched(tm, [&] { FAS::grow_boundary(tm, 0.05); },
+                           {"concave corner of 58 degrees", "vertex 2 (1.8, 0, 0)", "untouched"});
 }
 
 } // namespace

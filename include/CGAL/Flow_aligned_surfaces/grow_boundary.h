@@ -438,7 +438,7 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
       if (in && out) {
         if (turn > fan_turn) {
           // A sharp convex corner: the arc of radius d about the vertex, in pieces of <= 60 degrees.
-          const int pieces = int(std::ceil(turn / (CGAL_PI / 3)));
+          const int pieces = int(std::ceil(turn / (CGAL_PI / 3) - 1e-9));
           for (int j = 0; j <= pieces; ++j) {
             const double theta = turn * j / pieces;
             offsets.push_back(distance * (std::cos(theta) * o_in + std::sin(theta) * t_in));
