@@ -1,19 +1,20 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Growing a surface at its boundary (Section 4 of the paper, after Schulze et al.): every
-// selected boundary vertex b moves to the offset point
-//
-//   b' = b + d m_b g_b,   g_b = unit projection of sum_e g_e on the tangent plane at b,
-//
-// where the sum runs over the selected boundary edges e at b, g_e is the edge's outward
-// direction o_e (in its face's plane, orthogonal to the edge) or, across the flow, the in-plane
-// direction n_e x v/|v| signed so that it points outward, and m_b = 1/cos(half the turn
-// between the two edges' g_e) keeps the offset curve at distance d from straight edges (a
-// miter, capped at 2).  The strip between the selected boundary and its offset curve (the quads
-// b_i b_{i+1} b'_{i+1} b'_i) is then tessellated with near-regular triangles of the mesh's mean
-// edge length by CGAL's isotropic remeshing, with the old boundary protected, and appended to
-// the mesh.  Nothing is removed from the mesh: descriptors and index maps stay valid.
+// Growing a surface at its boundary (Section 4 of the paper, after Schulze et al.): an offset
+// curve tangential to the surface is computed at the boundary and the strip between them is
+// tessellated.  The whole boundary, or the edges selected by a direction or by the flow (across
+// it), is offset: every selected edge moves by d along its own outward direction in the tangent
+// plane, whatever selected it, so a straight side moves by exactly d at any pose.  Between two
+// grown edges the offset curve takes the miter (the offset lines' intersection) where the
+// boundary turns by at most 90 degrees (concave turns up to 120), and an arc of radius d about
+// the vertex (a fan of triangles) at a sharper convex turn; a run of grown edges ends in a cap
+// orthogonal to its last edge (turned so as to keep 30 degrees from the old boundary beyond).
+// A strip thinner than the mesh's edges is triangulated directly (a vertex in the middle of the
+// outer side of a long quad), a wider one by CGAL's isotropic remeshing with the old boundary
+// protected.  A final guard refuses a result that would not be manifold or in which a new face
+// would cut through the surface.  Nothing is removed from the mesh: descriptors and index maps
+// stay valid.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_GROW_BOUNDARY_H
 #define CGAL_FLOW_ALIGNED_SURFACES_GROW_BOUNDARY_H
@@ -706,33 +707,45 @@ std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> appen
 \ingroup PkgFlowAlignedSurfacesRef
 
 \brief Grows `tm` at its boundary by `distance`: offsets the whole boundary, or the part of it
-selected by the named parameters, along its outward direction in the surface's tangent plane,
-and tessellates the new strip with near-regular triangles of the mesh's mean edge length.
+selected by the named parameters, by `distance` in the surface's tangent plane, and tessellates
+the new strip with near-regular triangles.
 
 Every boundary edge \f$ e \f$ has an outward direction \f$ o_e \f$: in the plane of its face,
 orthogonal to the edge, pointing away from the face.  An edge is grown when
 - no `growth_direction` \f$ d \f$ is given, or the projection \f$ d_e \f$ of \f$ d \f$ on the plane
   of its face satisfies \f$ o_e \cdot d_e / \|d_e\| \ge \cos 60° = 1/2 \f$, and
 - `across_flow` is `false`, or the direction across the flow at the edge's midpoint,
-  \f$ a_e = \pm n_e \times v / \|v\| \f$ signed so that \f$ a_e \cdot o_e > 0 \f$, satisfies
-  \f$ a_e \cdot o_e \ge 1/2 \f$ (the outward direction is within 60° of across the flow).
+  \f$ a_e = n_e \times v / \|v\| \f$, satisfies \f$ |a_e \cdot o_e| \ge 1/2 \f$: the edge's
+  outward direction is within 60° of across the flow, on either side.
 
-Each vertex of a grown edge moves to \f$ b' = b + d\, m_b\, g_b \f$: \f$ g_b \f$ is the sum of the
-growth directions (\f$ o_e \f$, or \f$ a_e \f$ with `across_flow`) of its grown edges projected on the
-tangent plane at \f$ b \f$ (the area-weighted vertex normal) and normalized, and \f$ m_b \f$ the
-miter factor \f$ 1/\cos(\text{half the turn between them}) \f$ capped at 2, so that a straight side
-moves by exactly `distance` and a rectangle grows into a rectangle.  The quads between the old
-and the new boundary are tessellated by `CGAL::Polygon_mesh_processing::split_long_edges()` and
+The direction or the flow only selects the edges: every grown edge moves by `distance` along its
+own outward direction (taken in the tangent plane at each of its vertices, normal to the area
+weighted vertex normal), so that a straight side moves by exactly `distance` and the added area
+is `distance` times the grown length plus what the corners add, whatever the patch's pose
+against the flow.  At a vertex between two grown edges the offset curve takes
+- the miter, the intersection of the two edges' offset lines, where the boundary turns by at
+  most 90° outward (a rectangle grows into the larger rectangle) or at most 120° inward;
+- an arc of radius `distance` about the vertex, in pieces of at most 60° (a fan of triangles),
+  where it turns outward by more than 90°;
+
+and a run of grown edges ends in a cap orthogonal to its end edge, turned toward the run where
+the old boundary beyond bends into the strip's way so that 30° stay between them.
+The strip between the old and the new boundary is tessellated with triangles of about the
+mesh's mean edge length by `CGAL::Polygon_mesh_processing::split_long_edges()` and
 `CGAL::Polygon_mesh_processing::isotropic_remeshing()` (three iterations, target length the mean
-edge length of `tm`, raised to 3/4 of the longest grown edge if that is larger) on a separate
-mesh, with the old boundary edges and vertices and the corners of the new boundary protected,
-and the result is appended to `tm`.  Nothing is removed from `tm`: its vertices and faces keep
-their descriptors and its index maps stay valid.
+edge length of `tm`, raised to 3/4 of the longest grown edge if that is larger), with the old
+boundary edges and vertices and the corners of the new boundary protected.  A strip thinner
+than 0.6 times the mean edge length is triangulated directly instead: each grown edge's quad in
+two triangles, or in three with a vertex in the middle of its outer side when the edge is longer
+than 2.5 times `distance`; its smallest angle stays at or above 20° while the old boundary edges
+are at most 5.5 times `distance` (they are not split).  The strip is built on a separate mesh and
+appended to `tm`: nothing is removed from `tm`, its vertices and faces keep their descriptors and
+its index maps stay valid.  The result is then checked: the grown surface must be manifold and
+no new face may intersect another face of the surface (beyond a shared vertex or edge),
+otherwise the growth is refused and `tm` is left untouched.
 
 The offset is first order: on a curved surface the strip lies in the tangent planes of the
-boundary, and where the boundary is concave it must not fold over (the distance must stay below
-the boundary's radius of curvature there); grow in several small steps to follow a curved
-surface.  The new strip is not tested against the rest of the surface for intersections.
+boundary; grow in several small steps to follow a curved surface.
 
 \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph` whose faces are
         triangles (`CGAL::Surface_mesh`, `CGAL::Polyhedron_3`, OpenMesh meshes)
@@ -760,8 +773,9 @@ surface.  The new strip is not tested against the rest of the surface for inters
     \cgalParamDefault{the whole boundary is grown}
   \cgalParamNEnd
   \cgalParamNBegin{across_flow}
-    \cgalParamDescription{grow only where the outward direction is within 60° of across the flow,
-      and along the direction across the flow (`CGAL::Flow_aligned_surfaces::parameters::across_flow()`);
+    \cgalParamDescription{grow only the boundary edges whose outward direction is within 60° of
+      across the flow, on either side (`CGAL::Flow_aligned_surfaces::parameters::across_flow()`): on a
+      tangential surface, the sides along the streamlines, which then move outward across them;
       needs `flow_field`}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
@@ -773,14 +787,18 @@ surface.  The new strip is not tested against the rest of the surface for inters
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns what was grown: new vertices and faces, the length of the grown boundary part, the
+\returns what was grown: new vertices and faces, the grown boundary edges and their length, the
          added area.
 \throws std::invalid_argument, before `tm` is modified, if `tm` is not a valid manifold triangle
         mesh or is closed, `distance` is not positive and finite, `growth_direction` is zero,
         parallel to the normal at every boundary edge or faces no boundary edge, `across_flow`
         is given without `flow_field`, the flow is zero or undefined at every boundary edge, no
-        edge faces across the flow, or the distance is so large that the offset boundary folds
-        over or a new face would be degenerate.  The message names what is wrong.
+        edge faces across the flow, or growing is impossible at this distance: the boundary has
+        a concave corner sharper than 60° between two grown edges or folds back at the end of a
+        grown part, the offset curve folds over (a concave part whose radius of curvature is
+        below `distance`), a new face would be degenerate, or the grown surface would be
+        non-manifold or cut through itself (parts of the boundary closer than about twice
+        `distance`).  The message says why and where (the vertex or the point).
 
 \sa `Flow_aligned_deformation::grow()`
 */
