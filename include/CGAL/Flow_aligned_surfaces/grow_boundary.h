@@ -30,6 +30,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
@@ -39,6 +40,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -72,6 +74,7 @@ struct Growth_report {
   double remesh_ms = 0;        ///< time spent tessellating the strip (split and isotropic remeshing)
   double reference_map_ms = 0; ///< time spent placing the new vertices in \f$ M_0 \f$ and appending them
   double factor_ms = 0;        ///< time spent rebuilding and refactoring the operators (the class only)
+  double check_ms = 0; ///< time spent checking the grown surface (manifold, no face cutting through another)
   std::size_t number_of_grown_edges = 0; ///< boundary edges that were grown (the size of `grown_edges`)
   /// The boundary edges that were grown, each as the indices of its two vertices (source and
   /// target of its border halfedge): positions in the order of `vertices(tm)` before growing for
@@ -251,8 +254,21 @@ void check_grown_surface(const TriangleMesh& tm, VertexIndexMap vim, const Posit
       os << "the grown surface would be non-manifold at the point (" << p << ") (grow by a smaller distance)";
       throw_growth_error(caller, os.str());
     }
+  // Only the new faces and the old faces whose boxes meet theirs are tested: on a large surface
+  // a full self-intersection test would cost as much as the rest of the growth.
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, Mesh::Face_index>;
+  std::vector<Box> new_boxes, old_boxes;
+  for (auto f : whole.faces())
+    (std::size_t(f) >= old_faces ? new_boxes : old_boxes).emplace_back(PMP::face_bbox(f, whole), f);
+  std::vector<char> near(old_faces, 0);
+  CGAL::box_intersection_d(new_boxes.begin(), new_boxes.end(), old_boxes.begin(), old_boxes.end(),
+                           [&](const Box&, const Box& old) { near[std::size_t(old.info())] = 1; });
+  std::vector<Mesh::Face_index> tested;
+  for (auto f : whole.faces())
+    if (std::size_t(f) >= old_faces || near[std::size_t(f)])
+      tested.push_back(f);
   std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
-  PMP::self_intersections(whole, std::back_inserter(pairs));
+  PMP::self_intersections(tested, whole, std::back_inserter(pairs));
   for (const auto& pair : pairs) {
     const std::size_t a = std::size_t(pair.first), b = std::size_t(pair.second);
     if (a < old_faces && b < old_faces)
@@ -621,13 +637,15 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
       check_face(fv, *reference, result.reference_points, " in the reference mesh M_0");
     result.faces.push_back(fv);
   }
+  const auto mapped = Clock::now();
   check_grown_surface(tm, vim, x, result.points, result.faces, caller);
   result.report.number_of_new_vertices = result.points.size();
   result.report.number_of_new_faces = result.faces.size();
   result.report.grown_boundary_length = grown_length;
   result.report.offset_ms = std::chrono::duration<double, std::milli>(offset_done - start).count();
   result.report.remesh_ms = std::chrono::duration<double, std::milli>(remeshed - offset_done).count();
-  result.report.reference_map_ms = std::chrono::duration<double, std::milli>(Clock::now() - remeshed).count();
+  result.report.reference_map_ms = std::chrono::duration<double, std::milli>(mapped - remeshed).count();
+  result.report.check_ms = std::chrono::duration<double, std::milli>(Clock::now() - mapped).count();
   return result;
 }
 
