@@ -30,7 +30,6 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
@@ -49,12 +48,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -210,8 +211,11 @@ Eigen::Matrix3d boundary_vertex_frame(const TriangleMesh& tm, VertexIndexMap vim
 }
 
 // The guard on the result: the old faces of `tm` (positions `x`) and the new faces (new vertex
-// i at `added[i - m]`), as one mesh, must be manifold, and no new face may intersect another
-// face other than along their shared vertices or edge.  Throws naming where otherwise.
+// i at `added[i - m]`) must make a manifold surface, and no new face may intersect another face
+// other than along their shared vertices or edge.  Throws naming where otherwise.  Only the new
+// faces and the old faces whose bounding boxes meet theirs are put in a mesh and tested (they
+// include every old face at a vertex of the strip, so the manifold test is complete): on a large
+// surface, a test of the whole would cost as much as the rest of the growth.
 template <class TriangleMesh, class VertexIndexMap>
 void check_grown_surface(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x,
                          const std::vector<Eigen::Vector3d>& added,
@@ -221,62 +225,130 @@ void check_grown_surface(const TriangleMesh& tm, VertexIndexMap vim, const Posit
   using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
   namespace PMP = CGAL::Polygon_mesh_processing;
   const Eigen::Index m = x.rows();
-  Mesh whole;
-  std::vector<Mesh::Vertex_index> vs;
-  for (Eigen::Index i = 0; i < m; ++i)
-    vs.push_back(whole.add_vertex(Epick::Point_3(x(i, 0), x(i, 1), x(i, 2))));
-  for (const Eigen::Vector3d& p : added)
-    vs.push_back(whole.add_vertex(Epick::Point_3(p.x(), p.y(), p.z())));
+  auto at = [&](Eigen::Index v) -> Eigen::Vector3d {
+    return v < m ? Eigen::Vector3d(x.row(v).transpose()) : added[std::size_t(v - m)];
+  };
+  auto box = [&](const std::array<Eigen::Index, 3>& f) {
+    const Eigen::Vector3d a = at(f[0]), b = at(f[1]), c = at(f[2]);
+    const Eigen::Vector3d lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
+    return CGAL::Bbox_3(lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z());
+  };
+  std::vector<std::array<Eigen::Index, 3>> old_faces;
+  old_faces.reserve(num_faces(tm));
   for (auto f : faces(tm)) {
-    std::vector<Mesh::Vertex_index> fv;
+    std::array<Eigen::Index, 3> fv;
+    int i = 0;
     for (auto v : vertices_around_face(halfedge(f, tm), tm))
-      fv.push_back(vs[get(vim, v)]);
-    whole.add_face(fv);
+      fv[i++] = Eigen::Index(get(vim, v));
+    old_faces.push_back(fv);
   }
-  const std::size_t old_faces = whole.number_of_faces();
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+  std::vector<Box> new_boxes, old_boxes;
+  for (std::size_t j = 0; j < new_faces.size(); ++j)
+    new_boxes.emplace_back(box(new_faces[j]), j);
+  // A hashed grid of cells as large as the largest new face's box first keeps the old faces
+  // that may reach a new one (a colliding hash only keeps one more): the box intersection then
+  // sorts these only, not the whole surface.
+  double cell = 0;
+  for (const Box& b : new_boxes)
+    for (int i = 0; i < 3; ++i)
+      cell = (std::max)(cell, b.max_coord(i) - b.min_coord(i));
+  cell = cell > 0 ? cell : 1;
+  auto cells_of = [&](const CGAL::Bbox_3& b, std::array<std::int64_t, 6>& range) {
+    std::int64_t count = 1;
+    for (int i = 0; i < 3; ++i) {
+      range[2 * i] = std::int64_t(std::floor(b.min(i) / cell));
+      range[2 * i + 1] = std::int64_t(std::floor(b.max(i) / cell));
+      count *= range[2 * i + 1] - range[2 * i] + 1;
+    }
+    return count;
+  };
+  auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return i * 73856093 ^ j * 19349663 ^ k * 83492791;
+  };
+  std::unordered_set<std::int64_t> occupied;
+  std::array<std::int64_t, 6> r;
+  for (const Box& b : new_boxes) {
+    cells_of(b.bbox(), r);
+    for (std::int64_t i = r[0]; i <= r[1]; ++i)
+      for (std::int64_t j = r[2]; j <= r[3]; ++j)
+        for (std::int64_t k = r[4]; k <= r[5]; ++k)
+          occupied.insert(key(i, j, k));
+  }
+  for (std::size_t f = 0; f < old_faces.size(); ++f) {
+    const CGAL::Bbox_3 b = box(old_faces[f]);
+    bool candidate = cells_of(b, r) > 64; // a face much larger than the new ones: kept
+    for (std::int64_t i = r[0]; i <= r[1] && !candidate; ++i)
+      for (std::int64_t j = r[2]; j <= r[3] && !candidate; ++j)
+        for (std::int64_t k = r[4]; k <= r[5] && !candidate; ++k)
+          candidate = occupied.count(key(i, j, k)) > 0;
+    if (candidate)
+      old_boxes.emplace_back(b, f);
+  }
+  std::vector<char> near(old_faces.size(), 0);
+  CGAL::box_intersection_d(new_boxes.begin(), new_boxes.end(), old_boxes.begin(), old_boxes.end(),
+                           [&](const Box&, const Box& old) { near[old.info()] = 1; });
+
+  // The local mesh: the near old faces, then the new ones.  A subset of a manifold mesh may be
+  // one that Surface_mesh cannot assemble in this order (a vertex whose faces touch in several
+  // fans); then the whole surface is taken.
+  Mesh local;
+  std::vector<Mesh::Vertex_index> local_vertex;
+  auto vertex = [&](Eigen::Index v) {
+    Mesh::Vertex_index& w = local_vertex[std::size_t(v)];
+    if (w == Mesh::null_vertex()) {
+      const Eigen::Vector3d p = at(v);
+      w = local.add_vertex(Epick::Point_3(p.x(), p.y(), p.z()));
+    }
+    return w;
+  };
+  auto add = [&](const std::array<Eigen::Index, 3>& f) {
+    return local.add_face(vertex(f[0]), vertex(f[1]), vertex(f[2])) != Mesh::null_face();
+  };
+  auto add_old_faces = [&](bool all) {
+    local.clear();
+    local_vertex.assign(std::size_t(m) + added.size(), Mesh::null_vertex());
+    for (std::size_t j = 0; j < old_faces.size(); ++j)
+      if ((all || near[j]) && !add(old_faces[j]))
+        return false;
+    return true;
+  };
+  if (!add_old_faces(false))
+    add_old_faces(true);
+  const std::size_t number_of_old_faces = local.number_of_faces();
+
   auto centroid = [&](const std::array<Eigen::Index, 3>& f) {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (Eigen::Index v : f)
-      c += v < m ? Eigen::Vector3d(x.row(v).transpose()) : added[std::size_t(v - m)];
+    const Eigen::Vector3d c = (at(f[0]) + at(f[1]) + at(f[2])) / 3;
     std::ostringstream os;
-    os << "(" << c.x() / 3 << ", " << c.y() / 3 << ", " << c.z() / 3 << ")";
+    os << "(" << c.x() << ", " << c.y() << ", " << c.z() << ")";
     return os.str();
   };
   for (const auto& f : new_faces)
-    if (whole.add_face(vs[std::size_t(f[0])], vs[std::size_t(f[1])], vs[std::size_t(f[2])]) == Mesh::null_face())
+    if (!add(f))
       throw_growth_error(caller, "the new face at " + centroid(f) +
                                      " would make the surface non-manifold (grow by a smaller distance)");
   std::vector<Mesh::Halfedge_index> non_manifold;
-  PMP::non_manifold_vertices(whole, std::back_inserter(non_manifold));
-  if (!non_manifold.empty()) { // tm itself was checked to be manifold
-      const auto& p = whole.point(whole.target(non_manifold.front()));
-      std::ostringstream os;
-      os << "the grown surface would be non-manifold at the point (" << p << ") (grow by a smaller distance)";
-      throw_growth_error(caller, os.str());
-    }
-  // Only the new faces and the old faces whose boxes meet theirs are tested: on a large surface
-  // a full self-intersection test would cost as much as the rest of the growth.
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, Mesh::Face_index>;
-  std::vector<Box> new_boxes, old_boxes;
-  for (auto f : whole.faces())
-    (std::size_t(f) >= old_faces ? new_boxes : old_boxes).emplace_back(PMP::face_bbox(f, whole), f);
-  std::vector<char> near(old_faces, 0);
-  CGAL::box_intersection_d(new_boxes.begin(), new_boxes.end(), old_boxes.begin(), old_boxes.end(),
-                           [&](const Box&, const Box& old) { near[std::size_t(old.info())] = 1; });
-  std::vector<Mesh::Face_index> tested;
-  for (auto f : whole.faces())
-    if (std::size_t(f) >= old_faces || near[std::size_t(f)])
-      tested.push_back(f);
+  PMP::non_manifold_vertices(local, std::back_inserter(non_manifold));
+  for (auto h : non_manifold) // tm was checked to be manifold: only a vertex of a new face can be
+    for (auto g : CGAL::halfedges_around_target(h, local))
+      if (!local.is_border(g) && std::size_t(local.face(g)) >= number_of_old_faces) {
+        const auto& p = local.point(local.target(h));
+        std::ostringstream os;
+        os << "the grown surface would be non-manifold at the point (" << p
+           << ") (grow by a smaller distance)";
+        throw_growth_error(caller, os.str());
+      }
   std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
-  PMP::self_intersections(tested, whole, std::back_inserter(pairs));
+  PMP::self_intersections(local, std::back_inserter(pairs));
   for (const auto& pair : pairs) {
     const std::size_t a = std::size_t(pair.first), b = std::size_t(pair.second);
-    if (a < old_faces && b < old_faces)
+    if (a < number_of_old_faces && b < number_of_old_faces)
       continue; // the old surface's own intersections are not the growth's doing
-    const std::array<Eigen::Index, 3>& f = new_faces[(a >= old_faces ? a : b) - old_faces];
+    const std::array<Eigen::Index, 3>& f = new_faces[(a >= number_of_old_faces ? a : b) - number_of_old_faces];
     throw_growth_error(caller, std::string("the new face at ") + centroid(f) + " would cut through " +
-                                   ((a >= old_faces && b >= old_faces) ? "another new face"
-                                                                         : "an old face of the surface") +
+                                   ((a >= number_of_old_faces && b >= number_of_old_faces)
+                                        ? "another new face"
+                                        : "an old face of the surface") +
                                    " (the boundary comes back near itself there; grow by a smaller "
                                    "distance or along fewer edges)");
   }
