@@ -50,8 +50,10 @@ namespace Flow_aligned_surfaces {
 /// \ingroup PkgFlowAlignedSurfacesRef
 /// Why `integrate_stream_surface()` stopped.
 enum class Stream_surface_termination {
-  MAX_INTEGRATION_TIME, ///< the last time line is at `max_time` (or `max_length` with arc-length time lines)
-  MAX_NUMBER_OF_TIME_LINES, ///< `max_number_of_time_lines` time lines were computed
+  MAX_INTEGRATION_TIME,     ///< the last time line is at `max_time`
+  MAX_LENGTH,               ///< the last time line is at `max_length` (arc-length time lines)
+  MAX_NUMBER_OF_TIME_LINES, ///< `max_number_of_time_lines` time lines were computed, before `max_time`
+                            ///< (`max_length`); the message says how far the last one got
   NO_PARTICLE_LEFT,         ///< every front piece left the domain, stagnated or was torn to single particles
   MAX_NUMBER_OF_VERTICES,   ///< the surface reached `max_number_of_vertices`
   SEED_OUTSIDE_DOMAIN,      ///< no point of the seed is inside the field's domain: empty result
@@ -59,7 +61,45 @@ enum class Stream_surface_termination {
 };
 
 /// \ingroup PkgFlowAlignedSurfacesRef
-/// What `integrate_stream_surface()` did.
+/// returns the name of `t` (`"MAX_LENGTH"`, ...), for messages.
+inline const char* to_string(Stream_surface_termination t)
+{
+  switch (t) {
+  case Stream_surface_termination::MAX_INTEGRATION_TIME:
+    return "MAX_INTEGRATION_TIME";
+  case Stream_surface_termination::MAX_LENGTH:
+    return "MAX_LENGTH";
+  case Stream_surface_termination::MAX_NUMBER_OF_TIME_LINES:
+    return "MAX_NUMBER_OF_TIME_LINES";
+  case Stream_surface_termination::NO_PARTICLE_LEFT:
+    return "NO_PARTICLE_LEFT";
+  case Stream_surface_termination::MAX_NUMBER_OF_VERTICES:
+    return "MAX_NUMBER_OF_VERTICES";
+  case Stream_surface_termination::SEED_OUTSIDE_DOMAIN:
+    return "SEED_OUTSIDE_DOMAIN";
+  case Stream_surface_termination::SEED_AT_REST:
+    return "SEED_AT_REST";
+  }
+  return "?";
+}
+
+/// \ingroup PkgFlowAlignedSurfacesRef
+/// How far one direction of `integrate_stream_surface()` got and why it stopped.
+struct Stream_surface_half_report {
+  /// the number of time lines computed after the seed curve
+  std::size_t number_of_time_lines = 0;
+  /// the time-line parameter \f$ \tau \ge 0 \f$ of the last time line
+  double final_parameter = 0;
+  /// why the integration stopped
+  Stream_surface_termination termination = Stream_surface_termination::NO_PARTICLE_LEFT;
+  /// the reason in words, naming the limit and its value
+  std::string message;
+};
+
+/// \ingroup PkgFlowAlignedSurfacesRef
+/// What `integrate_stream_surface()` did.  With `Integration_direction::BOTH` the counts are
+/// those of the whole surface, `number_of_time_lines`, `final_parameter`, `termination` and
+/// `message` those of the forward half, and `backward` says how far the backward half got.
 struct Stream_surface_report {
   /// the number of time lines computed after the seed curve
   std::size_t number_of_time_lines = 0;
@@ -87,8 +127,11 @@ struct Stream_surface_report {
   double time_line_step = 0;
   /// why the integration stopped
   Stream_surface_termination termination = Stream_surface_termination::NO_PARTICLE_LEFT;
-  /// the reason in words
+  /// the reason in words, naming the limit and its value
   std::string message;
+  /// with `Integration_direction::BOTH`: the backward half's time lines, last parameter and
+  /// termination; empty otherwise
+  std::optional<Stream_surface_half_report> backward;
 };
 
 namespace internal {
@@ -192,34 +235,70 @@ public:
     std::size_t max_time_lines, max_vertices, max_steps;
     int direction;
     Integration_tolerances tolerances;
+    // The backward half is written with its triangles reversed, so that every surface is oriented
+    // by ∂x/∂u × v, and, within a BOTH surface, with negative τ.
+    bool reverse_triangles = false;
+    double written_tau_sign = 1;
   };
 
+  // The vertices of the seed samples, shared by the two halves of a BOTH surface: the first
+  // half writes those it creates, the second reuses them.
+  using Seed_vertices = std::vector<std::optional<vertex_descriptor>>;
+
   Stream_surface_front(const FlowField& field, bool normalize, const Seed_curve& seed,
-                       const Settings& settings, TriangleMesh& tm, VPM vpm, UMap u_map, TMap t_map)
+                       const Settings& settings, TriangleMesh& tm, VPM vpm, UMap u_map, TMap t_map,
+                       Seed_vertices& seed_vertices)
       : m_field{&field, normalize}, m_seed(seed), m_s(settings), m_tm(tm), m_vpm(vpm), m_u_map(u_map),
-        m_t_map(t_map)
+        m_t_map(t_map), m_seed_vertices(seed_vertices)
   {
   }
 
   Stream_surface_report run(Stream_surface_report report)
   {
     m_report = std::move(report);
+    m_report.number_of_time_lines = 0;
+    m_report.final_parameter = 0;
+    m_report.termination = Stream_surface_termination::NO_PARTICLE_LEFT;
     seed_front();
+    advance_front();
+    for (const auto& [sample, node] : m_seed_nodes)
+      if (m_nodes[node].vertex)
+        m_seed_vertices[sample] = m_nodes[node].vertex;
+    return m_report;
+  }
+
+private:
+  // The time lines, until a limit is reached or no particle is left.
+  void advance_front()
+  {
     if (m_pieces.empty())
-      return m_report;
+      return;
+    const char* limit = m_field.normalize ? "max_length" : "max_time";
     for (std::size_t k = 1;; ++k) {
       if (m_pieces.empty())
         return finish(Stream_surface_termination::NO_PARTICLE_LEFT, "no particle left");
+      // The limit in τ first: when it is reached on the last allowed time line, it is what stopped.
+      if (m_parameter >= m_s.max_parameter)
+        return finish(m_field.normalize ? Stream_surface_termination::MAX_LENGTH
+                                        : Stream_surface_termination::MAX_INTEGRATION_TIME,
+                      std::string(limit) + " " + printable(m_s.max_parameter) + " reached");
       if (k > m_s.max_time_lines)
         return finish(Stream_surface_termination::MAX_NUMBER_OF_TIME_LINES,
-                      "max_number_of_time_lines reached");
-      if (m_parameter >= m_s.max_parameter)
-        return finish(Stream_surface_termination::MAX_INTEGRATION_TIME,
-                      m_field.normalize ? "max_length reached" : "max_time reached");
+                      "max_number_of_time_lines (" + std::to_string(m_s.max_time_lines) + ") reached at " +
+                          (m_field.normalize ? "length " : "time ") + printable(m_parameter) +
+                          (std::isfinite(m_s.max_parameter)
+                               ? ", before " + std::string(limit) + " " + printable(m_s.max_parameter)
+                               : ", no " + std::string(limit) + " given"));
       if (m_report.number_of_vertices >= m_s.max_vertices || m_nodes.size() >= 2 * m_s.max_vertices)
-        return finish(Stream_surface_termination::MAX_NUMBER_OF_VERTICES, "max_number_of_vertices reached");
+        return finish(Stream_surface_termination::MAX_NUMBER_OF_VERTICES,
+                      "max_number_of_vertices (" + std::to_string(m_s.max_vertices) + ") reached at " +
+                          (m_field.normalize ? "length " : "time ") + printable(m_parameter));
       m_previous_parameter = m_parameter;
-      m_parameter = std::min(double(k) * m_s.step, m_s.max_parameter);
+      // The last time line is at the limit; one that would end less than Δ/2 before it is moved
+      // there (not a strip of slivers behind it).
+      m_parameter = double(k) * m_s.step;
+      if (m_parameter >= m_s.max_parameter || m_s.max_parameter - m_parameter < 0.5 * m_s.step)
+        m_parameter = m_s.max_parameter;
       std::vector<std::vector<Particle>> next;
       for (std::vector<Particle>& piece : m_pieces)
         advance_piece(piece, next);
@@ -229,7 +308,6 @@ public:
     }
   }
 
-private:
   struct Particle {
     Particle(double u, Integrator integrator) : u(u), integrator(std::move(integrator)) {}
     double u;
@@ -249,11 +327,18 @@ private:
     std::optional<vertex_descriptor> vertex;
   };
 
-  const Stream_surface_report& finish(Stream_surface_termination why, const char* message)
+  void finish(Stream_surface_termination why, std::string message)
   {
     m_report.termination = why;
-    m_report.message = message;
-    return m_report;
+    m_report.message = std::move(message);
+  }
+
+  static std::string printable(double x)
+  {
+    std::ostringstream os;
+    os.precision(6);
+    os << x;
+    return os.str();
   }
 
   std::size_t add_node(const Particle& p)
@@ -269,7 +354,7 @@ private:
       const vertex_descriptor v = add_vertex(m_tm);
       put(m_vpm, v, Mesh_point(Mesh_FT(node.x[0]), Mesh_FT(node.x[1]), Mesh_FT(node.x[2])));
       put(m_u_map, v, node.u);
-      put(m_t_map, v, node.tau);
+      put(m_t_map, v, node.tau == 0 ? 0. : m_s.written_tau_sign * node.tau);
       node.vertex = v;
       ++m_report.number_of_vertices;
     }
@@ -278,6 +363,8 @@ private:
 
   void add_triangle(std::size_t a, std::size_t b, std::size_t c)
   {
+    if (m_s.reverse_triangles)
+      std::swap(b, c);
     const std::array<vertex_descriptor, 3> v = {vertex(a), vertex(b), vertex(c)};
     if (CGAL::Euler::add_face(v, m_tm) == boost::graph_traits<TriangleMesh>::null_face())
       ++m_report.number_of_refused_faces;
@@ -338,6 +425,7 @@ private:
     // rest make the first front pieces.
     const std::size_t n = static_cast<std::size_t>(
         std::min(std::ceil(m_seed.length() / m_s.spacing), double(m_s.max_vertices)));
+    m_seed_vertices.resize(n + 1); // the same samples in both halves
     std::vector<Particle> piece;
     std::size_t inside = 0, moving = 0;
     for (std::size_t i = 0; i <= n; ++i) {
@@ -352,6 +440,8 @@ private:
       }
       if (usable) {
         p.node = add_node(p);
+        m_nodes[p.node].vertex = m_seed_vertices[i];
+        m_seed_nodes.emplace_back(i, p.node);
         piece.push_back(std::move(p));
       }
       else if (!piece.empty()) {
@@ -361,7 +451,7 @@ private:
     }
     if (!piece.empty())
       m_pieces.push_back(std::move(piece));
-    m_report.number_of_lost_particles = (n + 1) - moving;
+    m_report.number_of_lost_particles += (n + 1) - moving;
     if (inside == 0) {
       m_pieces.clear();
       finish(Stream_surface_termination::SEED_OUTSIDE_DOMAIN,
@@ -553,6 +643,8 @@ private:
   VPM m_vpm;
   UMap m_u_map;
   TMap m_t_map;
+  Seed_vertices& m_seed_vertices;
+  std::vector<std::pair<std::size_t, std::size_t>> m_seed_nodes; // (seed sample, node)
   Stream_surface_report m_report;
   std::vector<Node> m_nodes;
   std::vector<std::vector<Particle>> m_pieces;
@@ -727,12 +819,13 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
                                                   seed.length() / double(seed.number_of_segments())),
                                  "front_spacing");
   // The stream lines' own options: tolerances, max_time / max_length, steps, direction.
-  const internal::Streamline_options lines =
-      internal::read_streamline_options(np, "integrate_stream_surface");
-  if (lines.direction == Integration_direction::BOTH)
-    throw std::invalid_argument(
-        "integrate_stream_surface: integration_direction is BOTH; expected FORWARD or "
-        "BACKWARD (integrate the two halves with two calls)");
+  internal::Streamline_options lines = internal::read_streamline_options(np, "integrate_stream_surface");
+  // Tighter than a stream line's defaults: the vertices then follow the sampled field as closely
+  // as its interpolation allows (issue 15: 1e-8 drifted up to 1.6 × that floor on a trilinear grid).
+  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::relative_tolerance_t>::value)
+    lines.tolerances.relative = 1e-10;
+  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::absolute_tolerance_t>::value)
+    lines.tolerances.absolute = 1e-12;
   const double max_parameter = arc_length ? lines.max_length : lines.max_time;
   const double t0 = choose_parameter(get_parameter(np, internal_np::start_time_t()), 0.);
   if (!std::isfinite(t0))
@@ -743,7 +836,13 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
       double(
           choose_parameter(get_parameter(np, internal_np::max_number_of_vertices_t()), std::size_t(1000000))),
       "max_number_of_vertices"));
-  const int direction = lines.direction == Integration_direction::BACKWARD ? -1 : 1;
+  // Without a limit in τ at most 100 time lines by default; with one, only the limit (and
+  // max_number_of_vertices) unless max_number_of_time_lines is given.
+  const std::size_t max_time_lines = choose_parameter(
+      get_parameter(np, internal_np::max_number_of_time_lines_t()),
+      std::isfinite(max_parameter) ? std::numeric_limits<std::size_t>::max() : std::size_t(100));
+  if (max_time_lines == 0)
+    throw std::invalid_argument("integrate_stream_surface: max_number_of_time_lines is 0; expected at least 1");
 
   double step;
   if constexpr (!parameters::is_default_parameter<NamedParameters, internal_np::time_line_step_t>::value)
@@ -776,20 +875,36 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
                                       internal::Ignored_vertex_double_map());
   using Front = internal::Stream_surface_front<FlowField, Point_3, TriangleMesh, std::decay_t<decltype(vpm)>,
                                                std::decay_t<decltype(u_map)>, std::decay_t<decltype(t_map)>>;
-  typename Front::Settings settings{
-      spacing,
-      step,
-      max_parameter,
-      t0,
-      std::cos(std::min(tear_angle, CGAL_PI)),
-      1e-9 * seed.length(),
-      choose_parameter(get_parameter(np, internal_np::max_number_of_time_lines_t()), std::size_t(100)),
-      max_vertices,
-      lines.max_number_of_steps,
-      direction,
-      lines.tolerances};
-  Front front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map);
-  return front.run(std::move(report));
+  typename Front::Settings settings{spacing,
+                                    step,
+                                    max_parameter,
+                                    t0,
+                                    std::cos(std::min(tear_angle, CGAL_PI)),
+                                    1e-9 * seed.length(),
+                                    max_time_lines,
+                                    max_vertices,
+                                    lines.max_number_of_steps,
+                                    lines.direction == Integration_direction::BACKWARD ? -1 : 1,
+                                    lines.tolerances};
+  typename Front::Seed_vertices seed_vertices;
+  if (lines.direction != Integration_direction::FORWARD) {
+    settings.direction = -1;
+    settings.reverse_triangles = true;
+    settings.written_tau_sign = lines.direction == Integration_direction::BOTH ? -1 : 1;
+    report = Front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map, seed_vertices).run(report);
+    if (lines.direction == Integration_direction::BACKWARD ||
+        report.termination == Stream_surface_termination::SEED_OUTSIDE_DOMAIN ||
+        report.termination == Stream_surface_termination::SEED_AT_REST) // the same seed forward
+      return report;
+    report.backward = Stream_surface_half_report{report.number_of_time_lines, report.final_parameter,
+                                                 report.termination, report.message};
+    settings.direction = 1;
+    settings.reverse_triangles = false;
+    settings.written_tau_sign = 1;
+  }
+  // The forward half (of a BOTH surface: it reuses the backward half's seed vertices and adds
+  // its counts to the backward half's).
+  return Front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map, seed_vertices).run(report);
 }
 
 } // namespace Flow_aligned_surfaces
