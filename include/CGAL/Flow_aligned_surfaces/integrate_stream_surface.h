@@ -239,6 +239,9 @@ public:
     // by ∂x/∂u × v, and, within a BOTH surface, with negative τ.
     bool reverse_triangles = false;
     double written_tau_sign = 1;
+    // Time lines whose strip would be thin are left out of the mesh (with the default
+    // time-line step only: a given step is the time-line spacing the caller asked for).
+    bool skip_thin_strips = false;
   };
 
   // The vertices of the seed samples, shared by the two halves of a BOTH surface: the first
@@ -299,6 +302,7 @@ private:
       m_parameter = double(k) * m_s.step;
       if (m_parameter >= m_s.max_parameter || m_s.max_parameter - m_parameter < 0.5 * m_s.step)
         m_parameter = m_s.max_parameter;
+      m_last_line = m_parameter >= m_s.max_parameter || k >= m_s.max_time_lines;
       std::vector<std::vector<Particle>> next;
       for (std::vector<Particle>& piece : m_pieces)
         advance_piece(piece, next);
@@ -308,12 +312,16 @@ private:
     }
   }
 
+  static constexpr std::size_t no_node = std::numeric_limits<std::size_t>::max();
+
   struct Particle {
     Particle(double u, Integrator integrator) : u(u), integrator(std::move(integrator)) {}
     double u;
     Integrator integrator;
     bool at_boundary = false; // it left the domain at x, before the current time line
-    std::size_t node = 0;     // the particle's sample on the current time line
+    // The particle's node on the last time line put into the mesh (`no_node` for a particle
+    // inserted after it).
+    std::size_t node = no_node;
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
     double tau = 0; // of x: the current time line's, or where the particle left the domain
     // The node where the neighbour of this end particle of its piece left the domain: the
@@ -535,9 +543,12 @@ private:
 
   void advance_piece(std::vector<Particle>& piece, std::vector<std::vector<Particle>>& next)
   {
-    std::vector<std::pair<double, std::size_t>> old_line; // (u, node) of the previous time line
+    std::vector<std::pair<double, std::size_t>> old_line; // (u, node) of the last meshed time line
     for (const Particle& p : piece)
-      old_line.emplace_back(p.u, p.node);
+      if (p.node != no_node)
+        old_line.emplace_back(p.u, p.node);
+    const std::array<std::size_t, 3> changes_before = {
+        m_report.number_of_lost_particles, m_report.number_of_removed_particles, m_report.number_of_tears};
 
     // Runs of particles that reach the new time line.
     std::vector<std::vector<Particle>> runs(1);
@@ -558,6 +569,17 @@ private:
       pieces.back().push_back(std::move(run.front()));
       for (std::size_t i = 1; i < run.size(); ++i)
         connect(pieces, std::move(run[i]));
+      // A piece that only moved (and gained inserted particles) since its last meshed time line
+      // waits for the next one while the strip would be thin: sheared fronts turn towards the
+      // flow, and their strips, h wide, get ever flatter.
+      if (m_s.skip_thin_strips && runs.size() == 1 && pieces.size() == 1 && !m_last_line &&
+          changes_before == std::array<std::size_t, 3>{m_report.number_of_lost_particles,
+                                                       m_report.number_of_removed_particles,
+                                                       m_report.number_of_tears} &&
+          is_thin_strip(pieces.front())) {
+        next.push_back(std::move(pieces.front()));
+        continue;
+      }
       for (std::vector<Particle>& new_piece : pieces) {
         std::vector<std::size_t> old_chain, new_chain;
         for (Particle& p : new_piece) {
@@ -582,6 +604,32 @@ private:
         continue_without_boundary_particles(std::move(new_piece), next);
       }
     }
+  }
+
+  // Whether the strip from the piece's last meshed time line to its particles would be thinner
+  // than h/2 somewhere and nowhere as wide as 2h: the width at a particle is its displacement
+  // since its meshed node across the front (orthogonal to the front's local tangent).  Only a
+  // piece whose particles all stay inside, with none at an exit, qualifies.
+  bool is_thin_strip(const std::vector<Particle>& piece) const
+  {
+    if (piece.size() < 2)
+      return false;
+    double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      const Particle& p = piece[i];
+      if (p.at_boundary || p.boundary_neighbour)
+        return false;
+      if (p.node == no_node)
+        continue;
+      const Eigen::Vector3d tangent =
+          (piece[std::min(i + 1, piece.size() - 1)].x - piece[i == 0 ? 0 : i - 1].x).normalized();
+      const Eigen::Vector3d d = p.x - m_nodes[p.node].x;
+      const double width = (d - d.dot(tangent) * tangent).norm();
+      smallest = std::min(smallest, width);
+      // At the ends of the piece the whole displacement is an edge of the surface's border.
+      largest = std::max(largest, i == 0 || i + 1 == piece.size() ? d.norm() : width);
+    }
+    return smallest < 0.5 * m_s.spacing && largest < 2 * m_s.spacing;
   }
 
   // The triangle from an end particle's old node to its new one and the node where its
@@ -649,6 +697,7 @@ private:
   std::vector<Node> m_nodes;
   std::vector<std::vector<Particle>> m_pieces;
   double m_parameter = 0, m_previous_parameter = 0; // of the current and the previous time line
+  bool m_last_line = false;
 };
 
 // A writable property map that drops what it is given (the default of the u and t maps).
@@ -886,6 +935,8 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
                                     lines.max_number_of_steps,
                                     lines.direction == Integration_direction::BACKWARD ? -1 : 1,
                                     lines.tolerances};
+  settings.skip_thin_strips =
+      parameters::is_default_parameter<NamedParameters, internal_np::time_line_step_t>::value;
   typename Front::Seed_vertices seed_vertices;
   if (lines.direction != Integration_direction::FORWARD) {
     settings.direction = -1;
