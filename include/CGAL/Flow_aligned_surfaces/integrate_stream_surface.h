@@ -11,7 +11,8 @@
 // 2h apart: a particle re-integrated from c((u_i + u_{i+1}) / 2) is inserted where neighbours
 // diverge, one is removed where they converge, and the front tears where it cannot be refined
 // (a particle leaves the domain or stagnates, neighbours separate at a critical point or an
-// obstacle).  The strip between two time lines is triangulated by the shorter-diagonal rule.
+// obstacle).  The strip between two time lines is triangulated by the shorter-diagonal rule; a
+// time line whose strip would be thin (a sheared front, turned towards the flow) is left out.
 // With arc-length time lines v is replaced by v / |v| (steady fields), so τ is the arc length.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTEGRATE_STREAM_SURFACE_H
@@ -607,9 +608,11 @@ private:
   }
 
   // Whether the strip from the piece's last meshed time line to its particles would be thinner
-  // than h/2 somewhere and nowhere as wide as 2h: the width at a particle is its displacement
-  // since its meshed node across the front (orthogonal to the front's local tangent).  Only a
-  // piece whose particles all stay inside, with none at an exit, qualifies.
+  // than h/2 somewhere and nowhere as wide as h: the width at a particle is its displacement
+  // since its meshed node across the front (orthogonal to the front's local tangent), at the
+  // ends its whole displacement (a border edge: longer ones make slivers in the corner where a
+  // turned front meets its border stream line).  Only a piece whose particles all stay inside,
+  // with none at an exit, qualifies.
   bool is_thin_strip(const std::vector<Particle>& piece) const
   {
     if (piece.size() < 2)
@@ -626,10 +629,9 @@ private:
       const Eigen::Vector3d d = p.x - m_nodes[p.node].x;
       const double width = (d - d.dot(tangent) * tangent).norm();
       smallest = std::min(smallest, width);
-      // At the ends of the piece the whole displacement is an edge of the surface's border.
       largest = std::max(largest, i == 0 || i + 1 == piece.size() ? d.norm() : width);
     }
-    return smallest < 0.5 * m_s.spacing && largest < 2 * m_s.spacing;
+    return smallest < 0.5 * m_s.spacing && largest < m_s.spacing;
   }
 
   // The triangle from an end particle's old node to its new one and the node where its
@@ -718,7 +720,10 @@ polyline with an advancing front, and adds it to `tm_out` as a triangle mesh.
 The surface \f$ x(u, \tau) \f$ solves
 \f$ \partial_\tau x = \sigma v(x, t_0 + \sigma \tau) \f$ with \f$ x(u, 0) = c(u) \f$, the seed
 polyline parametrized by its arc length \f$ u \in [0, L] \f$, \f$ \sigma = -1 \f$ with
-`integration_direction(Integration_direction::BACKWARD)`.  The front, a polyline of particles resampled from the seed at
+`integration_direction(Integration_direction::BACKWARD)`.  With `Integration_direction::BOTH` the
+backward and the forward half are one surface, joined at the seed curve (its vertices shared):
+the union of the `FORWARD` and `BACKWARD` surfaces.  Every surface is oriented by
+\f$ \partial x / \partial u \times v \f$.  The front, a polyline of particles resampled from the seed at
 spacing at most \f$ h \f$, advances in lock-step of \f$ \tau \f$ by the time-line step
 \f$ \Delta \f$; each particle is integrated by the embedded Runge–Kutta pair of Dormand and
 Prince, 5(4) (`relative_tolerance`, `absolute_tolerance`, as `integrate_streamline()`), and
@@ -737,17 +742,24 @@ evaluated on the time line by dense output.  Between consecutive time lines:
   `integrate_streamline()`) and takes part in the strip there: the surface reaches the boundary;
   the strips of its neighbour fan out from that exit until the neighbour leaves too or is more
   than \f$ 2h \f$ away, so that no notch is left between two exits;
-- the strip is triangulated by the shorter-diagonal rule (Hultquist).
+- the strip is triangulated by the shorter-diagonal rule (Hultquist);
+- with the default `time_line_step`, a piece of the front that only moved since its last time
+  line in the mesh (no particle lost, removed or torn off) skips the new time line while the
+  strip would be thinner than \f$ h/2 \f$ somewhere and nowhere \f$ h \f$ wide (at its ends:
+  long): sheared fronts turn towards the flow, and their strips would get
+  ever flatter.  The last time line is never less than \f$ \Delta/2 \f$ after the one before.
 
 Integration stops at `max_time` (`max_length` with arc-length time lines), after `max_number_of_time_lines`, at
-`max_number_of_vertices`, or when no piece of the front is left.  A closed seed (first point = last point) gives a surface with a seam.
+`max_number_of_vertices`, or when no piece of the front is left; the report's `termination` and
+`message` say which limit, with its value and how far the front got.  A closed seed (first point = last point) gives a surface with a seam.
 
 Every vertex carries the seed parameter \f$ u \f$ of its particle (`seed_parameter_map`) and the
 time-line parameter \f$ \tau \f$ (`integration_time_map`): the time-line / stream-line
 parametrization of the paper's Figure 3 — the curves of constant \f$ \tau \f$ are the time lines,
 those of constant \f$ u \f$ are stream lines (path lines).  All vertices of a time line have the
-same \f$ \tau = k \Delta \f$ exactly; a vertex where a particle left the domain has the
-\f$ \tau \f$ at which it left, between two time lines.
+same \f$ \tau = k \Delta \f$ exactly (the last one: the limit); a vertex where a particle left the domain has the
+\f$ \tau \f$ at which it left, between two time lines.  With `BOTH`, the backward half's vertices
+get \f$ -\tau \f$.
 
 Vertices and faces are added to `tm_out`; what it held before is kept.
 
@@ -785,9 +797,10 @@ Vertices and faces are added to `tm_out`; what it held before is kept.
     \cgalParamDefault{no limit}
   \cgalParamNEnd
   \cgalParamNBegin{max_number_of_time_lines}
-    \cgalParamDescription{`FAS::parameters::max_number_of_time_lines()`}
+    \cgalParamDescription{`FAS::parameters::max_number_of_time_lines()`, at least 1}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`100`}
+    \cgalParamDefault{no limit when `max_time` (`max_length` with arc-length time lines) is given,
+      else `100`}
   \cgalParamNEnd
   \cgalParamNBegin{arc_length_time_lines}
     \cgalParamDescription{`FAS::parameters::arc_length_time_lines()`: whether \f$ \tau \f$ is the arc
@@ -796,14 +809,16 @@ Vertices and faces are added to `tm_out`; what it held before is kept.
     \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{integration_direction}
-    \cgalParamDescription{`FAS::parameters::integration_direction()`: `FORWARD` or `BACKWARD`
-      (\f$ \sigma = -1 \f$); `BOTH` is refused}
+    \cgalParamDescription{`FAS::parameters::integration_direction()`: `FORWARD`, `BACKWARD`
+      (\f$ \sigma = -1 \f$) or `BOTH` (one surface, joined at the seed)}
     \cgalParamType{`Integration_direction`}
     \cgalParamDefault{`Integration_direction::FORWARD`}
   \cgalParamNEnd
   \cgalParamNBegin{relative_tolerance, absolute_tolerance, max_number_of_steps}
-    \cgalParamDescription{the integrator's, per particle, as in `integrate_streamline()`}
-    \cgalParamDefault{`1e-8`, `1e-10`, `100000`}
+    \cgalParamDescription{the integrator's, per particle, as in `integrate_streamline()`; the
+      tolerances' defaults are tighter than a stream line's, so that on a sampled field the
+      vertices drift no more than the interpolation itself allows}
+    \cgalParamDefault{`1e-10`, `1e-12`, `100000`}
   \cgalParamNEnd
   \cgalParamNBegin{start_time}
     \cgalParamDescription{`FAS::parameters::start_time()`: \f$ t_0 \f$ (unsteady fields)}
@@ -837,13 +852,15 @@ Vertices and faces are added to `tm_out`; what it held before is kept.
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns the report: time lines, inserted and removed particles, tears, the termination reason.
+\returns the report: time lines, inserted and removed particles, tears, the termination reason
+  (with `BOTH`: the counts of the whole surface, the forward half's time lines and reason, and
+  `backward` for the backward half's).
   A seed entirely outside the domain, or at rest, gives an empty result
   (`SEED_OUTSIDE_DOMAIN`, `SEED_AT_REST`) and leaves `tm_out` untouched.
 
 \throws std::invalid_argument naming the input if `seed_polyline` has fewer than two points, a
   non-finite point or two equal consecutive points, if a parameter is not positive, or if
-  `arc_length_time_lines(true)` is given with an unsteady field, or the direction is `BOTH`.
+  `arc_length_time_lines(true)` is given with an unsteady field, or `max_number_of_time_lines` is 0.
 
 \sa `extract_iso_contours()` for seed curves, `normalized_flux()` to check the result
 */
@@ -943,12 +960,13 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
     settings.reverse_triangles = true;
     settings.written_tau_sign = lines.direction == Integration_direction::BOTH ? -1 : 1;
     report = Front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map, seed_vertices).run(report);
-    if (lines.direction == Integration_direction::BACKWARD ||
-        report.termination == Stream_surface_termination::SEED_OUTSIDE_DOMAIN ||
-        report.termination == Stream_surface_termination::SEED_AT_REST) // the same seed forward
+    if (lines.direction == Integration_direction::BACKWARD)
       return report;
     report.backward = Stream_surface_half_report{report.number_of_time_lines, report.final_parameter,
                                                  report.termination, report.message};
+    if (report.termination == Stream_surface_termination::SEED_OUTSIDE_DOMAIN ||
+        report.termination == Stream_surface_termination::SEED_AT_REST) // the same seed forward
+      return report;
     settings.direction = 1;
     settings.reverse_triangles = false;
     settings.written_tau_sign = 1;
