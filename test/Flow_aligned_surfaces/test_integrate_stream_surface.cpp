@@ -609,6 +609,21 @@ TEST(IntegrateStreamSurface, BothDirectionsGiveOneSurfaceJoinedAtTheSeed)
   for (Vertex v : both.tm.vertices())
     most_negative = std::min(most_negative, both.t[v]);
   EXPECT_DOUBLE_EQ(most_negative, -0.5);
+
+  // A front that tears at the cylinder downstream and a seed across the cylinder (two pieces
+  // from the start): still one manifold surface with every face accepted.
+  const FAS::Cylinder_potential_flow<K> cylinder(1.0, 1.0);
+  for (const Polyline& s : {Polyline{Point_3(-2, -0.6, 0.2), Point_3(-2, 0.6, 0.2)},
+                            Polyline{Point_3(0, -2, 0.2), Point_3(0, 2, 0.2)}}) {
+    const Surface torn(cylinder, s,
+                       FAS::parameters::integration_direction(
+                           FAS::Integration_direction::BOTH,
+                           FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(4.0))));
+    expect_parametrization(torn, s, [](const Point_3& p, double t) { // the backward end, the cylinder
+      return t == -4.0 || p.x() * p.x() + p.y() * p.y() < 1 + 1e-6;
+    });
+    EXPECT_EQ(torn.report.backward->termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
+  }
 }
 
 TEST(IntegrateStreamSurface, ReportsTheLimitThatStoppedIt)
