@@ -531,8 +531,8 @@ TEST(IntegrateStreamSurface, ShearingFrontKeepsTrianglesWellShaped)
   EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
   for (Vertex v : s.tm.vertices()) {
     const double r = 0.5 + s.u[v], t = s.t[v];
-    ASSERT_LE(std::sqrt(CGAL::squared_distance(s.tm.point(v), Point_3(r * std::cos(t / r), r * std::sin(t / r), w * t))),
-              1e-6);
+    const Point_3 exact(r * std::cos(t / r), r * std::sin(t / r), w * t);
+    ASSERT_LE(std::sqrt(CGAL::squared_distance(s.tm.point(v), exact)), 1e-6);
   }
   EXPECT_GE(smallest_angle(s.tm), 10.);
 }
@@ -599,7 +599,8 @@ TEST(IntegrateStreamSurface, BothDirectionsGiveOneSurfaceJoinedAtTheSeed)
                                                 both.tm.point(v[2]) - both.tm.point(v[0]));
     const Point_3 c = CGAL::centroid(both.tm.point(v[0]), both.tm.point(v[1]), both.tm.point(v[2]));
     // ∂x/∂u: from the corner of smallest u to that of largest, on the face.
-    const auto [lo, hi] = std::minmax_element(v.begin(), v.end(), [&](Vertex a, Vertex b) { return both.u[a] < both.u[b]; });
+    const auto [lo, hi] =
+        std::minmax_element(v.begin(), v.end(), [&](Vertex a, Vertex b) { return both.u[a] < both.u[b]; });
     const Vector_3 du = both.tm.point(*hi) - both.tm.point(*lo);
     ASSERT_GT(CGAL::cross_product(du, *flow(c)) * normal, 0) << "face at " << c;
   }

@@ -751,7 +751,8 @@ evaluated on the time line by dense output.  Between consecutive time lines:
 
 Integration stops at `max_time` (`max_length` with arc-length time lines), after `max_number_of_time_lines`, at
 `max_number_of_vertices`, or when no piece of the front is left; the report's `termination` and
-`message` say which limit, with its value and how far the front got.  A closed seed (first point = last point) gives a surface with a seam.
+`message` say which limit, with its value and how far the front got.  A closed seed (first
+point = last point) gives a surface with a seam.
 
 Every vertex carries the seed parameter \f$ u \f$ of its particle (`seed_parameter_map`) and the
 time-line parameter \f$ \tau \f$ (`integration_time_map`): the time-line / stream-line
