@@ -178,10 +178,12 @@ CGAL_FAS_NAMED_PARAMETER(front_spacing, double)
 /// Δ, the integration time (or arc length, with `arc_length_time_lines(true)`) between
 /// consecutive time lines of a stream surface; its last time line is at `max_time()`
 /// (`max_length()`).  Default: h divided by the median speed on the
-/// seed (time lines about h apart), or h with `arc_length_time_lines(true)`.
+/// seed (time lines about h apart), or h with `arc_length_time_lines(true)`; with the default, a
+/// time line whose strip would be thinner than h/2 (a sheared front) is left out of the mesh.
 CGAL_FAS_NAMED_PARAMETER(time_line_step, double)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
-/// The largest number of time lines of a stream surface after its seed curve.  Default: `100`.
+/// The largest number of time lines of a stream surface after its seed curve (per direction).
+/// Default: no limit when `max_time()` (`max_length()` with arc-length time lines) is given, else `100`.
 CGAL_FAS_NAMED_PARAMETER(max_number_of_time_lines, std::size_t)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// Whether the particles of a stream surface advance in lock-step of arc length (the field is
