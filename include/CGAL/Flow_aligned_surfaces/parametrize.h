@@ -30,6 +30,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
 #include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
+#include <CGAL/Flow_aligned_surfaces/internal/heat_method.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/parametrization.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
@@ -350,22 +351,32 @@ void compute_geodesic_distance(const TriangleMesh& tm,
                                const NamedParameters& np = CGAL::parameters::default_values())
 {
   const std::string caller = "compute_geodesic_distance";
-  const auto s = internal::make_surface_operators(tm, np, caller);
-  const Eigen::Index source_index = internal::vertex_index_or_throw(s.vertices, source, caller + ": source");
-  const std::size_t component = s.faces.vertex_component[std::size_t(source_index)];
-  const Eigen::Index m = s.ops.number_of_vertices();
-  const Eigen::VectorXd h =
-      internal::heat_step<internal::Default_sparse_linear_solver>(s.ops, s.arrays, source_index, component);
-
-  const Eigen::MatrixXd guidance = internal::normalized_negative_gradient(s.arrays, s.faces, h);
-  const std::vector<Eigen::Index> constrained =
-      internal::constrained_vertices(s.arrays, s.faces, source_index);
-  Eigen::MatrixXd d =
-      internal::solve_constrained_poisson(s.ops, constrained, s.faces.vertex_component, s.ops.D * guidance);
-  for (Eigen::Index i = 0; i < m; ++i)
-    if (s.faces.vertex_component[std::size_t(i)] != component)
-      d(i, 0) = std::numeric_limits<double>::infinity();
-  internal::write_vertex_values(s.vertices, d, 0, distance_map);
+  const bool intrinsic =
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::intrinsic_delaunay_t()), true);
+  const auto vpm = internal::checked_mesh_input(tm, np, caller + ": tm").vpm;
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  const auto vertices = internal::vertices_in_index_order(tm, vim);
+  const Eigen::Index source_index = internal::vertex_index_or_throw(vertices, source, caller + ": source");
+  const internal::Mesh_arrays arrays = internal::make_mesh_arrays(tm, vim, fim);
+  const internal::Positions positions = internal::read_positions(vertices, vpm);
+  internal::check_finite_positions(positions, caller + ": tm");
+  std::vector<std::size_t> vertex_component(vertices.size(), 0);
+  for (std::size_t j = 0; j < arrays.face_vertices.size(); ++j) {
+    const auto& fv = arrays.face_vertices[j];
+    const Eigen::Vector3d a = positions.row(fv[0]), b = positions.row(fv[1]), c = positions.row(fv[2]);
+    if (!((b - a).cross(c - a).squaredNorm() > 0))
+      throw std::invalid_argument(caller + ": tm: face " + std::to_string(j) + " is degenerate (zero area)");
+    for (Eigen::Index v : fv)
+      vertex_component[std::size_t(v)] = arrays.face_component[j];
+  }
+  internal::Intrinsic_triangulation triangulation =
+      internal::make_intrinsic_triangulation(positions, arrays.face_vertices);
+  if (intrinsic)
+    internal::make_intrinsic_delaunay(triangulation);
+  const Eigen::VectorXd d = internal::heat_method_distance<internal::Default_sparse_linear_solver>(
+      triangulation, positions.rows(), vertex_component, arrays.face_component, source_index);
+  internal::write_vertex_values(vertices, Eigen::MatrixXd(d), 0, distance_map);
 }
 
 } // namespace Flow_aligned_surfaces
