@@ -574,7 +574,7 @@ public:
     const auto constrained = parametrization_constraints(current, np, caller);
     const internal::Positions a = internal::orthogonal_guidance(
         m_arrays, current, internal::sample_face_velocities(current, m_field, m_gt), constrained, alpha,
-        normalize);
+        normalize, internal::orthogonal_gradient_direction(np, caller), caller);
     const Eigen::MatrixXd rs =
         solve_on_reference(current, internal::cross_field(current, a, caller), constrained);
     internal::write_vertex_values(m_vertices, rs, 0, r_map);

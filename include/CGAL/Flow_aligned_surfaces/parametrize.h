@@ -296,7 +296,8 @@ void parametrize_orthogonal(const TriangleMesh& tm, const FlowField& field, RMap
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::normalized_t()), false);
   auto in = internal::make_parametrization_input(tm, field, np, caller);
   const internal::Positions a = internal::orthogonal_guidance(
-      in.surface.arrays, in.surface.faces, std::move(in.velocities), in.constrained, alpha, normalize);
+      in.surface.arrays, in.surface.faces, std::move(in.velocities), in.constrained, alpha, normalize,
+      internal::orthogonal_gradient_direction(np, caller), caller);
   internal::solve_parametrization(in.surface, a, in.constrained, r_map, s_map, caller);
 }
 

@@ -205,8 +205,8 @@ Eigen::VectorXd heat_method_distance(const Intrinsic_triangulation& t, Eigen::In
 
   std::vector<Flat_face> flat(n);
   std::vector<Triplet> entries;
-  entries.reserve(9 * n);
-  Eigen::VectorXd mass = Eigen::VectorXd::Zero(m);
+  entries.reserve(6 * n + std::size_t(m));
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(m), diagonal = Eigen::VectorXd::Zero(m);
   double area = 0;
   std::size_t faces_in_component = 0;
   for (std::size_t f = 0; f < n; ++f) {
@@ -221,8 +221,8 @@ Eigen::VectorXd heat_method_distance(const Intrinsic_triangulation& t, Eigen::In
       const Eigen::Index i = v[k], j = v[(k + 1) % 3];
       entries.emplace_back(i, j, -half_cot);
       entries.emplace_back(j, i, -half_cot);
-      entries.emplace_back(i, i, half_cot);
-      entries.emplace_back(j, j, half_cot);
+      diagonal[i] += half_cot;
+      diagonal[j] += half_cot;
       mass[v[k]] += flat[f].area / 3;
     }
     if (face_component[f] == component) {
@@ -230,6 +230,8 @@ Eigen::VectorXd heat_method_distance(const Intrinsic_triangulation& t, Eigen::In
       ++faces_in_component;
     }
   }
+  for (Eigen::Index i = 0; i < m; ++i)
+    entries.emplace_back(i, i, diagonal[i]);
   Eigen::SparseMatrix<double> L(m, m);
   L.setFromTriplets(entries.begin(), entries.end());
 
