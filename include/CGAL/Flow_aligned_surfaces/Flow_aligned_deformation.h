@@ -556,9 +556,11 @@ public:
   `parametrize_orthogonal()` of the current surface in this object's field, with the factored
   \f$ L + W \f$: one pass over the faces and one back-substitution pair.
   \param r_map, s_map receive \f$ r \f$ and \f$ s \f$ at the vertices
-  \param np an optional sequence of named parameters among `angle`, `normalized` and
-         `constraint_vertex`, with the meanings and defaults of `parametrize_orthogonal()`
-  \throws std::invalid_argument if `angle` is not finite, and in the cases of the member
+  \param np an optional sequence of named parameters among `angle`, `gradient_direction`,
+         `normalized` and `constraint_vertex`, with the meanings and defaults of
+         `parametrize_orthogonal()`
+  \throws std::invalid_argument if `angle` is not finite, if `gradient_direction` is not finite,
+          zero or normal to the surface at a constrained vertex, and in the cases of the member
           `parametrize_tangential()`; the maps are then untouched.
   \sa `parametrize_orthogonal()`
   */
