@@ -526,6 +526,7 @@ TEST(GeodesicDistance, IntrinsicDelaunayFlipsKeepTheMetricAndMakeEveryEdgeDelaun
   const auto positions = FAS::internal::read_positions(vertices, get(CGAL::vertex_point, tm));
   FAS::internal::Intrinsic_triangulation t =
       FAS::internal::make_intrinsic_triangulation(positions, arrays.face_vertices);
+  FAS::internal::connect_twins(t);
   const auto total_area = [&] {
     double area = 0;
     for (const auto& l : t.lengths)

@@ -40,7 +40,7 @@ namespace internal {
 
 /// A triangulation given by its faces and edge lengths.  Halfedge k of face f (id 3f + k) runs
 /// from vertices[f][k] to vertices[f][(k + 1) % 3] and has length lengths[f][k]; twin[f][k] is
-/// the id of the opposite halfedge, or -1 on the border.
+/// the id of the opposite halfedge, or -1 on the border (empty until `connect_twins()`).
 struct Intrinsic_triangulation {
   std::vector<std::array<Eigen::Index, 3>> vertices;
   std::vector<std::array<double, 3>> lengths;
@@ -48,7 +48,8 @@ struct Intrinsic_triangulation {
   std::size_t number_of_flips = 0;
 };
 
-/// The triangulation of `face_vertices` with the Euclidean edge lengths of `positions`.
+/// The triangulation of `face_vertices` with the Euclidean edge lengths of `positions`, without
+/// its twins (`connect_twins()` adds them; only the flips need them).
 inline Intrinsic_triangulation make_intrinsic_triangulation(const Positions& positions,
                                                             const std::vector<std::array<Eigen::Index, 3>>& face_vertices)
 {
@@ -56,13 +57,21 @@ inline Intrinsic_triangulation make_intrinsic_triangulation(const Positions& pos
   const std::size_t n = face_vertices.size();
   t.vertices = face_vertices;
   t.lengths.resize(n);
+  for (std::size_t f = 0; f < n; ++f)
+    for (int k = 0; k < 3; ++k)
+      t.lengths[f][k] = (positions.row(face_vertices[f][k]) - positions.row(face_vertices[f][(k + 1) % 3])).norm();
+  return t;
+}
+
+/// Fills `t.twin` by sorting the halfedges on their (min, max) vertex: a manifold edge has two.
+inline void connect_twins(Intrinsic_triangulation& t)
+{
+  const std::size_t n = t.vertices.size();
   t.twin.assign(n, {-1, -1, -1});
-  // Twins by sorting the halfedges on (min, max) vertex: a manifold edge has two.
   std::vector<std::pair<std::pair<Eigen::Index, Eigen::Index>, std::int64_t>> keys(3 * n);
   for (std::size_t f = 0; f < n; ++f)
     for (int k = 0; k < 3; ++k) {
-      const Eigen::Index a = face_vertices[f][k], b = face_vertices[f][(k + 1) % 3];
-      t.lengths[f][k] = (positions.row(a) - positions.row(b)).norm();
+      const Eigen::Index a = t.vertices[f][k], b = t.vertices[f][(k + 1) % 3];
       keys[3 * f + k] = {{(std::min)(a, b), (std::max)(a, b)}, std::int64_t(3 * f + k)};
     }
   std::sort(keys.begin(), keys.end());
@@ -73,7 +82,6 @@ inline Intrinsic_triangulation make_intrinsic_triangulation(const Positions& pos
       t.twin[std::size_t(g / 3)][std::size_t(g % 3)] = h;
       ++i;
     }
-  return t;
 }
 
 /// Twice the area of a triangle of side lengths a, b, c (Kahan's stable Heron formula); 0 when
@@ -104,6 +112,8 @@ inline double opposite_cotangent(const Intrinsic_triangulation& t, std::size_t f
 /// triangles form a convex quadrilateral.
 inline void make_intrinsic_delaunay(Intrinsic_triangulation& t)
 {
+  if (t.twin.size() != t.vertices.size())
+    connect_twins(t);
   std::vector<std::int64_t> stack;
   std::vector<char> queued(3 * t.vertices.size(), 0);
   for (std::size_t f = 0; f < t.vertices.size(); ++f)
