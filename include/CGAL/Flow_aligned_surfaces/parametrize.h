@@ -418,7 +418,7 @@ void compute_geodesic_distance(const TriangleMesh& tm,
       internal::make_intrinsic_triangulation(positions, arrays.face_vertices);
   if (intrinsic)
     internal::make_intrinsic_delaunay(triangulation);
-  const Eigen::VectorXd d = internal::heat_method_distance<internal::Default_sparse_linear_solver>(
+  const Eigen::VectorXd d = internal::heat_method_distance(
       triangulation, positions.rows(), vertex_component, arrays.face_component, source_index);
   internal::write_vertex_values(vertices, Eigen::MatrixXd(d), 0, distance_map);
 }
