@@ -588,7 +588,9 @@ public:
   heat step \f$ (\mathbf{M} + t\mathbf{L}) h = h_0 \f$ with \f$ \mathbf{L} \f$, \f$ \mathbf{M} \f$
   and \f$ t = 5 A_M / |T| \f$ of \f$ M_0 \f$ (one new factorization), the normalized
   \f$ -\nabla h \f$ on the faces of \f$ M_k \f$, and the final Poisson solve with the factored
-  \f$ L + W \f$: two solves and one factorization in all.
+  \f$ L + W \f$: two solves and one factorization in all.  The operators are those of
+  \f$ M_0 \f$'s own triangles, as the free function's with `intrinsic_delaunay(false)`: on a
+  mesh whose triangles are far from Delaunay the free function's default is more accurate.
   \param source the vertex where the distance is 0
   \param distance_map receives the distance at every vertex (\f$ +\infty \f$ on other components)
   \throws std::invalid_argument if `source` is not a vertex of the mesh or a face of the current
