@@ -32,6 +32,8 @@
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/subdivision_method_3.h>
 
+#include "../../test/Flow_aligned_surfaces/sphere_cap_mesh.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -74,37 +76,6 @@ double median(std::vector<double> v)
   return v[v.size() / 2];
 }
 
-// The sphere cap of test_parametrize.cpp, its interior vertices first moved in the disk's plane
-// by up to `jitter` times the mean edge length (deterministic).
-Mesh make_sphere_cap(double R, double max_angle, std::size_t faces, double jitter)
-{
-  Mesh tm;
-  FAS::make_disk_patch(tm, Point(0, 0, 0), Vector(0, 0, 1), R * max_angle, faces);
-  double edge = 0;
-  for (auto e : tm.edges())
-    edge += std::sqrt(CGAL::squared_distance(tm.point(tm.vertex(e, 0)), tm.point(tm.vertex(e, 1))));
-  edge /= double(tm.number_of_edges());
-  unsigned state = 12345;
-  const auto uniform = [&state] { // in [-1, 1]
-    state = state * 1103515245u + 12345u;
-    return double((state >> 8) & 0xffff) / 32767.5 - 1;
-  };
-  for (Vertex v : tm.vertices()) {
-    const Point p = tm.point(v);
-    if (jitter > 0 && !tm.is_border(v) && (p.x() != 0 || p.y() != 0)) {
-      const double dx = jitter * edge * uniform(), dy = jitter * edge * uniform();
-      tm.point(v) = Point(p.x() + dx, p.y() + dy, 0);
-    }
-  }
-  for (Vertex v : tm.vertices()) {
-    const Point p = tm.point(v);
-    const double rho = std::hypot(p.x(), p.y()), theta = rho / R;
-    const double scale = rho > 0 ? R * std::sin(theta) / rho : 0;
-    tm.point(v) = Point(scale * p.x(), scale * p.y(), R * std::cos(theta));
-  }
-  return tm;
-}
-
 void sphere_cap_table(int runs)
 {
   std::printf("\nsphere caps, median thread CPU ms of %d interleaved runs\n", runs);
@@ -114,7 +85,7 @@ void sphere_cap_table(int runs)
   const double R = 2;
   for (double jitter : {0.0, 0.3})
     for (std::size_t faces : {2400u, 9600u, 38400u}) {
-      Mesh tm = make_sphere_cap(R, 1.2, faces, jitter);
+      Mesh tm = fas_test::make_sphere_cap<Mesh>(R, 1.2, faces, jitter);
       Vertex pole = *tm.vertices().begin();
       for (Vertex v : tm.vertices())
         if (tm.point(v).z() > tm.point(pole).z())

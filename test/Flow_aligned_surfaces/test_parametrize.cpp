@@ -4,6 +4,7 @@
 
 #include "expect_invalid_argument.h"
 #include "scalar_field_errors.h"
+#include "sphere_cap_mesh.h"
 #include "test_kernel.h"
 
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
@@ -269,14 +270,7 @@ TEST(Parametrize, OrthogonalGradientDirectionOnASphereCapPointsThatWayAtTheConst
   // v = p / |p|^3 (and to the sink -v); at the constrained vertex (the pole, nearest to the
   // barycenter) grad r points along the given direction projected on the tangent plane z = const,
   // whatever the flow's sign and whatever the default frame would give.
-  Mesh tm;
-  FAS::make_disk_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), 1.6, 4000);
-  for (Vertex v : tm.vertices()) {
-    const Point_3 p = tm.point(v);
-    const double rho = std::hypot(p.x(), p.y()), theta = rho / 2;
-    const double scale = rho > 0 ? 2 * std::sin(theta) / rho : 0;
-    tm.point(v) = Point_3(scale * p.x(), scale * p.y(), 2 * std::cos(theta));
-  }
+  Mesh tm = make_sphere_cap<Mesh>(2, 0.8, 4000);
   const Vertex pole = nearest_vertex(tm, Point_3(0, 0, 2));
   auto r = add_scalar(tm, "v:r"), s = add_scalar(tm, "v:s");
   for (const Vector_3& g : {Vector_3(1, 0, 0), Vector_3(-0.3, 1, 5), Vector_3(-1, -1, -1)})
@@ -389,6 +383,22 @@ TEST(Parametrize, BadInputIsRefusedAndTheOutputUntouched)
     EXPECT_EQ(s[v], 7.0);
     EXPECT_EQ(d[v], 7.0);
   }
+  // A face of zero area (a vertex moved onto its neighbour) and a coordinate that is not finite.
+  for (int fault = 0; fault < 2; ++fault) {
+    Mesh bad = tm;
+    auto bad_d = bad.property_map<Vertex, double>("v:d").first;
+    const Vertex v = *std::next(bad.vertices().begin(), 40);
+    const Vertex w = bad.source(bad.halfedge(v));
+    bad.point(v) = fault == 0 ? bad.point(w) : Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+    for (bool intrinsic : {true, false})
+      expect_invalid_argument(
+          [&] {
+            FAS::compute_geodesic_distance(bad, w, bad_d, FAS::parameters::intrinsic_delaunay(intrinsic));
+          },
+          {"compute_geodesic_distance: tm", fault == 0 ? "is degenerate (zero area)" : "is not finite"});
+    for (Vertex u : bad.vertices())
+      EXPECT_EQ(bad_d[u], 7.0);
+  }
 }
 
 // The mean of |d - exact| / exact over the vertices other than the source.
@@ -420,47 +430,10 @@ TEST(GeodesicDistance, OnAPlaneItIsTheEuclideanDistance)
   EXPECT_LE(mean_relative_error(tm, d, euclidean, source), 0.01);
 }
 
-// A spherical cap of radius R about the north pole, up to the polar angle `max_angle`: the disk
-// patch mapped by the inverse azimuthal equidistant projection, so that its vertices are as
-// regular as the disk's.
-// With `jitter` > 0, the interior vertices (but the center) are first moved in the disk's plane by
-// up to `jitter` times the mean edge length (deterministic), which leaves triangles that are not
-// Delaunay.
-Mesh make_sphere_cap(double R, double max_angle, std::size_t faces, double jitter = 0)
-{
-  Mesh tm;
-  FAS::make_disk_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), R * max_angle, faces);
-  if (jitter > 0) {
-    double edge = 0;
-    for (auto e : tm.edges())
-      edge += std::sqrt(CGAL::squared_distance(tm.point(tm.vertex(e, 0)), tm.point(tm.vertex(e, 1))));
-    edge /= double(tm.number_of_edges());
-    unsigned state = 12345;
-    const auto uniform = [&state] { // in [-1, 1]
-      state = state * 1103515245u + 12345u;
-      return double((state >> 8) & 0xffff) / 32767.5 - 1;
-    };
-    for (Vertex v : tm.vertices()) {
-      const Point_3 p = tm.point(v);
-      if (!tm.is_border(v) && (p.x() != 0 || p.y() != 0)) {
-        const double dx = jitter * edge * uniform(), dy = jitter * edge * uniform();
-        tm.point(v) = Point_3(p.x() + dx, p.y() + dy, 0);
-      }
-    }
-  }
-  for (Vertex v : tm.vertices()) {
-    const Point_3 p = tm.point(v);
-    const double rho = std::hypot(p.x(), p.y()), theta = rho / R;
-    const double scale = rho > 0 ? R * std::sin(theta) / rho : 0;
-    tm.point(v) = Point_3(scale * p.x(), scale * p.y(), R * std::cos(theta));
-  }
-  return tm;
-}
-
 TEST(GeodesicDistance, OnASphereCapItIsTheGreatCircleDistanceAndAgreesWithCGALsHeatMethod)
 {
   const double R = 2;
-  Mesh tm = make_sphere_cap(R, 1.2, 10000);
+  Mesh tm = make_sphere_cap<Mesh>(R, 1.2, 10000);
   const Vertex pole = nearest_vertex(tm, Point_3(0, 0, R));
   ASSERT_EQ(tm.point(pole), Point_3(0, 0, R));
   auto d = add_scalar(tm, "v:d");
@@ -490,7 +463,7 @@ TEST(GeodesicDistance, IntrinsicDelaunayIsMoreAccurateOnTrianglesThatAreNotDelau
   // great-circle distance than the mesh's own triangles, and than CGAL's heat method in either of
   // its modes (measured: 0.72 % against 0.78 % direct, CGAL 0.97 % and 1.10 %).
   const double R = 2;
-  Mesh tm = make_sphere_cap(R, 1.2, 9600, 0.3);
+  Mesh tm = make_sphere_cap<Mesh>(R, 1.2, 9600, 0.3);
   const Vertex pole = nearest_vertex(tm, Point_3(0, 0, R));
   ASSERT_EQ(tm.point(pole), Point_3(0, 0, R));
   const auto great_circle = [&](const Point_3& p) { return R * std::acos(std::clamp(p.z() / R, -1.0, 1.0)); };
@@ -518,7 +491,7 @@ TEST(GeodesicDistance, IntrinsicDelaunayFlipsKeepTheMetricAndMakeEveryEdgeDelaun
 {
   // On the jittered cap: the flips happen, every interior edge ends Delaunay (opposite
   // cotangents summing to >= 0), the total area is kept, and each face's lengths form a triangle.
-  Mesh tm = make_sphere_cap(2, 1.2, 2400, 0.4);
+  Mesh tm = make_sphere_cap<Mesh>(2, 1.2, 2400, 0.4);
   const auto vim = CGAL::get_initialized_vertex_index_map(tm);
   const auto fim = CGAL::get_initialized_face_index_map(tm);
   const auto vertices = FAS::internal::vertices_in_index_order(tm, vim);
