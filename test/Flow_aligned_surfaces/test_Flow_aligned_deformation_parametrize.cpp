@@ -108,6 +108,12 @@ TEST(DeformationParametrize, OnTheReferenceSurfaceItMatchesTheFreeFunctions)
   FAS::parametrize_orthogonal(across, flow, ra_free, sa_free, FAS::parameters::angle(0.4));
   EXPECT_LE(relative_max_difference(across, ra, ra_free), 3e-3 * relative_edge_length(across));
   EXPECT_LE(relative_max_difference(across, sa, sa_free), 3e-3 * relative_edge_length(across));
+  // The same with a gradient direction instead of the Householder frame.
+  const auto aimed = FAS::parameters::gradient_direction(Vector_3(0.2, 1, 1), FAS::parameters::angle(0.4));
+  orthogonal.parametrize_orthogonal(ra, sa, aimed);
+  FAS::parametrize_orthogonal(across, flow, ra_free, sa_free, aimed);
+  EXPECT_LE(relative_max_difference(across, ra, ra_free), 3e-3 * relative_edge_length(across));
+  EXPECT_LE(relative_max_difference(across, sa, sa_free), 3e-3 * relative_edge_length(across));
 }
 
 TEST(DeformationParametrize, OnAnAlignedStreamSurfaceTheUnnormalizedRIsThePotential)

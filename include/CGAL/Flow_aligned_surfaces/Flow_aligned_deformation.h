@@ -558,9 +558,11 @@ public:
   `parametrize_orthogonal()` of the current surface in this object's field, with the factored
   \f$ L + W \f$: one pass over the faces and one back-substitution pair.
   \param r_map, s_map receive \f$ r \f$ and \f$ s \f$ at the vertices
-  \param np an optional sequence of named parameters among `angle`, `normalized` and
-         `constraint_vertex`, with the meanings and defaults of `parametrize_orthogonal()`
-  \throws std::invalid_argument if `angle` is not finite, and in the cases of the member
+  \param np an optional sequence of named parameters among `angle`, `gradient_direction`,
+         `normalized` and `constraint_vertex`, with the meanings and defaults of
+         `parametrize_orthogonal()`
+  \throws std::invalid_argument if `angle` is not finite, if `gradient_direction` is not finite,
+          zero or normal to the surface at a constrained vertex, and in the cases of the member
           `parametrize_tangential()`; the maps are then untouched.
   \sa `parametrize_orthogonal()`
   */
@@ -576,7 +578,7 @@ public:
     const auto constrained = parametrization_constraints(current, np, caller);
     const internal::Positions a = internal::orthogonal_guidance(
         m_arrays, current, internal::sample_face_velocities(current, m_field, m_gt), constrained, alpha,
-        normalize);
+        normalize, internal::orthogonal_gradient_direction(np, caller), caller);
     const Eigen::MatrixXd rs =
         solve_on_reference(current, internal::cross_field(current, a, caller), constrained);
     internal::write_vertex_values(m_vertices, rs, 0, r_map);
@@ -588,7 +590,9 @@ public:
   heat step \f$ (\mathbf{M} + t\mathbf{L}) h = h_0 \f$ with \f$ \mathbf{L} \f$, \f$ \mathbf{M} \f$
   and \f$ t = 5 A_M / |T| \f$ of \f$ M_0 \f$ (one new factorization), the normalized
   \f$ -\nabla h \f$ on the faces of \f$ M_k \f$, and the final Poisson solve with the factored
-  \f$ L + W \f$: two solves and one factorization in all.
+  \f$ L + W \f$: two solves and one factorization in all.  The operators are those of
+  \f$ M_0 \f$'s own triangles, as the free function's with `intrinsic_delaunay(false)`: on a
+  mesh whose triangles are far from Delaunay the free function's default is more accurate.
   \param source the vertex where the distance is 0
   \param distance_map receives the distance at every vertex (\f$ +\infty \f$ on other components)
   \throws std::invalid_argument if `source` is not a vertex of the mesh or a face of the current

@@ -56,10 +56,15 @@ namespace Flow_aligned_surfaces {
 /// `with_interpolation(Grid_interpolation::TRICUBIC)` returns the same field interpolated by
 /// tensor-product Catmull–Rom splines over the 4 × 4 × 4 nodes around each cell: continuously
 /// differentiable, exact for fields quadratic in each coordinate and third-order accurate, where
-/// the trilinear blend is second-order and has derivatives that jump at every cell face.  Stream
-/// lines and stream surfaces integrated on it keep the first integrals of the sampled flow an
-/// order of magnitude better, with fewer steps of the adaptive integrators (2.6 times fewer on
-/// the ABC flow of the manual's benchmark).  The domain is the same; a cell with a solid node among the 64 of its
+/// the trilinear blend is second-order and has derivatives that jump at every cell face.  How much
+/// closer stream lines on it keep the first integrals of the sampled flow depends on the flow
+/// (median drift over stream lines, benchmark/Flow_aligned_surfaces/RESULTS.md): on the ABC flow
+/// over one period [0, 2π]³, 5, 15, 31 and 66 times closer at 16³, 32³, 64³ and 128³ nodes; 5 to
+/// 8 times closer inside Hill's spherical vortex at 16³ to 32³ nodes (a quadratic field,
+/// reproduced exactly away from the vortex's boundary); but no closer on the cellular flow
+/// \f$ (\sin x \cos y, -\cos x \sin y) \f$, where the largest drift over the lines is even 2 to
+/// 3 times larger.  On the smoother field the adaptive integrators take fewer steps (2.6 times
+/// fewer on the ABC flow of the manual's benchmark).  The domain is the same; a cell with a solid node among the 64 of its
 /// stencil is interpolated trilinearly, so next to solid nodes the field is continuous within a
 /// cell but may jump by O(h²) across the faces between such cells and tricubic ones.
 ///

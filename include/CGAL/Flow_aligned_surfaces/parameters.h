@@ -42,6 +42,8 @@ CGAL_FAS_DECLARE_TAG(across_flow)
 CGAL_FAS_DECLARE_TAG(flow_field)
 CGAL_FAS_DECLARE_TAG(normalized)
 CGAL_FAS_DECLARE_TAG(angle)
+CGAL_FAS_DECLARE_TAG(gradient_direction)
+CGAL_FAS_DECLARE_TAG(intrinsic_delaunay)
 CGAL_FAS_DECLARE_TAG(constraint_vertex)
 CGAL_FAS_DECLARE_TAG(resampling_step)
 // integrate_streamline(), integrate_pathline()
@@ -135,6 +137,12 @@ CGAL_FAS_NAMED_PARAMETER(normalized, bool)
 /// α, the angle (radians) by which `parametrize_orthogonal()` turns its reference direction
 /// about the normal at the constrained vertex.  Default: `0`.
 CGAL_FAS_NAMED_PARAMETER(angle, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Whether `compute_geodesic_distance()` runs the heat method on the intrinsic Delaunay
+/// triangulation of the mesh (edges flipped within the surface until every edge is Delaunay; the
+/// same surface, better shaped triangles), as CGAL's `Heat_method_3::Intrinsic_Delaunay` mode does,
+/// instead of on the mesh's own triangles.  Default: `true`.
+CGAL_FAS_NAMED_PARAMETER(intrinsic_delaunay, bool)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// The arc length between consecutive points of a polyline resampled by `project_polyline()`.
 /// Default: the mean edge length of the mesh.
@@ -252,6 +260,19 @@ constraint_vertex(const VertexDescriptor& v, const NamedParameters& np = NamedPa
 {
   return CGAL::Named_function_parameters<VertexDescriptor, internal_np::constraint_vertex_t, NamedParameters>(
       v, np);
+}
+
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// `parametrize_orthogonal()`: the direction that \f$ \nabla r \f$ takes at the constrained vertex
+/// with `angle(0)` (projected into the tangent plane there; `angle` turns it about the normal).
+/// Type: the kernel's `Vector_3`, not zero and not normal to the surface at that vertex.
+/// Default: the direction given by the package's own frame (see `parametrize_orthogonal()`).
+template <typename Vector_3, typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<Vector_3, internal_np::gradient_direction_t, NamedParameters>
+gradient_direction(const Vector_3& direction, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<Vector_3, internal_np::gradient_direction_t, NamedParameters>(
+      direction, np);
 }
 
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters

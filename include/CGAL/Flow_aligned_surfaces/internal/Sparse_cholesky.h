@@ -72,15 +72,32 @@ using Default_sparse_linear_solver =
     CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>;
 #endif
 
+/// Throws std::runtime_error naming `what` when the last factorization of `solver` failed.
+template <class SparseLinearSolver>
+void throw_if_factorization_failed(SparseLinearSolver& solver, const std::string& what)
+{
+  if (solver.solver().info() != Eigen::Success)
+    throw std::runtime_error("Flow_aligned_surfaces: the factorization of " + what +
+                             " failed (the matrix is not positive definite)");
+}
+
 /// Factors `matrix` with `solver`; throws std::runtime_error naming `what` when it fails.
 template <class SparseLinearSolver>
 void factor_or_throw(SparseLinearSolver& solver, const Eigen::SparseMatrix<double>& matrix,
                      const std::string& what)
 {
   solver.solver().compute(matrix);
-  if (solver.solver().info() != Eigen::Success)
-    throw std::runtime_error("Flow_aligned_surfaces: the factorization of " + what +
-                             " failed (the matrix is not positive definite)");
+  throw_if_factorization_failed(solver, what);
+}
+
+/// The numerical factorization of `matrix` by a solver whose `analyzePattern()` has seen a
+/// matrix of the same pattern; throws as `factor_or_throw()`.
+template <class SparseLinearSolver>
+void factor_pattern_or_throw(SparseLinearSolver& solver, const Eigen::SparseMatrix<double>& matrix,
+                             const std::string& what)
+{
+  solver.solver().factorize(matrix);
+  throw_if_factorization_failed(solver, what);
 }
 
 } // namespace internal

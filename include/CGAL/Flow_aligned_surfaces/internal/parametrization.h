@@ -7,7 +7,8 @@
 //
 //   face frames     n_j (unit normal), centroid, area of face j of the surface M_k
 //   guidance        tangential  a_j = P_j v_j (/ |P_j v_j|),
-//                   orthogonal  a_j = P_j (R(n_c, alpha) r_c) x v_j (/ |.|),
+//                   orthogonal  a_j = P_j (R(n_c, alpha) r_c) x v_j (/ |.|), r_c from the
+//                               Householder frame of n_c or from the user's gradient direction,
 //                   heat method a_j = -grad h / |grad h|,          b_j = a_j x n_j
 //   constraint      the vertex nearest to the area-weighted barycenter of each component, where
 //                   the solution is shifted to 0
@@ -25,6 +26,8 @@
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
+#include <CGAL/number_utils.h>
+
 #include <boost/property_map/property_map.hpp>
 
 #include <Eigen/Core>
@@ -36,6 +39,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -200,17 +204,72 @@ inline Positions tangential_guidance(const Surface_faces& s, Positions velocitie
   return velocities;
 }
 
+/// The sign of the flux of `velocities` through the faces around vertex i (their area-weighted
+/// n_j . v_j): +1 where the flow leaves the surface on the side of its normals, and where no face
+/// around i has a sample.
+inline double flux_sign_at_vertex(const Mesh_arrays& arrays, const Surface_faces& s, const Positions& velocities,
+                                  Eigen::Index i)
+{
+  double flux = 0;
+  for (Eigen::Index j = 0; j < s.number_of_faces(); ++j) {
+    const auto& fv = arrays.face_vertices[std::size_t(j)];
+    if (fv[0] == i || fv[1] == i || fv[2] == i)
+      flux += s.face_areas[j] * s.face_normals.row(j).dot(velocities.row(j));
+  }
+  return flux < 0 ? -1.0 : 1.0;
+}
+
+/// The direction r_c that the orthogonal guidance turns by alpha about n_c in the component of
+/// the constrained vertex i: by default the second column of the Householder Q of n_c; with
+/// `gradient_direction` g, sigma n_c x P g / |P g| (sigma the flux sign at i), for which
+/// a_j = P_j (r_c x v_j) = |v_j| P g / |P g| where v_j = sigma |v_j| n_c: grad r points along g.
+/// Throws std::invalid_argument naming `caller` when g is normal to the surface at i.
+inline Eigen::Vector3d orthogonal_reference_direction(const Mesh_arrays& arrays, const Surface_faces& s,
+                                                      const Positions& velocities, Eigen::Index i,
+                                                      const std::optional<Eigen::Vector3d>& gradient_direction,
+                                                      const std::string& caller)
+{
+  const Eigen::Vector3d n_c = vertex_normal(arrays, s, i);
+  if (!gradient_direction) {
+    const Eigen::Matrix3d q = Eigen::HouseholderQR<Eigen::Vector3d>(n_c).householderQ();
+    return q.col(1);
+  }
+  const Eigen::Vector3d g = *gradient_direction - n_c.dot(*gradient_direction) * n_c;
+  if (!(g.norm() > 1e-6 * gradient_direction->norm()))
+    throw std::invalid_argument(caller + ": gradient_direction is normal to the surface at the constrained vertex " +
+                                std::to_string(i) + " (it has no direction in the tangent plane)");
+  return flux_sign_at_vertex(arrays, s, velocities, i) * n_c.cross(g.normalized());
+}
+
+/// The user direction of `gradient_direction` in `np`, checked finite and not zero, or nothing.
+template <class NamedParameters>
+std::optional<Eigen::Vector3d> orthogonal_gradient_direction(const NamedParameters& np, const std::string& caller)
+{
+  if constexpr (!parameters::is_default_parameter<NamedParameters, internal_np::gradient_direction_t>::value) {
+    const auto& g = parameters::get_parameter(np, internal_np::gradient_direction_t());
+    const Eigen::Vector3d d(CGAL::to_double(g.x()), CGAL::to_double(g.y()), CGAL::to_double(g.z()));
+    if (!d.allFinite() || !(d.squaredNorm() > 0))
+      throw std::invalid_argument(caller + ": gradient_direction must be finite and not zero");
+    return d;
+  }
+  else
+    return std::nullopt;
+}
+
 /// The orthogonal guidance a_j = P_j (R(n_c, alpha) r_c) x v_j, normalized when asked, with n_c
-/// the normal at the constrained vertex of face j's component.
+/// the normal at the constrained vertex of face j's component and r_c from
+/// `orthogonal_reference_direction()`.
 inline Positions orthogonal_guidance(const Mesh_arrays& arrays, const Surface_faces& s, Positions velocities,
                                      const std::vector<Eigen::Index>& constrained, double alpha,
-                                     bool normalize)
+                                     bool normalize,
+                                     const std::optional<Eigen::Vector3d>& gradient_direction,
+                                     const std::string& caller)
 {
   std::vector<Eigen::Vector3d> direction(constrained.size());
   for (std::size_t c = 0; c < constrained.size(); ++c) {
     const Eigen::Vector3d n_c = vertex_normal(arrays, s, constrained[c]);
-    const Eigen::Matrix3d q = Eigen::HouseholderQR<Eigen::Vector3d>(n_c).householderQ();
-    direction[c] = rotation_matrix(n_c, alpha) * q.col(1);
+    direction[c] = rotation_matrix(n_c, alpha) * orthogonal_reference_direction(arrays, s, velocities, constrained[c],
+                                                                                gradient_direction, caller);
   }
   for (Eigen::Index j = 0; j < velocities.rows(); ++j) {
     const Eigen::Vector3d turned = direction[arrays.face_component[std::size_t(j)]];
