@@ -64,7 +64,7 @@ int main(int argc, char** argv)
     for (Mesh::Vertex_index v : tm.vertices()) // the time of the backward half is negative
       if (std::size_t(v) >= forward_vertices)
         t[v] = -t[v];
-    const double flux = FAS::normalized_flux(tm, flow);
+    const FAS::Normalized_flux flux = FAS::normalized_flux(tm, flow);
     std::cout << "stream surface " << c << ": " << tm.number_of_faces() << " triangles, "
               << forward.number_of_time_lines << " + " << backward.number_of_time_lines << " time lines, "
               << forward.number_of_inserted_particles + backward.number_of_inserted_particles << " inserted, "

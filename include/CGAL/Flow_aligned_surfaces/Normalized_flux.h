@@ -13,6 +13,7 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_NORMALIZED_FLUX_H
 
 #include <optional>
+#include <ostream>
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
@@ -44,6 +45,19 @@ struct Normalized_flux {
   /// a surface without area.
   double sampled_area_fraction = 0;
 };
+
+/// \ingroup PkgFlowAlignedSurfacesRef
+/// Writes `f` for people: the value, followed by the sampled share of the area when it is not
+/// all of it (`0.0123`, `0.0123 (on 97.5% of the area)`), or `none (no face sampled)`.
+inline std::ostream& operator<<(std::ostream& os, const Normalized_flux& f)
+{
+  if (!f.value)
+    return os << "none (no face sampled)";
+  os << *f.value;
+  if (f.sampled_area_fraction < 1)
+    os << " (on " << 100 * f.sampled_area_fraction << "% of the area)";
+  return os;
+}
 
 namespace internal {
 
