@@ -108,6 +108,89 @@ TEST(AlignmentAngles, StatisticsAreAreaWeightedAndSkipFacesWithoutASample)
   EXPECT_EQ(undefined, tm.number_of_faces() - measured);
 }
 
+TEST(AlignmentAngles, MinRelativeSpeedLeavesOutTheSlowFacesAndReportsTheirArea)
+{
+  // r = x; the flow makes 10 degrees with x at speed 1 where y >= -0.3, and 60 degrees at speed
+  // 0.01 (1% of the fastest) where y < -0.3, a share p (about 0.2) of the unit square.  Every
+  // face (the paper's measure, the default): mean 10 + 50 p, standard deviation
+  // 50 sqrt(p (1 - p)).  Faces slower than 2% of the fastest left out: mean 10, deviation 0,
+  // and p of the area reported as slow.
+  const double fast = 10 * CGAL_PI / 180, slow = 60 * CGAL_PI / 180;
+  const auto field = [&](const Point_3& p) -> std::optional<Vector_3> {
+    if (p.y() < -0.3)
+      return Vector_3(0.01 * std::cos(slow), 0.01 * std::sin(slow), 0);
+    return Vector_3(std::cos(fast), std::sin(fast), 0);
+  };
+  Mesh tm;
+  FAS::make_planar_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), 1.0, 1.0, 2000);
+  auto r = linear_field(tm, Vector_3(1, 0, 0));
+  double slow_area = 0;
+  std::size_t slow_faces = 0;
+  for (auto f : tm.faces()) {
+    const auto h = tm.halfedge(f);
+    const double cy =
+        (tm.point(tm.source(h)).y() + tm.point(tm.target(h)).y() + tm.point(tm.target(tm.next(h))).y()) / 3;
+    if (cy < -0.3) {
+      slow_area += CGAL::Polygon_mesh_processing::face_area(f, tm);
+      ++slow_faces;
+    }
+  }
+  const double p = slow_area; // the square's area is 1
+  ASSERT_NEAR(p, 0.2, 0.02);
+
+  const FAS::Alignment_angle_statistics all = FAS::alignment_angle_statistics(tm, field, r);
+  EXPECT_NEAR(all.mean, 10 + 50 * p, 1e-9);
+  EXPECT_NEAR(all.standard_deviation, 50 * std::sqrt(p * (1 - p)), 1e-9);
+  EXPECT_NEAR(all.sampled_area_fraction, 1.0, 1e-12);
+  EXPECT_EQ(all.slow_area_fraction, 0.0);
+  EXPECT_EQ(all.number_of_faces, tm.number_of_faces());
+
+  for (double threshold : {0.02, 0.5}) { // anything between 0.01 and 1 separates the two
+    const FAS::Alignment_angle_statistics fast_only =
+        FAS::alignment_angle_statistics(tm, field, r, FAS::parameters::min_relative_speed(threshold));
+    EXPECT_NEAR(fast_only.mean, 10, 1e-9) << threshold;
+    EXPECT_NEAR(fast_only.standard_deviation, 0, 1e-6) << threshold;
+    EXPECT_NEAR(fast_only.slow_area_fraction, p, 1e-12) << threshold;
+    EXPECT_NEAR(fast_only.sampled_area_fraction, 1.0, 1e-12) << threshold;
+    EXPECT_NEAR(fast_only.area, 1 - p, 1e-12) << threshold;
+    EXPECT_EQ(fast_only.number_of_faces, tm.number_of_faces() - slow_faces) << threshold;
+  }
+  // Below the slow speed's share nothing is left out.
+  EXPECT_EQ(FAS::alignment_angle_statistics(tm, field, r, FAS::parameters::min_relative_speed(0.005))
+                .slow_area_fraction,
+            0.0);
+
+  auto angles = tm.add_property_map<Mesh::Face_index, double>("f:angle", 0).first;
+  FAS::compute_face_alignment_angles(tm, field, r, angles, FAS::parameters::min_relative_speed(0.02));
+  std::size_t left_out = 0;
+  for (auto f : tm.faces()) {
+    EXPECT_TRUE(angles[f] == -1 || std::abs(angles[f] - 10) < 1e-9) << angles[f];
+    left_out += angles[f] == -1;
+  }
+  EXPECT_EQ(left_out, slow_faces);
+
+  expect_invalid_argument(
+      [&] { FAS::alignment_angle_statistics(tm, field, r, FAS::parameters::min_relative_speed(1.5)); },
+      {"alignment_angle_statistics", "min_relative_speed", "[0, 1]"});
+}
+
+TEST(AlignmentAngles, TheSampledAreaFractionCountsTheFacesOutsideTheDomain)
+{
+  // r = x, the flow along x in the half x < 0 of the unit square, nothing beyond.
+  const auto half = [](const Point_3& p) -> std::optional<Vector_3> {
+    if (p.x() < 0)
+      return Vector_3(2, 0, 0);
+    return std::nullopt;
+  };
+  Mesh tm;
+  FAS::make_planar_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), 1.0, 1.0, 2000);
+  auto r = linear_field(tm, Vector_3(1, 0, 0));
+  const FAS::Alignment_angle_statistics statistics = FAS::alignment_angle_statistics(tm, half, r);
+  EXPECT_NEAR(statistics.mean, 0, 1e-6);
+  EXPECT_NEAR(statistics.sampled_area_fraction, statistics.area, 1e-12);
+  EXPECT_NEAR(statistics.sampled_area_fraction, 0.5, 0.02);
+}
+
 TEST(AlignmentAngles, TheTangentialParametrizationOfAStreamSurfaceFollowsTheFlow)
 {
   // The cylinder x^2 + y^2 = 1 is a stream surface of the helical flow (-y, x, 0.5): a planar
