@@ -1,6 +1,11 @@
 // alignment_angle_statistics and compute_face_alignment_angles against closed forms: linear
 // fields whose gradient makes a known angle with a uniform flow, a piecewise uniform flow with
-// area-weighted statistics, and the tangential parametrization of an exact stream surface.
+// area-weighted statistics, a slow region left out by min_relative_speed, and the tangential
+// parametrization of an exact stream surface.
+//
+// Where a test quotes the paper's figures (Section 7) it measures what the paper measured, the
+// one definition the manual documents: the r of the unnormalized tangential parametrization
+// (a_j = v_j, Section 6) over every sampled face (min_relative_speed 0, the default).
 
 #include "expect_invalid_argument.h"
 #include "real_data.h"
@@ -227,25 +232,27 @@ TEST(AlignmentAngles, TheTangentialParametrizationOfADeformedStreamSurfaceFollow
   ASSERT_LE(report.normalized_flux.value.value(), 0.01);
   auto r = tm.add_property_map<Vertex, double>("v:r", 0).first;
   auto s = tm.add_property_map<Vertex, double>("v:s", 0).first;
-  // The unnormalized r (the LIC coordinate) meets them (0.40 and 0.22 degrees): outside its core
-  // the vortex is near irrotational, so v is near a gradient on the surface.  The normalized r
-  // does not (4.8 and 2.8): v/|v| is a gradient only where stream lines are straight, and these
-  // spiral.
+  // The paper's measure (unnormalized r, every face) meets them (0.40 and 0.22 degrees): outside
+  // its core the vortex is near irrotational, so v is near a gradient on the surface.
   FAS::parametrize_tangential(tm, flow, r, s, FAS::parameters::normalized(false));
   const FAS::Alignment_angle_statistics statistics = FAS::alignment_angle_statistics(tm, flow, r);
   EXPECT_LE(statistics.mean, 1.0);
   EXPECT_LE(statistics.standard_deviation, 0.9);
+  EXPECT_EQ(statistics.slow_area_fraction, 0.0);
+  EXPECT_EQ(statistics.sampled_area_fraction, 1.0);
 }
 
 TEST(AlignmentAngles, OnCFDDataTheTangentialParametrizationFollowsTheFlow)
 {
   // The DFG cylinder benchmark (../shared/data/CYLINDER.md): a stream surface in the wake found
-  // by the deformation from a tilted square, as in test_read_VTK_legacy.cpp; the paper's STEP
-  // figures are 2.2 and 2.4 degrees.  A tangent field is a gradient where its surface curl
-  // vanishes: for v, where the flow on the surface has no vorticity; for v/|v|, where its stream
-  // lines are straight.  The wake's stream lines are near straight but sheared, so here the
-  // normalized r meets the figures (0.18 and 0.15 degrees) and the unnormalized one does not
-  // (3.8 and 4.2); the Burgers vortex above is the other way round.
+  // by the deformation from a tilted square, as in test_read_VTK_legacy.cpp, measured as the
+  // paper measured (unnormalized r, every face).  A tangent field is a gradient where its
+  // surface curl vanishes: for v, where the flow on the surface has no vorticity.  The wake is
+  // sheared, so the paper's STEP figures (2.2 and 2.4 degrees, another flow) are not met here:
+  // 3.81 and 4.22 degrees, with no slow face (the normalized r, whose guidance v/|v| is a
+  // gradient where stream lines are straight, would give 0.18 and 0.15; it is not what the
+  // paper measured).  The bounds are those figures with a 10% margin: a regression guard, not
+  // the paper's figures.
   const std::string file = shared_data_file("CYLINDER_grid.vtk");
   if (file.empty())
     GTEST_SKIP() << "CYLINDER_grid.vtk not found in FAS_SHARED_DATA_DIR (../shared/data)";
@@ -260,13 +267,15 @@ TEST(AlignmentAngles, OnCFDDataTheTangentialParametrizationFollowsTheFlow)
   ASSERT_LE(report.normalized_flux.value.value(), 0.02);
   auto r = tm.add_property_map<Vertex, double>("v:r", 0).first;
   auto s = tm.add_property_map<Vertex, double>("v:s", 0).first;
-  FAS::parametrize_tangential(tm, field, r, s, FAS::parameters::normalized(true));
+  FAS::parametrize_tangential(tm, field, r, s, FAS::parameters::normalized(false));
   const FAS::Alignment_angle_statistics statistics = FAS::alignment_angle_statistics(tm, field, r);
   RecordProperty("CYLINDER_alignment_mean_degrees", std::to_string(statistics.mean));
   RecordProperty("CYLINDER_alignment_standard_deviation_degrees",
                  std::to_string(statistics.standard_deviation));
-  EXPECT_LE(statistics.mean, 2.2);
-  EXPECT_LE(statistics.standard_deviation, 2.4);
+  EXPECT_LE(statistics.mean, 4.2);
+  EXPECT_LE(statistics.standard_deviation, 4.65);
+  EXPECT_EQ(statistics.slow_area_fraction, 0.0);
+  EXPECT_EQ(statistics.sampled_area_fraction, 1.0);
 }
 
 TEST(AlignmentAngles, NothingToMeasureIsAnError)
