@@ -2,6 +2,8 @@
 // and piecewise uniform flows; the sampled area fraction of surfaces partly and wholly outside
 // a box domain, in the measure and in the deformation's reports.
 
+#include "centroid_area.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
@@ -14,7 +16,6 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
-#include <utility>
 
 // This file's tests and helpers in a namespace of their own: the suite is compiled in unity
 // batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
@@ -57,17 +58,8 @@ TEST(Measure, FluxIsAreaWeightedAndSkipsFacesWithoutASample)
   };
   Mesh tm;
   FAS::make_planar_patch(tm, Point(0, 0, 0), Vector(0, 0, 1), 1.0, 1.0, 2000);
-  double orthogonal_area = 0, sampled_area = 0;
-  for (auto f : tm.faces()) {
-    const auto h = tm.halfedge(f);
-    const double cx =
-        (tm.point(tm.source(h)).x() + tm.point(tm.target(h)).x() + tm.point(tm.target(tm.next(h))).x()) / 3;
-    const double area = CGAL::Polygon_mesh_processing::face_area(f, tm);
-    if (cx < 0.25)
-      sampled_area += area;
-    if (cx < 0)
-      orthogonal_area += area;
-  }
+  const double sampled_area = fas_test::centroid_area(tm, [](const Point& c) { return c.x() < 0.25; }).area;
+  const double orthogonal_area = fas_test::centroid_area(tm, [](const Point& c) { return c.x() < 0; }).area;
   EXPECT_NEAR(FAS::normalized_flux(tm, piecewise).value.value(), orthogonal_area / sampled_area, 1e-12);
 
   auto flux = tm.add_property_map<Mesh::Face_index, double>("f:flux", 0).first;
@@ -87,22 +79,16 @@ const auto box_flow = [](const Point& p) -> std::optional<Vector> {
   return Vector(0.6, 0, 0.8);
 };
 
-// The share of the area of tm whose face centroids have x < 0.25 (inside the box), and the
-// number of faces outside.
-std::pair<double, std::size_t> inside_the_box(const Mesh& tm)
+// The faces of tm whose centroids are inside the box.
+fas_test::Centroid_area inside_the_box(const Mesh& tm)
 {
-  double inside = 0, total = 0;
-  std::size_t outside = 0;
-  for (auto f : tm.faces()) {
-    const auto h = tm.halfedge(f);
-    const double cx =
-        (tm.point(tm.source(h)).x() + tm.point(tm.target(h)).x() + tm.point(tm.target(tm.next(h))).x()) / 3;
-    const double area = CGAL::Polygon_mesh_processing::face_area(f, tm);
-    total += area;
-    inside += cx < 0.25 ? area : 0;
-    outside += cx >= 0.25;
-  }
-  return {inside / total, outside};
+  return fas_test::centroid_area(tm, [](const Point& c) { return bool(box_flow(c)); });
+}
+
+double inside_the_box_fraction(const Mesh& tm)
+{
+  const fas_test::Centroid_area inside = inside_the_box(tm);
+  return inside.area / inside.total_area;
 }
 
 TEST(Measure, ASurfaceOutsideTheDomainHasNoFluxValue)
@@ -132,7 +118,7 @@ TEST(Measure, ASurfacePartlyOutsideTheDomainGivesItsSampledAreaFraction)
   const FAS::Normalized_flux flux = FAS::normalized_flux(tm, box_flow);
   EXPECT_NEAR(flux.value.value(), 0.8, 1e-12);
   EXPECT_NEAR(flux.sampled_area_fraction, 0.75, 0.02);
-  EXPECT_NEAR(flux.sampled_area_fraction, inside_the_box(tm).first, 1e-12);
+  EXPECT_NEAR(flux.sampled_area_fraction, inside_the_box_fraction(tm), 1e-12);
   std::ostringstream os;
   os << flux;
   EXPECT_NE(os.str().find("% of the area)"), std::string::npos) << os.str();
@@ -147,8 +133,8 @@ TEST(Measure, ASurfacePartlyOutsideTheDomainGivesItsSampledAreaFraction)
   const FAS::Normalized_flux now = FAS::normalized_flux(tm, box_flow);
   EXPECT_NEAR(report.normalized_flux.value.value(), now.value.value(), 1e-12);
   EXPECT_NEAR(report.normalized_flux.sampled_area_fraction, now.sampled_area_fraction, 1e-12);
-  EXPECT_NEAR(report.normalized_flux.sampled_area_fraction, inside_the_box(tm).first, 1e-12);
-  EXPECT_GT(inside_the_box(tm).second, 0u);
+  EXPECT_NEAR(report.normalized_flux.sampled_area_fraction, inside_the_box_fraction(tm), 1e-12);
+  EXPECT_LT(inside_the_box(tm).number_of_faces, tm.number_of_faces());
 
   // Moved out of the domain: the next iteration's report has no value.
   deformation.translate(Vector(5, 0, 0));

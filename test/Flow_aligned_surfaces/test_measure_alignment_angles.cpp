@@ -7,6 +7,7 @@
 // one definition the manual documents: the r of the unnormalized tangential parametrization
 // (a_j = v_j, Section 6) over every sampled face (min_relative_speed 0, the default).
 
+#include "centroid_area.h"
 #include "expect_invalid_argument.h"
 #include "real_data.h"
 #include "test_kernel.h"
@@ -82,19 +83,10 @@ TEST(AlignmentAngles, StatisticsAreAreaWeightedAndSkipFacesWithoutASample)
   Mesh tm;
   FAS::make_planar_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), 1.0, 1.0, 2000);
   auto r = linear_field(tm, Vector_3(1, 0, 0));
-  double aligned = 0, turned = 0;
-  std::size_t measured = 0;
-  for (auto f : tm.faces()) {
-    const auto h = tm.halfedge(f);
-    const double cx =
-        (tm.point(tm.source(h)).x() + tm.point(tm.target(h)).x() + tm.point(tm.target(tm.next(h))).x()) / 3;
-    const double area = CGAL::Polygon_mesh_processing::face_area(f, tm);
-    if (cx < 0)
-      aligned += area;
-    else if (cx < 0.3)
-      turned += area;
-    measured += cx < 0.3;
-  }
+  const double aligned = centroid_area(tm, [](const Point_3& c) { return c.x() < 0; }).area;
+  const Centroid_area sampled = centroid_area(tm, [](const Point_3& c) { return c.x() < 0.3; });
+  const double turned = sampled.area - aligned;
+  const std::size_t measured = sampled.number_of_faces;
   const double p = turned / (aligned + turned);
   const FAS::Alignment_angle_statistics statistics = FAS::alignment_angle_statistics(tm, piecewise, r);
   EXPECT_NEAR(statistics.mean, 45 * p, 1e-9);
@@ -129,18 +121,9 @@ TEST(AlignmentAngles, MinRelativeSpeedLeavesOutTheSlowFacesAndReportsTheirArea)
   Mesh tm;
   FAS::make_planar_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), 1.0, 1.0, 2000);
   auto r = linear_field(tm, Vector_3(1, 0, 0));
-  double slow_area = 0;
-  std::size_t slow_faces = 0;
-  for (auto f : tm.faces()) {
-    const auto h = tm.halfedge(f);
-    const double cy =
-        (tm.point(tm.source(h)).y() + tm.point(tm.target(h)).y() + tm.point(tm.target(tm.next(h))).y()) / 3;
-    if (cy < -0.3) {
-      slow_area += CGAL::Polygon_mesh_processing::face_area(f, tm);
-      ++slow_faces;
-    }
-  }
-  const double p = slow_area; // the square's area is 1
+  const Centroid_area slow_region = centroid_area(tm, [](const Point_3& c) { return c.y() < -0.3; });
+  const double p = slow_region.area; // the square's area is 1
+  const std::size_t slow_faces = slow_region.number_of_faces;
   ASSERT_NEAR(p, 0.2, 0.02);
 
   const FAS::Alignment_angle_statistics all = FAS::alignment_angle_statistics(tm, field, r);
