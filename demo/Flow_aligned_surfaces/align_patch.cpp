@@ -252,7 +252,7 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
 // A number in JSON, or null for no value.
 std::string json_number(const std::optional<double>& x)
 {
-  return x ? std::to_string(*x) : "null";
+  return x ? csv_field(x) : "null";
 }
 
 // The flux speaks only for the faces where the flow was sampled.  When more than 5% of the area
