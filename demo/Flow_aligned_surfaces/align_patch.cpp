@@ -223,8 +223,8 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
   }
   std::cout << name << ": " << seed_curves.size() << " seed curves, stream surfaces of "
             << surfaces.number_of_faces() << " triangles (flux "
-            << (surfaces.is_empty() ? FAS::Normalized_flux() : FAS::normalized_flux(surfaces, scene.flow)) << ")"
-            << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
+            << (surfaces.is_empty() ? FAS::Normalized_flux() : FAS::normalized_flux(surfaces, scene.flow))
+            << ")" << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
             << "\n";
   if (pictures) {
     if (write_picture(out / (name + "_seed_curves.png"), tm,
@@ -267,7 +267,9 @@ void warn_unsampled(const std::string& name, const std::vector<FAS::Iteration_re
     worst = std::min(worst, r.normalized_flux.sampled_area_fraction);
   if (1 - worst <= largest_unsampled)
     return;
-  const auto percent = [](double sampled) { return std::to_string(int(std::lround(100 * (1 - sampled)))) + "%"; };
+  const auto percent = [](double sampled) {
+    return std::to_string(int(std::lround(100 * (1 - sampled)))) + "%";
+  };
   std::cerr << "warning: " << name << " surface: " << percent(worst)
             << " of its area had no flow sample (outside the domain, or a zero or non-finite velocity)"
             << " during the alignment, " << percent(final_flux.sampled_area_fraction) << " at the end; "
@@ -330,8 +332,8 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     os << "iteration,normalized_flux,sampled_area_fraction,max_rotation_angle,max_vertex_step,folds,"
           "outside_samples,invalid_samples,zero_samples,gtransf_ms,solve_ms,converged\n";
     for (const auto& r : iterations)
-      os << r.iteration << ',' << csv_field(r.normalized_flux.value) << ',' << r.normalized_flux.sampled_area_fraction
-         << ',' << r.max_rotation_angle << ',' << r.max_vertex_step
+      os << r.iteration << ',' << csv_field(r.normalized_flux.value) << ','
+         << r.normalized_flux.sampled_area_fraction << ',' << r.max_rotation_angle << ',' << r.max_vertex_step
          << ',' << r.number_of_folds << ',' << r.number_of_outside_samples << ','
          << r.number_of_invalid_samples << ',' << r.number_of_zero_samples << ','
          << r.gradient_transformation_ms << ',' << r.solve_ms << ',' << (r.converged ? 1 : 0) << '\n';

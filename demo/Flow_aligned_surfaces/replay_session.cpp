@@ -74,10 +74,9 @@ bool write_csv(const fs::path& path, const FAS::Session_replay_report& replay)
         "converged,number_of_moves_before,moves_before\n";
   for (const FAS::Session_iteration& it : replay.iterations)
     os << it.report.iteration << ',' << it.line << ',' << csv_field(it.report.normalized_flux.value) << ','
-       << it.report.normalized_flux.sampled_area_fraction << ','
-       << it.report.max_rotation_angle << ',' << it.report.max_vertex_step << ','
-       << (it.report.converged ? 1 : 0) << ',' << number_of_words(it.moves_before) << ',' << it.moves_before
-       << '\n';
+       << it.report.normalized_flux.sampled_area_fraction << ',' << it.report.max_rotation_angle << ','
+       << it.report.max_vertex_step << ',' << (it.report.converged ? 1 : 0) << ','
+       << number_of_words(it.moves_before) << ',' << it.moves_before << '\n';
   if (!os) {
     std::cerr << "error: cannot write " << path << "\n";
     return false;

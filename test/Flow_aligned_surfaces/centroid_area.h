@@ -25,7 +25,8 @@ Centroid_area centroid_area(const Mesh& tm, const Predicate& predicate)
   Centroid_area result;
   for (auto f : faces(tm)) {
     const auto h = halfedge(f, tm);
-    const auto c = CGAL::centroid(tm.point(source(h, tm)), tm.point(target(h, tm)), tm.point(target(next(h, tm), tm)));
+    const auto c =
+        CGAL::centroid(tm.point(source(h, tm)), tm.point(target(h, tm)), tm.point(target(next(h, tm), tm)));
     const double area = CGAL::Polygon_mesh_processing::face_area(f, tm);
     result.total_area += area;
     if (predicate(c)) {

@@ -373,7 +373,8 @@ TEST(FlowAlignedDeformation, ParallelIterationsGiveTheSerialSurfaces)
   for (std::size_t k = 0; k < serial_reports.size(); ++k) {
     EXPECT_EQ(serial_reports[k].max_rotation_angle, parallel_reports[k].max_rotation_angle);
     // Only the order of the flux sums differs.
-    EXPECT_NEAR(serial_reports[k].normalized_flux.value.value(), parallel_reports[k].normalized_flux.value.value(), 1e-12);
+    EXPECT_NEAR(serial_reports[k].normalized_flux.value.value(),
+                parallel_reports[k].normalized_flux.value.value(), 1e-12);
   }
   auto p = parallel.vertices().begin();
   for (auto v : serial.vertices())

@@ -37,7 +37,8 @@ TEST(Measure, FluxOfATiltedPlaneInAUniformFlowIsTheCosineOfTheTilt)
       Mesh tm;
       FAS::make_planar_patch(tm, Point(1, 2, 3), Vector(sign * std::sin(tilt), 0, sign * std::cos(tilt)), 1.0,
                              0.7, 300);
-      EXPECT_NEAR(FAS::normalized_flux(tm, uniform).value.value(), std::abs(std::cos(tilt)), 1e-12) << "tilt " << tilt;
+      EXPECT_NEAR(FAS::normalized_flux(tm, uniform).value.value(), std::abs(std::cos(tilt)), 1e-12)
+          << "tilt " << tilt;
       auto flux = tm.add_property_map<Mesh::Face_index, double>("f:flux", 0).first;
       FAS::compute_face_normalized_flux(tm, uniform, flux);
       for (auto f : tm.faces())
@@ -125,7 +126,8 @@ TEST(Measure, ASurfacePartlyOutsideTheDomainGivesItsSampledAreaFraction)
 
   // The deformation's reports say the same: of the surface an iteration starts from, and of
   // the final surface.
-  FAS::Flow_aligned_deformation<Mesh, decltype(box_flow)> deformation(tm, box_flow, FAS::Alignment::ORTHOGONAL);
+  FAS::Flow_aligned_deformation<Mesh, decltype(box_flow)> deformation(tm, box_flow,
+                                                                      FAS::Alignment::ORTHOGONAL);
   const FAS::Iteration_report first = deformation.step();
   EXPECT_NEAR(first.normalized_flux.value.value(), 0.8, 1e-12);
   EXPECT_NEAR(first.normalized_flux.sampled_area_fraction, flux.sampled_area_fraction, 1e-12);

@@ -197,7 +197,8 @@ void expect_same_outcome(const Problem& problem, const Outcome& reference, const
   EXPECT_EQ(largest_distance(other.initial, reference.initial), 0.0);
   EXPECT_EQ(other.report.number_of_iterations, reference.report.number_of_iterations);
   EXPECT_EQ(other.report.converged, reference.report.converged);
-  EXPECT_NEAR(other.report.normalized_flux.value.value(), reference.report.normalized_flux.value.value(), tolerance);
+  EXPECT_NEAR(other.report.normalized_flux.value.value(), reference.report.normalized_flux.value.value(),
+              tolerance);
   EXPECT_NEAR(other.measured_flux, reference.measured_flux, tolerance);
   EXPECT_LE(largest_distance(other.final, reference.final), tolerance * problem.size);
 }
@@ -379,7 +380,8 @@ TEST(MeshTypesOpenMesh, DefaultFloatTriMeshAlignsThroughCGALsVertexPointMap)
   EXPECT_TRUE(report.converged);
   EXPECT_GE(report.normalized_flux.value.value(), 0.995);
   EXPECT_EQ(report.number_of_iterations, expected.number_of_iterations);
-  EXPECT_NEAR(FAS::normalized_flux(tm, source).value.value(), FAS::normalized_flux(reference, source).value.value(), 1e-6);
+  EXPECT_NEAR(FAS::normalized_flux(tm, source).value.value(),
+              FAS::normalized_flux(reference, source).value.value(), 1e-6);
   ASSERT_GT(largest_distance(initial, positions(reference)), 1e-2 * problem.size);
   // Every iteration rounds the coordinates (about 2) to float, 1.2e-7 each.
   EXPECT_LE(largest_distance(positions(tm), positions(reference)), 1e-5 * problem.size);

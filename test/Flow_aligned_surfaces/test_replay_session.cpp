@@ -107,7 +107,8 @@ TEST(ReplaySession, MovesMakeTheFluxSpikesTheyMust)
   EXPECT_EQ(save_lines, (std::vector<std::size_t>{6, 10}));
   EXPECT_EQ(saved_at, (std::vector<std::size_t>{it.size() - 1, it.size()}));
   EXPECT_TRUE(replay.growths.empty());
-  EXPECT_NEAR(replay.final_normalized_flux.value.value(), FAS::normalized_flux(tm, Flow()).value.value(), 1e-15);
+  EXPECT_NEAR(replay.final_normalized_flux.value.value(), FAS::normalized_flux(tm, Flow()).value.value(),
+              1e-15);
 }
 
 TEST(ReplaySession, TheSameSessionGivesTheSameNumbersBitForBit)
@@ -143,7 +144,8 @@ TEST(ReplaySession, TheSameSessionGivesTheSameNumbersBitForBit)
     const auto &a = first.iterations[i], &b = second.iterations[i];
     EXPECT_EQ(a.line, b.line);
     EXPECT_EQ(a.moves_before, b.moves_before);
-    EXPECT_EQ(a.report.normalized_flux.value.value(), b.report.normalized_flux.value.value()) << "iteration " << i + 1;
+    EXPECT_EQ(a.report.normalized_flux.value.value(), b.report.normalized_flux.value.value())
+        << "iteration " << i + 1;
     EXPECT_EQ(a.report.max_rotation_angle, b.report.max_rotation_angle) << "iteration " << i + 1;
     EXPECT_EQ(a.report.max_vertex_step, b.report.max_vertex_step) << "iteration " << i + 1;
   }
@@ -153,7 +155,8 @@ TEST(ReplaySession, TheSameSessionGivesTheSameNumbersBitForBit)
   EXPECT_EQ(first.growths[0].added_area, second.growths[0].added_area);
   EXPECT_EQ(first_points, second_points);
   EXPECT_EQ(first.final_normalized_flux.value.value(), second.final_normalized_flux.value.value());
-  EXPECT_LT(first.final_normalized_flux.value.value(), 0.01); // and the grown surface is a stream surface again
+  EXPECT_LT(first.final_normalized_flux.value.value(),
+            0.01); // and the grown surface is a stream surface again
 }
 
 TEST(ReplaySession, ARefusedOperationNamesItsSessionLine)

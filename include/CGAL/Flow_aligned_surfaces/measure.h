@@ -96,8 +96,9 @@ Normalized_flux normalized_flux(const Positions& positions,
                                 const FlowField& field, const GeomTraits& gt)
 {
   Normalized_flux_sum sum;
-  visit_face_fluxes(positions, face_vertices, field, gt,
-                    [&](std::size_t, double area, const std::optional<double>& flux) { sum.add(area, flux); });
+  visit_face_fluxes(
+      positions, face_vertices, field, gt,
+      [&](std::size_t, double area, const std::optional<double>& flux) { sum.add(area, flux); });
   return sum.result();
 }
 
@@ -189,8 +190,9 @@ Normalized_flux normalized_flux(const TriangleMesh& tm, const FlowField& field,
                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
   internal::Normalized_flux_sum sum;
-  internal::visit_mesh_face_fluxes(tm, field, np, "normalized_flux",
-                                   [&](auto, double area, const std::optional<double>& flux) { sum.add(area, flux); });
+  internal::visit_mesh_face_fluxes(
+      tm, field, np, "normalized_flux",
+      [&](auto, double area, const std::optional<double>& flux) { sum.add(area, flux); });
   return sum.result();
 }
 
@@ -223,10 +225,9 @@ void compute_face_normalized_flux(const TriangleMesh& tm, const FlowField& field
   internal::check_triangle_mesh(tm, "compute_face_normalized_flux: tm");
   for (auto f : faces(tm))
     put(face_flux_map, f, -1.0);
-  internal::visit_mesh_face_fluxes(tm, field, np, "compute_face_normalized_flux",
-                                   [&](auto f, double, const std::optional<double>& flux) {
-                                     put(face_flux_map, f, flux ? *flux : -1.0);
-                                   });
+  internal::visit_mesh_face_fluxes(
+      tm, field, np, "compute_face_normalized_flux",
+      [&](auto f, double, const std::optional<double>& flux) { put(face_flux_map, f, flux ? *flux : -1.0); });
 }
 
 namespace internal {
@@ -249,8 +250,8 @@ std::vector<Face_alignment_angle<typename boost::graph_traits<TriangleMesh>::fac
 face_alignment_angles(const TriangleMesh& tm, const FlowField& field, RMap r_map, const NamedParameters& np,
                       const std::string& caller)
 {
-  const double min_relative_speed = parameters::choose_parameter(
-      parameters::get_parameter(np, internal_np::min_relative_speed_t()), 0.0);
+  const double min_relative_speed =
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::min_relative_speed_t()), 0.0);
   if (!(min_relative_speed >= 0 && min_relative_speed <= 1))
     throw std::invalid_argument(caller + ": min_relative_speed = " + std::to_string(min_relative_speed) +
                                 " is not in [0, 1]");
@@ -269,7 +270,8 @@ face_alignment_angles(const TriangleMesh& tm, const FlowField& field, RMap r_map
         const Eigen::Vector3d gradient = t ? Eigen::Vector3d(t->gradients * r) : Eigen::Vector3d::Zero();
         const bool sampled = s.kind == Sample_kind::VALID;
         const bool usable = sampled && gradient.allFinite() && gradient.squaredNorm() > 0;
-        result.push_back({f, area, sampled, false, usable ? angle_between(s.direction, gradient) * 180 / CGAL_PI : -1.0});
+        result.push_back(
+            {f, area, sampled, false, usable ? angle_between(s.direction, gradient) * 180 / CGAL_PI : -1.0});
         speeds.push_back(sampled ? s.velocity.stableNorm() : 0.0);
       });
   if (min_relative_speed > 0 && !speeds.empty()) {

@@ -54,7 +54,8 @@ int main(int argc, char** argv)
 #endif
     std::cout << "faces: " << tm.number_of_faces() << "\n"
               << "normalized flux before: " << before << "\n"
-              << "normalized flux after: " << report.normalized_flux.value.value() << " (" << report.number_of_iterations
+              << "normalized flux after: " << report.normalized_flux.value.value() << " ("
+              << report.number_of_iterations
               << " iterations, converged: " << (report.converged ? "yes" : "no") << ")\n";
     if (!report.converged || !(report.normalized_flux.value.value() >= 0.995) || !(before < 0.99)) {
       std::cerr << "consumer: the alignment did not reach the expected flux (>= 0.995 from < 0.99)\n";
