@@ -350,7 +350,7 @@ convertible to `double` as value type
     \cgalParamType{`double` in \f$ [0, 1] \f$}
     \cgalParamDefault{`0` (every sampled face is measured, as in the paper)}
   \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map, geom_traits, vertex_index_map, face_index_map}
+  \cgalParamNBegin{vertex_point_map, geom_traits}
     \cgalParamDescription{as in `normalized_flux()`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
