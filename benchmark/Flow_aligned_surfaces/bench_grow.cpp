@@ -10,7 +10,8 @@
 // unit square).  Setup is not timed (manual time: the wall clock of grow() alone); the counters
 // split it: offset_ms (selection, offset, raw strip), remesh_ms (split_long_edges and
 // isotropic_remeshing), m0_map_ms (new vertices located in M_0, appended to the mesh, mesh
-// arrays), factor_ms (operators on M_0 and the factorization).  Single-threaded: run with
+// arrays), check_ms (the grown surface checked: manifold, no new face cutting through another),
+// factor_ms (operators on M_0 and the factorization).  Single-threaded: run with
 // OMP_NUM_THREADS=1 (CHOLMOD links OpenMP).  With CHOLMOD, the same with the supernodal LL^T
 // solver (template parameter SparseLinearSolver), which factors faster at 8e4 faces.  grow_cpu_ms is the thread CPU time of grow(), the
 // figure to trust on a shared machine; construct_ms the constructor (operators and the first
@@ -65,7 +66,7 @@ void BM_grow_and_refactor(benchmark::State& state)
 {
   const std::size_t faces = static_cast<std::size_t>(state.range(0));
   const double h = std::sqrt(2.0 / (std::sqrt(3.0) * double(faces)));
-  double cpu = 0, construct = 0, offset = 0, remesh = 0, map = 0, factor = 0, new_faces = 0, total_faces = 0;
+  double cpu = 0, construct = 0, offset = 0, remesh = 0, map = 0, check = 0, factor = 0, new_faces = 0, total_faces = 0;
   const Flow flow(K::Point_3(0, 0, 0), 1.0); // held by reference by the deformation
   for (auto _ : state) {
     Mesh tm;
@@ -86,6 +87,7 @@ void BM_grow_and_refactor(benchmark::State& state)
     offset += report.offset_ms;
     remesh += report.remesh_ms;
     map += report.reference_map_ms;
+    check += report.check_ms;
     factor += report.factor_ms;
     new_faces += double(report.number_of_new_faces);
     total_faces += double(tm.number_of_faces());
@@ -97,6 +99,7 @@ void BM_grow_and_refactor(benchmark::State& state)
   state.counters["offset_ms"] = offset / n;
   state.counters["remesh_ms"] = remesh / n;
   state.counters["m0_map_ms"] = map / n;
+  state.counters["check_ms"] = check / n;
   state.counters["factor_ms"] = factor / n;
   state.counters["new_faces"] = new_faces / n;
   state.counters["faces_after"] = total_faces / n;

@@ -14,6 +14,11 @@
 // normalized flux against the analytic field; and ours on the analytic field, for the drift of
 // the integration alone.  x_max, the largest x of a vertex, shows how far each surface got.
 //
+// Issue 15: ours also at tolerances 1e-12 (the floor: what the sampled field itself allows) and
+// at the stream lines' defaults 1e-8 / 1e-10 (the surfaces' defaults before issue 15), with the
+// ratio of each drift to the floor, the ratio of VTK's time to each, and the smallest triangle
+// angle.
+//
 // vtkStreamSurface with iterative seeding was seen to run to the domain's boundary whatever its
 // MaximumPropagation (the same surface for 2 and 6), so the default length, 6, takes ours there
 // too: both surfaces then end where the flow leaves the grid (the same x_max).
@@ -87,8 +92,21 @@ struct Soup {
 };
 
 struct Row {
-  double ms, triangles, max_drift, rms_drift, flux, x_max;
+  double ms, triangles, max_drift, rms_drift, flux, x_max, min_angle;
 };
+
+double smallest_angle(const Soup& soup)
+{
+  double smallest = 180;
+  for (const auto& t : soup.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::RowVector3d a = soup.positions.row(t[(k + 1) % 3]) - soup.positions.row(t[k]);
+      const Eigen::RowVector3d b = soup.positions.row(t[(k + 2) % 3]) - soup.positions.row(t[k]);
+      const double c = a.dot(b) / std::sqrt(a.squaredNorm() * b.squaredNorm());
+      smallest = std::min(smallest, std::acos(std::clamp(c, -1., 1.)) * 180 / CGAL_PI);
+    }
+  return smallest;
+}
 
 Row measure(const Soup& soup, double ms)
 {
@@ -107,7 +125,8 @@ Row measure(const Soup& soup, double ms)
           max_drift,
           std::sqrt(sum / std::max<double>(1, double(soup.positions.rows()))),
           FAS::internal::normalized_flux(soup.positions, soup.triangles, abc, K()).value.value(),
-          soup.positions.rows() > 0 ? soup.positions.col(0).maxCoeff() : 0.};
+          soup.positions.rows() > 0 ? soup.positions.col(0).maxCoeff() : 0.,
+          smallest_angle(soup)};
 }
 
 double median(std::vector<double> v)
@@ -205,15 +224,13 @@ int main(int argc, char** argv)
   // Ours on a field: the sampled grid (the comparison) and the analytic flow (what the
   // integration itself drifts, without the trilinear interpolation's error).
   FAS::Stream_surface_report report;
-  const auto ours_on = [&](const auto& field) {
+  const auto ours_with = [&](const auto& field, const auto& np) {
     return median_of_runs(runs, [&] {
       Mesh tm;
       report = FAS::integrate_stream_surface(
           field, fine, tm,
           FAS::parameters::front_spacing(
-              h, FAS::parameters::arc_length_time_lines(
-                     true, FAS::parameters::max_length(
-                               length, FAS::parameters::max_number_of_time_lines(std::size_t(100000))))));
+              h, FAS::parameters::arc_length_time_lines(true, FAS::parameters::max_length(length, np))));
       Soup soup;
       soup.positions.resize(Eigen::Index(tm.number_of_vertices()), 3);
       for (auto v : tm.vertices())
@@ -229,23 +246,31 @@ int main(int argc, char** argv)
       return soup;
     });
   };
+  const auto ours_on = [&](const auto& field) { return ours_with(field, CGAL::parameters::default_values()); };
+  const auto tolerances = [](double relative, double absolute) {
+    return FAS::parameters::relative_tolerance(relative, FAS::parameters::absolute_tolerance(absolute));
+  };
   const Row ours_analytic = ours_on(abc);
   const Row ours_cubic = ours_on(grid.with_interpolation(FAS::Grid_interpolation::TRICUBIC));
+  const Row at_floor = ours_with(grid, tolerances(1e-12, 1e-12));
+  const Row former = ours_with(grid, tolerances(1e-8, 1e-10));
   const Row ours = ours_on(grid); // last, so that `report` is the trilinear grid's
 
   std::printf("ABC C=0 at %zu^3, seed on I = %.1f (length %.3f), h = %g, length %g, median of %d runs\n", n,
               level, L, h, length, runs);
-  std::printf("%-22s %10s %10s %12s %12s %12s %8s\n", "", "time_ms", "triangles", "max_drift", "rms_drift",
-              "flux", "x_max");
-  std::printf("%-22s %10.1f %10.0f %12.3e %12.3e %12.3e %8.3f\n", "vtkStreamSurface", vtk.ms, vtk.triangles,
-              vtk.max_drift, vtk.rms_drift, vtk.flux, vtk.x_max);
-  std::printf("%-22s %10.1f %10.0f %12.3e %12.3e %12.3e %8.3f\n", "integrate_stream_surf", ours.ms,
-              ours.triangles, ours.max_drift, ours.rms_drift, ours.flux, ours.x_max);
-  std::printf("%-22s %10.1f %10.0f %12.3e %12.3e %12.3e %8.3f\n", "  same, tricubic grid", ours_cubic.ms,
-              ours_cubic.triangles, ours_cubic.max_drift, ours_cubic.rms_drift, ours_cubic.flux, ours_cubic.x_max);
-  std::printf("%-22s %10.1f %10.0f %12.3e %12.3e %12.3e %8.3f\n", "  same, analytic field", ours_analytic.ms,
-              ours_analytic.triangles, ours_analytic.max_drift, ours_analytic.rms_drift, ours_analytic.flux,
-              ours_analytic.x_max);
+  std::printf("%-24s %10s %10s %12s %12s %12s %8s %9s %9s %9s\n", "", "time_ms", "triangles", "max_drift",
+              "rms_drift", "flux", "x_max", "min_angle", "/floor", "VTK_ms/");
+  const auto print = [&](const char* name, const Row& r) {
+    std::printf("%-24s %10.1f %10.0f %12.3e %12.3e %12.3e %8.3f %9.2f %9.3f %9.2f\n", name, r.ms, r.triangles,
+                r.max_drift, r.rms_drift, r.flux, r.x_max, r.min_angle, r.max_drift / at_floor.max_drift,
+                vtk.ms / r.ms);
+  };
+  print("vtkStreamSurface", vtk);
+  print("integrate_stream_surf", ours);
+  print("  same, 1e-12 (floor)", at_floor);
+  print("  same, 1e-8/1e-10", former);
+  print("  same, tricubic grid", ours_cubic);
+  print("  same, analytic field", ours_analytic);
   std::printf("ours (trilinear grid): %zu time lines, %zu inserted, %zu removed, %zu tears, %s\n",
               report.number_of_time_lines, report.number_of_inserted_particles,
               report.number_of_removed_particles, report.number_of_tears, report.message.c_str());

@@ -166,23 +166,20 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
   Mesh surfaces;
   auto u = surfaces.add_property_map<Mesh::Vertex_index, double>("v:u", 0).first;
   auto t = surfaces.add_property_map<Mesh::Vertex_index, double>("v:t", 0).first;
+  // Forward and backward in one surface per seed curve (t < 0 on the backward half).
   const auto np = FAS::parameters::front_spacing(
-      scene.size / 30, FAS::parameters::arc_length_time_lines(
-                           true, FAS::parameters::max_length(
-                                     2 * scene.size, FAS::parameters::seed_parameter_map(
-                                                         u, FAS::parameters::integration_time_map(t)))));
+      scene.size / 30,
+      FAS::parameters::arc_length_time_lines(
+          true, FAS::parameters::max_length(
+                    2 * scene.size, FAS::parameters::integration_direction(
+                                        FAS::Integration_direction::BOTH,
+                                        FAS::parameters::seed_parameter_map(
+                                            u, FAS::parameters::integration_time_map(t))))));
   for (const Polyline& seed : seed_curves) {
     if (seed.size() < 2)
       continue;
     try {
       FAS::integrate_stream_surface(scene.flow, seed, surfaces, np);
-      const std::size_t forward_end = surfaces.number_of_vertices();
-      FAS::integrate_stream_surface(
-          scene.flow, seed, surfaces,
-          FAS::parameters::integration_direction(FAS::Integration_direction::BACKWARD, np));
-      for (Mesh::Vertex_index v : surfaces.vertices()) // the backward half has negative t
-        if (std::size_t(v) >= forward_end)
-          t[v] = -t[v];
     } catch (const std::exception& e) { // a degenerate contour: skip it, say why
       std::cerr << name << ": seed curve skipped: " << e.what() << "\n";
     }

@@ -54,23 +54,21 @@ int main(int argc, char** argv)
     Mesh tm;
     auto u = tm.add_property_map<Mesh::Vertex_index, double>("v:u", 0).first;
     auto t = tm.add_property_map<Mesh::Vertex_index, double>("v:t", 0).first;
-    const auto np = FAS::parameters::front_spacing(
-        spacing, FAS::parameters::max_time(
-                     time, FAS::parameters::seed_parameter_map(u, FAS::parameters::integration_time_map(t))));
-    const FAS::Stream_surface_report forward = FAS::integrate_stream_surface(flow, seed, tm, np);
-    const std::size_t forward_vertices = tm.number_of_vertices();
-    const FAS::Stream_surface_report backward = FAS::integrate_stream_surface(
-        flow, seed, tm, FAS::parameters::integration_direction(FAS::Integration_direction::BACKWARD, np));
-    for (Mesh::Vertex_index v : tm.vertices()) // the time of the backward half is negative
-      if (std::size_t(v) >= forward_vertices)
-        t[v] = -t[v];
+    // Forward and backward in one surface, joined at the seed (t < 0 on the backward half).
+    const FAS::Stream_surface_report report = FAS::integrate_stream_surface(
+        flow, seed, tm,
+        FAS::parameters::front_spacing(
+            spacing, FAS::parameters::max_time(
+                         time, FAS::parameters::integration_direction(
+                                   FAS::Integration_direction::BOTH,
+                                   FAS::parameters::seed_parameter_map(
+                                       u, FAS::parameters::integration_time_map(t))))));
     const FAS::Normalized_flux flux = FAS::normalized_flux(tm, flow);
     std::cout << "stream surface " << c << ": " << tm.number_of_faces() << " triangles, "
-              << forward.number_of_time_lines << " + " << backward.number_of_time_lines << " time lines, "
-              << forward.number_of_inserted_particles + backward.number_of_inserted_particles << " inserted, "
-              << forward.number_of_removed_particles + backward.number_of_removed_particles << " removed, "
-              << forward.number_of_tears + backward.number_of_tears << " tears (" << forward.message << "; "
-              << backward.message << "), flux " << flux << "\n";
+              << report.number_of_time_lines << " + " << report.backward->number_of_time_lines
+              << " time lines, " << report.number_of_inserted_particles << " inserted, "
+              << report.number_of_removed_particles << " removed, " << report.number_of_tears << " tears ("
+              << report.message << "; " << report.backward->message << "), flux " << flux << "\n";
     std::vector<double> us, ts;
     for (Mesh::Vertex_index v : tm.vertices()) {
       us.push_back(u[v]);

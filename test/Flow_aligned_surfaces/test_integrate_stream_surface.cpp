@@ -8,6 +8,7 @@
 #include "expect_invalid_argument.h"
 #include "test_kernel.h"
 
+#include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
@@ -22,8 +23,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
+#include <array>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -207,10 +211,11 @@ TEST(IntegrateStreamSurface, ABCFlowWithoutCKeepsItsFirstIntegralAndHasNoFlux)
   const FAS::ABC_flow<K> abc(std::sqrt(3.), std::sqrt(2.), 0.);
   const Polyline seed = {Point_3(0.5, 0, 0.5), Point_3(1.0, 1.0, 0.7), Point_3(1.5, 2.0, 1.0)};
   // Time lines about h/5 apart (|v| is 1 to 2.2 here): the flux of the flat triangles is first
-  // order in their extent along the stream lines.
+  // order in their extent along the stream lines.  (Up to time 1: 100 time lines, where the
+  // former default of max_number_of_time_lines stopped the max_time(2.0) this test once gave.)
   const Surface s(abc, seed,
                   FAS::parameters::front_spacing(
-                      0.05, FAS::parameters::time_line_step(0.01, FAS::parameters::max_time(2.0))));
+                      0.05, FAS::parameters::time_line_step(0.01, FAS::parameters::max_time(1.0))));
   expect_parametrization(s, seed);
   const double scale = std::sqrt(3.) + std::sqrt(2.); // the range of A cos z + B sin x
   EXPECT_LE(first_integral_drift(s, seed, [&](const Point_3& p) { return abc.first_integral(p); }),
@@ -267,7 +272,8 @@ FAS::Stream_surface_report expect_the_trapezoid_up_to_the_box_face(const Polylin
       return std::nullopt;
     return Vector_3(1, 0, 0);
   };
-  // The integrator's boundary tolerance, 1e-10 + 1e-8 |x|, with |x| <= 2.
+  // The integrator's boundary tolerance, 1e-12 + 1e-10 |x| by default (a stream line's
+  // 1e-10 + 1e-8 |x| before issue 15), with |x| <= 2.
   const double tolerance = 3e-8;
   const auto on_boundary = [&](const Point_3& p, double) { return std::abs(p.x() - 1) <= tolerance; };
   const Surface s(boxed, seed,
@@ -447,11 +453,8 @@ TEST(IntegrateStreamSurface, BadSeedsAndParametersAreNamed)
       [&] { FAS::integrate_stream_surface(flow, seed, tm, FAS::parameters::max_time(0.)); },
       {"integrate_stream_surface", "max_time", "0"});
   expect_invalid_argument(
-      [&] {
-        FAS::integrate_stream_surface(
-            flow, seed, tm, FAS::parameters::integration_direction(FAS::Integration_direction::BOTH));
-      },
-      {"integration_direction", "BOTH"});
+      [&] { FAS::integrate_stream_surface(flow, seed, tm, FAS::parameters::max_number_of_time_lines(0)); },
+      {"max_number_of_time_lines", "0"});
   const FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>> unsteady({0.}, {flow});
   expect_invalid_argument(
       [&] {
@@ -459,6 +462,214 @@ TEST(IntegrateStreamSurface, BadSeedsAndParametersAreNamed)
       },
       {"arc_length_time_lines", "unsteady"});
   EXPECT_EQ(tm.number_of_vertices(), 0u); // nothing was added
+}
+
+
+// The smallest angle (degrees) of the triangles of `tm`.
+double smallest_angle(const Mesh& tm)
+{
+  double smallest = 180;
+  for (auto f : tm.faces()) {
+    std::array<Point_3, 3> p;
+    int i = 0;
+    for (Vertex v : vertices_around_face(tm.halfedge(f), tm))
+      p[i++] = tm.point(v);
+    for (int k = 0; k < 3; ++k) {
+      const Vector_3 a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
+      const double c = a * b / std::sqrt(a.squared_length() * b.squared_length());
+      smallest = std::min(smallest, std::acos(std::clamp(c, -1., 1.)) * 180 / CGAL_PI);
+    }
+  }
+  return smallest;
+}
+
+TEST(IntegrateStreamSurface, DefaultTolerancesReachTheInterpolationFloor)
+{
+  // ABC with C = 0 sampled at 64^3 (trilinear): the interpolated field does not keep
+  // I = A cos z + B sin x, so even an exact integration of it drifts.  That floor is measured
+  // with tolerances of 1e-12; the defaults must stay within 1.5 times it (1e-8 gave 1.6 times).
+  const double A = std::sqrt(3.), B = std::sqrt(2.);
+  const FAS::ABC_flow<K> abc(A, B, 0.);
+  const std::size_t n = 64;
+  const double spacing = 2 * CGAL_PI / double(n - 1);
+  const auto grid = FAS::sample_on_grid(abc, Point_3(0, 0, 0), Vector_3(spacing, spacing, spacing), {n, n, n});
+  Polyline seed; // on the level set I = 0.5
+  for (int i = 0; i <= 45; ++i) {
+    const double x = 1 + i / 45.;
+    seed.emplace_back(x, 2 + 2 * (x - 1), std::acos((0.5 - B * std::sin(x)) / A));
+  }
+  const auto drift = [&](const auto& np) {
+    const Surface s(grid, seed,
+                    FAS::parameters::arc_length_time_lines(true, FAS::parameters::max_length(6.0, np)));
+    expect_parametrization(s, seed, [](const Point_3&, double) { return true; }); // it leaves the grid
+    return first_integral_drift(s, seed, [&](const Point_3& p) { return abc.first_integral(p); });
+  };
+  const double floor = drift(FAS::parameters::relative_tolerance(1e-12, FAS::parameters::absolute_tolerance(1e-12)));
+  const double at_defaults = drift(CGAL::parameters::default_values());
+  std::cout << "first-integral drift: " << at_defaults << " at the defaults, " << floor << " at 1e-12\n";
+  EXPECT_GT(floor, 1e-6); // the interpolation's, not the integrator's
+  EXPECT_LE(at_defaults, 1.5 * floor);
+}
+
+TEST(IntegrateStreamSurface, ShearingFrontKeepsTrianglesWellShaped)
+{
+  // A rotation about z whose angular speed 1/r falls with the radius, and an axial drift w:
+  // x(u, t) = (r cos(t / r), r sin(t / r), w t) with r = 0.5 + u.  The radial seed's time lines
+  // wind up into spirals that turn towards the flow, so that strips one time-line step high get
+  // ever flatter: 7.15 degrees with every time line in the mesh, 16 with thin strips skipped.
+  // The corner where a time line meets a border stream line tends to atan(w / 1) = 16.7
+  // degrees, a bound for any triangulation.
+  const double w = 0.3;
+  const auto swirl = [w](const Point_3& p) {
+    const double r = std::sqrt(p.x() * p.x() + p.y() * p.y());
+    return std::optional<Vector_3>(Vector_3(-p.y() / r, p.x() / r, w));
+  };
+  Polyline seed;
+  for (int i = 0; i <= 20; ++i)
+    seed.emplace_back(0.5 + 0.05 * i, 0, 0);
+  const Surface s(swirl, seed, FAS::parameters::max_time(20.0));
+  expect_parametrization(s, seed);
+  EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
+  for (Vertex v : s.tm.vertices()) {
+    const double r = 0.5 + s.u[v], t = s.t[v];
+    const Point_3 exact(r * std::cos(t / r), r * std::sin(t / r), w * t);
+    ASSERT_LE(std::sqrt(CGAL::squared_distance(s.tm.point(v), exact)), 1e-6);
+  }
+  EXPECT_GE(smallest_angle(s.tm), 10.);
+}
+
+// A face as its three corners (rounded to 1e-9), starting at the smallest: equal for the same
+// oriented triangle in two meshes.
+std::array<std::array<long long, 3>, 3> oriented_face(const Mesh& tm, Mesh::Face_index f)
+{
+  std::array<std::array<long long, 3>, 3> corners;
+  int i = 0;
+  for (Vertex v : vertices_around_face(tm.halfedge(f), tm))
+    corners[i++] = {std::llround(tm.point(v).x() * 1e9), std::llround(tm.point(v).y() * 1e9),
+                    std::llround(tm.point(v).z() * 1e9)};
+  std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
+  return corners;
+}
+
+TEST(IntegrateStreamSurface, BothDirectionsGiveOneSurfaceJoinedAtTheSeed)
+{
+  const FAS::Burgers_vortex<K> flow;
+  const Polyline seed = {Point_3(0.8, 0, 0.5), Point_3(1.0, 0.1, 0.6), Point_3(1.2, 0, 0.5)};
+  const auto np = [](FAS::Integration_direction d) {
+    return FAS::parameters::integration_direction(
+        d, FAS::parameters::front_spacing(0.02, FAS::parameters::max_time(0.5)));
+  };
+  const Surface both(flow, seed, np(FAS::Integration_direction::BOTH));
+  const Surface forward(flow, seed, np(FAS::Integration_direction::FORWARD));
+  const Surface backward(flow, seed, np(FAS::Integration_direction::BACKWARD));
+  expect_parametrization(both, seed, [](const Point_3&, double t) { return t == -0.5; }); // the backward end
+  ASSERT_TRUE(both.report.backward.has_value());
+  EXPECT_EQ(both.report.termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
+  EXPECT_EQ(both.report.backward->termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
+  EXPECT_EQ(both.report.number_of_time_lines, forward.report.number_of_time_lines);
+  EXPECT_EQ(both.report.backward->number_of_time_lines, backward.report.number_of_time_lines);
+  EXPECT_FALSE(forward.report.backward.has_value());
+
+  // The union of the two halves, the seed's vertices once.
+  std::size_t seed_vertices = 0;
+  for (Vertex v : both.tm.vertices())
+    if (both.t[v] == 0) {
+      ++seed_vertices;
+      if (both.u[v] > 0 && both.u[v] < both.report.seed_length) // the two ends are on the border
+        ASSERT_FALSE(both.tm.is_border(v)) << "seed vertex on the border: the halves are not joined";
+    }
+  EXPECT_EQ(seed_vertices, std::size_t(std::ceil(both.report.seed_length / 0.02)) + 1);
+  EXPECT_EQ(both.tm.number_of_faces(), forward.tm.number_of_faces() + backward.tm.number_of_faces());
+  EXPECT_EQ(both.tm.number_of_vertices(),
+            forward.tm.number_of_vertices() + backward.tm.number_of_vertices() - seed_vertices);
+  std::map<std::array<std::array<long long, 3>, 3>, int> faces;
+  for (auto f : forward.tm.faces())
+    ++faces[oriented_face(forward.tm, f)];
+  for (auto f : backward.tm.faces())
+    ++faces[oriented_face(backward.tm, f)];
+  for (auto f : both.tm.faces())
+    ASSERT_EQ(--faces[oriented_face(both.tm, f)], 0) << "a face of BOTH is not one of FORWARD or BACKWARD";
+
+  // Oriented as ∂x/∂u × v on both sides of the seed; τ negative on the backward half.
+  for (auto f : both.tm.faces()) {
+    std::array<Vertex, 3> v;
+    int i = 0;
+    for (Vertex w : vertices_around_face(both.tm.halfedge(f), both.tm))
+      v[i++] = w;
+    const Vector_3 normal = CGAL::cross_product(both.tm.point(v[1]) - both.tm.point(v[0]),
+                                                both.tm.point(v[2]) - both.tm.point(v[0]));
+    const Point_3 c = CGAL::centroid(both.tm.point(v[0]), both.tm.point(v[1]), both.tm.point(v[2]));
+    // ∂x/∂u: from the corner of smallest u to that of largest, on the face.
+    const auto [lo, hi] =
+        std::minmax_element(v.begin(), v.end(), [&](Vertex a, Vertex b) { return both.u[a] < both.u[b]; });
+    const Vector_3 du = both.tm.point(*hi) - both.tm.point(*lo);
+    ASSERT_GT(CGAL::cross_product(du, *flow(c)) * normal, 0) << "face at " << c;
+  }
+  for (Vertex v : backward.tm.vertices())
+    ASSERT_GE(backward.t[v], 0.);
+  double most_negative = 0;
+  for (Vertex v : both.tm.vertices())
+    most_negative = std::min(most_negative, both.t[v]);
+  EXPECT_DOUBLE_EQ(most_negative, -0.5);
+
+  // A front that tears at the cylinder downstream and a seed across the cylinder (two pieces
+  // from the start): still one manifold surface with every face accepted.
+  const FAS::Cylinder_potential_flow<K> cylinder(1.0, 1.0);
+  for (const Polyline& s : {Polyline{Point_3(-2, -0.6, 0.2), Point_3(-2, 0.6, 0.2)},
+                            Polyline{Point_3(0, -2, 0.2), Point_3(0, 2, 0.2)}}) {
+    const Surface torn(cylinder, s,
+                       FAS::parameters::integration_direction(
+                           FAS::Integration_direction::BOTH,
+                           FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(4.0))));
+    expect_parametrization(torn, s, [](const Point_3& p, double t) { // the backward end, the cylinder
+      return t == -4.0 || p.x() * p.x() + p.y() * p.y() < 1 + 1e-6;
+    });
+    EXPECT_EQ(torn.report.backward->termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
+  }
+}
+
+TEST(IntegrateStreamSurface, ReportsTheLimitThatStoppedIt)
+{
+  const Vector_3 U(1, 0, 0);
+  const FAS::Uniform_flow<K> flow(U);
+  const Polyline seed = {Point_3(0, 0, 0), Point_3(0, 1, 0)};
+  const auto h = FAS::parameters::front_spacing(0.05);
+  // max_length 6 at h = 0.05 needs 120 time lines: the default cap of 100 no longer applies
+  // when a limit in τ is given.
+  const Surface length(flow, seed,
+                       FAS::parameters::arc_length_time_lines(true, FAS::parameters::max_length(6.0, h)));
+  EXPECT_EQ(length.report.termination, FAS::Stream_surface_termination::MAX_LENGTH);
+  EXPECT_DOUBLE_EQ(length.report.final_parameter, 6.0);
+  EXPECT_EQ(length.report.number_of_time_lines, 120u);
+  EXPECT_NE(length.report.message.find("max_length 6"), std::string::npos) << length.report.message;
+
+  const Surface time(flow, seed, FAS::parameters::max_time(6.0, h));
+  EXPECT_EQ(time.report.termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
+  EXPECT_DOUBLE_EQ(time.report.final_parameter, 6.0);
+  EXPECT_NE(time.report.message.find("max_time 6"), std::string::npos) << time.report.message;
+
+  const Surface lines(flow, seed, FAS::parameters::max_time(6.0, FAS::parameters::max_number_of_time_lines(10, h)));
+  EXPECT_EQ(lines.report.termination, FAS::Stream_surface_termination::MAX_NUMBER_OF_TIME_LINES);
+  EXPECT_EQ(lines.report.number_of_time_lines, 10u);
+  EXPECT_NE(lines.report.message.find("max_number_of_time_lines (10) reached at time 0.5, before max_time 6"),
+            std::string::npos)
+      << lines.report.message;
+
+  const Surface unbounded(flow, seed, h); // no limit in τ: 100 time lines by default
+  EXPECT_EQ(unbounded.report.termination, FAS::Stream_surface_termination::MAX_NUMBER_OF_TIME_LINES);
+  EXPECT_EQ(unbounded.report.number_of_time_lines, 100u);
+  EXPECT_NE(unbounded.report.message.find("no max_time given"), std::string::npos) << unbounded.report.message;
+
+  const Surface vertices(flow, seed, FAS::parameters::max_number_of_vertices(210, FAS::parameters::max_time(6.0, h)));
+  EXPECT_EQ(vertices.report.termination, FAS::Stream_surface_termination::MAX_NUMBER_OF_VERTICES);
+  EXPECT_EQ(vertices.tm.number_of_vertices(), 210u); // 21 particles on 10 time lines
+  EXPECT_NE(vertices.report.message.find("max_number_of_vertices (210)"), std::string::npos);
+
+  // Leaving a box: no particle left before max_time.
+  const auto box = [U](const Point_3& p) { return p.x() < 1 ? std::optional<Vector_3>(U) : std::nullopt; };
+  const Surface left(box, seed, FAS::parameters::max_time(6.0, h));
+  EXPECT_EQ(left.report.termination, FAS::Stream_surface_termination::NO_PARTICLE_LEFT);
+  EXPECT_STREQ(FAS::to_string(left.report.termination), "NO_PARTICLE_LEFT");
 }
 
 } // namespace

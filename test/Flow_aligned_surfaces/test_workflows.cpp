@@ -220,12 +220,13 @@ TEST(StreamSurfacesWorkflow, StreamSurfacesFromTangentialSeedCurves)
     Mesh tm;
     auto u = tm.add_property_map<Vertex, double>("v:u", 0).first;
     auto t = tm.add_property_map<Vertex, double>("v:t", 0).first;
-    const auto np = FAS::parameters::front_spacing(
-        0.02, FAS::parameters::max_time(
-                  1.0, FAS::parameters::seed_parameter_map(u, FAS::parameters::integration_time_map(t))));
-    FAS::integrate_stream_surface(flow, seed, tm, np); // forward, then backward into the same mesh
-    FAS::integrate_stream_surface(
-        flow, seed, tm, FAS::parameters::integration_direction(FAS::Integration_direction::BACKWARD, np));
+    FAS::integrate_stream_surface( // forward and backward, joined at the seed
+        flow, seed, tm,
+        FAS::parameters::front_spacing(
+            0.02, FAS::parameters::max_time(
+                      1.0, FAS::parameters::integration_direction(
+                               FAS::Integration_direction::BOTH,
+                               FAS::parameters::seed_parameter_map(u, FAS::parameters::integration_time_map(t))))));
     ASSERT_GT(tm.number_of_faces(), 0u) << "seed curve " << c;
 
     // rho^2 z is constant along the vortex's stream lines: each vertex keeps its seed point's.

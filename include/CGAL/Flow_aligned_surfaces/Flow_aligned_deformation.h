@@ -452,8 +452,10 @@ public:
          with the meanings of `grow_boundary()`
 
   \returns what was grown, with the times of the offset, the tessellation, the placement in
-           \f$ M_0 \f$ and the refactorization.
-  \throws std::invalid_argument, before anything is modified, in the cases of `grow_boundary()`,
+           \f$ M_0 \f$ and the refactorization; its grown edges are given by indices into
+           `vertices()`.
+  \throws std::invalid_argument, before anything is modified, in the cases of `grow_boundary()`
+          (the checks of the strip are made on \f$ M_k \f$, and its folding also on \f$ M_0 \f$),
           and if `across_flow` is asked of an orthogonal deformation (whose surface is across the
           flow everywhere, so no boundary direction is across it).
   \throws std::runtime_error if the refactorization fails (the mesh is then grown, but this

@@ -1,19 +1,20 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Growing a surface at its boundary (Section 4 of the paper, after Schulze et al.): every
-// selected boundary vertex b moves to the offset point
-//
-//   b' = b + d m_b g_b,   g_b = unit projection of sum_e g_e on the tangent plane at b,
-//
-// where the sum runs over the selected boundary edges e at b, g_e is the edge's outward
-// direction o_e (in its face's plane, orthogonal to the edge) or, across the flow, the in-plane
-// direction n_e x v/|v| signed so that it points outward, and m_b = 1/cos(half the turn
-// between the two edges' g_e) keeps the offset curve at distance d from straight edges (a
-// miter, capped at 2).  The strip between the selected boundary and its offset curve (the quads
-// b_i b_{i+1} b'_{i+1} b'_i) is then tessellated with near-regular triangles of the mesh's mean
-// edge length by CGAL's isotropic remeshing, with the old boundary protected, and appended to
-// the mesh.  Nothing is removed from the mesh: descriptors and index maps stay valid.
+// Growing a surface at its boundary (Section 4 of the paper, after Schulze et al.): an offset
+// curve tangential to the surface is computed at the boundary and the strip between them is
+// tessellated.  The whole boundary, or the edges selected by a direction or by the flow (across
+// it), is offset: every selected edge moves by d along its own outward direction in the tangent
+// plane, whatever selected it, so a straight side moves by exactly d at any pose.  Between two
+// grown edges the offset curve takes the miter (the offset lines' intersection) where the
+// boundary turns by at most 90 degrees (concave turns up to 120), and an arc of radius d about
+// the vertex (a fan of triangles) at a sharper convex turn; a run of grown edges ends in a cap
+// orthogonal to its last edge (turned so as to keep 30 degrees from the old boundary beyond).
+// A strip thinner than the mesh's edges is triangulated directly (a vertex in the middle of the
+// outer side of a long quad), a wider one by CGAL's isotropic remeshing with the old boundary
+// protected.  A final guard refuses a result that would not be manifold or in which a new face
+// would cut through the surface.  Nothing is removed from the mesh: descriptors and index maps
+// stay valid.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_GROW_BOUNDARY_H
 #define CGAL_FLOW_ALIGNED_SURFACES_GROW_BOUNDARY_H
@@ -31,11 +32,14 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -44,12 +48,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -68,6 +75,12 @@ struct Growth_report {
   double remesh_ms = 0;        ///< time spent tessellating the strip (split and isotropic remeshing)
   double reference_map_ms = 0; ///< time spent placing the new vertices in \f$ M_0 \f$ and appending them
   double factor_ms = 0;        ///< time spent rebuilding and refactoring the operators (the class only)
+  double check_ms = 0; ///< time spent checking the grown surface (manifold, no face cutting through another)
+  std::size_t number_of_grown_edges = 0; ///< boundary edges that were grown (the size of `grown_edges`)
+  /// The boundary edges that were grown, each as the indices of its two vertices (source and
+  /// target of its border halfedge): positions in the order of `vertices(tm)` before growing for
+  /// `grow_boundary()`, indices into `Flow_aligned_deformation::vertices()` for `grow()`.
+  std::vector<std::pair<std::size_t, std::size_t>> grown_edges;
 };
 
 /// \cond SKIP_IN_MANUAL
@@ -94,6 +107,19 @@ struct Boundary_strip {
 constexpr double growth_cone_cosine = 0.5;
 // Below this sine, a direction is taken as parallel to the face normal (no in-plane part).
 constexpr double parallel_sine = 1e-6;
+// Above this convex turn of the boundary between two grown edges, the offset curve goes round
+// the vertex on an arc (a fan of triangles) instead of a miter: a rectangle's corners keep their
+// miter, and a miter is never longer than sqrt(2) d.
+constexpr double fan_turn = CGAL_PI / 2 + 1e-9;
+// Beyond this concave turn between two grown edges (an inside angle below 60 degrees), the two
+// offsets would meet more than 2 d from the vertex: growing there is refused.
+constexpr double max_concave_turn = 2 * CGAL_PI / 3;
+// A strip whose height is below this fraction of the mesh's mean edge length is thin: it is not
+// remeshed, and its quads whose old edge is longer than mid_vertex_ratio times the height get a
+// vertex in the middle of their outer side (a right quad of sides a and d then splits into
+// triangles with angles >= 20 degrees for a / d in [2.5, 5.5], two triangles do for a / d <= 2.75).
+constexpr double thin_strip = 0.6;
+constexpr double mid_vertex_ratio = 2.5;
 
 template <class Options>
 Growth_options read_growth_options(const Options& np, const char* caller)
@@ -184,6 +210,150 @@ Eigen::Matrix3d boundary_vertex_frame(const TriangleMesh& tm, VertexIndexMap vim
   throw std::invalid_argument(caller + ": " + what + "; the surface is left untouched");
 }
 
+// The guard on the result: the old faces of `tm` (positions `x`) and the new faces (new vertex
+// i at `added[i - m]`) must make a manifold surface, and no new face may intersect another face
+// other than along their shared vertices or edge.  Throws naming where otherwise.  Only the new
+// faces and the old faces whose bounding boxes meet theirs are put in a mesh and tested (they
+// include every old face at a vertex of the strip, so the manifold test is complete): on a large
+// surface, a test of the whole would cost as much as the rest of the growth.
+template <class TriangleMesh, class VertexIndexMap>
+void check_grown_surface(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x,
+                         const std::vector<Eigen::Vector3d>& added,
+                         const std::vector<std::array<Eigen::Index, 3>>& new_faces, const std::string& caller)
+{
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const Eigen::Index m = x.rows();
+  auto at = [&](Eigen::Index v) -> Eigen::Vector3d {
+    return v < m ? Eigen::Vector3d(x.row(v).transpose()) : added[std::size_t(v - m)];
+  };
+  auto box = [&](const std::array<Eigen::Index, 3>& f) {
+    const Eigen::Vector3d a = at(f[0]), b = at(f[1]), c = at(f[2]);
+    const Eigen::Vector3d lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
+    return CGAL::Bbox_3(lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z());
+  };
+  std::vector<std::array<Eigen::Index, 3>> old_faces;
+  old_faces.reserve(num_faces(tm));
+  for (auto f : faces(tm)) {
+    std::array<Eigen::Index, 3> fv;
+    int i = 0;
+    for (auto v : vertices_around_face(halfedge(f, tm), tm))
+      fv[i++] = Eigen::Index(get(vim, v));
+    old_faces.push_back(fv);
+  }
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+  std::vector<Box> new_boxes, old_boxes;
+  for (std::size_t j = 0; j < new_faces.size(); ++j)
+    new_boxes.emplace_back(box(new_faces[j]), j);
+  // A hashed grid of cells as large as the largest new face's box first keeps the old faces
+  // that may reach a new one (a colliding hash only keeps one more): the box intersection then
+  // sorts these only, not the whole surface.
+  double cell = 0;
+  for (const Box& b : new_boxes)
+    for (int i = 0; i < 3; ++i)
+      cell = (std::max)(cell, b.max_coord(i) - b.min_coord(i));
+  cell = cell > 0 ? cell : 1;
+  auto cells_of = [&](const CGAL::Bbox_3& b, std::array<std::int64_t, 6>& range) {
+    std::int64_t count = 1;
+    for (int i = 0; i < 3; ++i) {
+      range[2 * i] = std::int64_t(std::floor(b.min(i) / cell));
+      range[2 * i + 1] = std::int64_t(std::floor(b.max(i) / cell));
+      count *= range[2 * i + 1] - range[2 * i] + 1;
+    }
+    return count;
+  };
+  auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return i * 73856093 ^ j * 19349663 ^ k * 83492791;
+  };
+  std::unordered_set<std::int64_t> occupied;
+  std::array<std::int64_t, 6> r;
+  for (const Box& b : new_boxes) {
+    cells_of(b.bbox(), r);
+    for (std::int64_t i = r[0]; i <= r[1]; ++i)
+      for (std::int64_t j = r[2]; j <= r[3]; ++j)
+        for (std::int64_t k = r[4]; k <= r[5]; ++k)
+          occupied.insert(key(i, j, k));
+  }
+  for (std::size_t f = 0; f < old_faces.size(); ++f) {
+    const CGAL::Bbox_3 b = box(old_faces[f]);
+    bool candidate = cells_of(b, r) > 64; // a face much larger than the new ones: kept
+    for (std::int64_t i = r[0]; i <= r[1] && !candidate; ++i)
+      for (std::int64_t j = r[2]; j <= r[3] && !candidate; ++j)
+        for (std::int64_t k = r[4]; k <= r[5] && !candidate; ++k)
+          candidate = occupied.count(key(i, j, k)) > 0;
+    if (candidate)
+      old_boxes.emplace_back(b, f);
+  }
+  std::vector<char> near(old_faces.size(), 0);
+  CGAL::box_intersection_d(new_boxes.begin(), new_boxes.end(), old_boxes.begin(), old_boxes.end(),
+                           [&](const Box&, const Box& old) { near[old.info()] = 1; });
+
+  // The local mesh: the near old faces, then the new ones.  A subset of a manifold mesh may be
+  // one that Surface_mesh cannot assemble in this order (a vertex whose faces touch in several
+  // fans); then the whole surface is taken.
+  Mesh local;
+  std::vector<Mesh::Vertex_index> local_vertex;
+  auto vertex = [&](Eigen::Index v) {
+    Mesh::Vertex_index& w = local_vertex[std::size_t(v)];
+    if (w == Mesh::null_vertex()) {
+      const Eigen::Vector3d p = at(v);
+      w = local.add_vertex(Epick::Point_3(p.x(), p.y(), p.z()));
+    }
+    return w;
+  };
+  auto add = [&](const std::array<Eigen::Index, 3>& f) {
+    return local.add_face(vertex(f[0]), vertex(f[1]), vertex(f[2])) != Mesh::null_face();
+  };
+  auto add_old_faces = [&](bool all) {
+    local.clear();
+    local_vertex.assign(std::size_t(m) + added.size(), Mesh::null_vertex());
+    for (std::size_t j = 0; j < old_faces.size(); ++j)
+      if ((all || near[j]) && !add(old_faces[j]))
+        return false;
+    return true;
+  };
+  if (!add_old_faces(false))
+    add_old_faces(true);
+  const std::size_t number_of_old_faces = local.number_of_faces();
+
+  auto centroid = [&](const std::array<Eigen::Index, 3>& f) {
+    const Eigen::Vector3d c = (at(f[0]) + at(f[1]) + at(f[2])) / 3;
+    std::ostringstream os;
+    os << "(" << c.x() << ", " << c.y() << ", " << c.z() << ")";
+    return os.str();
+  };
+  for (const auto& f : new_faces)
+    if (!add(f))
+      throw_growth_error(caller, "the new face at " + centroid(f) +
+                                     " would make the surface non-manifold (grow by a smaller distance)");
+  std::vector<Mesh::Halfedge_index> non_manifold;
+  PMP::non_manifold_vertices(local, std::back_inserter(non_manifold));
+  for (auto h : non_manifold) // tm was checked to be manifold: only a vertex of a new face can be
+    for (auto g : CGAL::halfedges_around_target(h, local))
+      if (!local.is_border(g) && std::size_t(local.face(g)) >= number_of_old_faces) {
+        const auto& p = local.point(local.target(h));
+        std::ostringstream os;
+        os << "the grown surface would be non-manifold at the point (" << p
+           << ") (grow by a smaller distance)";
+        throw_growth_error(caller, os.str());
+      }
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+  PMP::self_intersections(local, std::back_inserter(pairs));
+  for (const auto& pair : pairs) {
+    const std::size_t a = std::size_t(pair.first), b = std::size_t(pair.second);
+    if (a < number_of_old_faces && b < number_of_old_faces)
+      continue; // the old surface's own intersections are not the growth's doing
+    const std::array<Eigen::Index, 3>& f = new_faces[(a >= number_of_old_faces ? a : b) - number_of_old_faces];
+    throw_growth_error(caller, std::string("the new face at ") + centroid(f) + " would cut through " +
+                                   ((a >= number_of_old_faces && b >= number_of_old_faces)
+                                        ? "another new face"
+                                        : "an old face of the surface") +
+                                   " (the boundary comes back near itself there; grow by a smaller "
+                                   "distance or along fewer edges)");
+  }
+}
+
 /*
 Selects the boundary edges to grow, offsets their vertices and tessellates the strip; reads
 `tm` only.  `x` are the current positions in the order of `vim`; `reference`, when not null,
@@ -224,22 +394,18 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
   if (loops.empty())
     throw_growth_error(caller, "the mesh has no boundary (it is closed), so there is nothing to grow");
 
-  // Per border edge: selected or not, and its growth direction g_e.
-  struct Edge {
-    bool selected = false;
-    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
-  };
-  std::vector<std::vector<Edge>> loop_edges(loops.size());
+  // Per border edge: selected or not.  The flow or the direction only selects the edges; every
+  // selected edge then moves along its own outward direction, so that the offset curve is the
+  // same whatever selected it.
+  std::vector<std::vector<char>> loop_selected(loops.size());
   std::size_t number_of_edges = 0, parallel_to_normal = 0, without_flow = 0, selected = 0;
   for (std::size_t l = 0; l < loops.size(); ++l) {
-    loop_edges[l].resize(loops[l].size());
+    loop_selected[l].assign(loops[l].size(), 0);
     for (std::size_t i = 0; i < loops[l].size(); ++i) {
       const halfedge_descriptor h = loops[l][i];
       ++number_of_edges;
       Eigen::Vector3d normal, outward;
       border_edge_frame(tm, vim, x, h, normal, outward);
-      Edge& e = loop_edges[l][i];
-      e.direction = outward;
       bool facing = true;
       if (options.direction) {
         Eigen::Vector3d in_plane = *options.direction - options.direction->dot(normal) * normal;
@@ -254,20 +420,15 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
         const Eigen::Vector3d midpoint = 0.5 * (position<TriangleMesh>(x, vim, source(h, tm)) +
                                                 position<TriangleMesh>(x, vim, target(h, tm)));
         const Flow_sample s = sample(midpoint);
-        Eigen::Vector3d across = normal.cross(s.direction);
+        const Eigen::Vector3d across = normal.cross(s.direction);
         if (s.kind != Sample_kind::VALID || across.norm() <= parallel_sine) {
           ++without_flow;
           facing = false;
         }
-        else {
-          across.normalize();
-          if (across.dot(outward) < 0)
-            across = -across;
-          facing = facing && across.dot(outward) >= growth_cone_cosine;
-          e.direction = across;
-        }
+        else
+          facing = facing && std::abs(across.normalized().dot(outward)) >= growth_cone_cosine;
       }
-      e.selected = facing;
+      loop_selected[l][i] = facing ? 1 : 0;
       selected += facing ? 1 : 0;
     }
   }
@@ -288,105 +449,38 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
                        what + " (an edge is grown when its outward direction is within 60 degrees of it)");
   }
 
-  // The raw strip: for each selected edge (p, q) the quad p q q' p' (counterclockwise like the
-  // old faces), split along its shorter diagonal.
+  // The raw strip, on a separate mesh.
   using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Strip_mesh = CGAL::Surface_mesh<Epick::Point_3>;
   using strip_vertex = Strip_mesh::Vertex_index;
   Strip_mesh strip;
-  std::vector<strip_vertex> inner(static_cast<std::size_t>(m)), outer(static_cast<std::size_t>(m));
-  std::vector<char> has_strip_vertex(static_cast<std::size_t>(m), 0);
+  // Per old vertex: its copy in the strip, and the first and last points of its offset (for the
+  // incoming and the outgoing grown edge; the same point at a miter).
+  std::vector<strip_vertex> inner(static_cast<std::size_t>(m)), outer_in(static_cast<std::size_t>(m)),
+      outer_out(static_cast<std::size_t>(m));
   std::vector<Eigen::Vector3d> raw_reference; // reference position of each strip vertex
   auto base = strip.add_property_map<strip_vertex, Eigen::Index>("v:fas_base", -1).first;
   auto vertex_constrained = strip.add_property_map<strip_vertex, bool>("v:fas_constrained", false).first;
   auto edge_constrained =
       strip.add_property_map<Strip_mesh::Edge_index, bool>("e:fas_constrained", false).first;
   auto to_point = [](const Eigen::Vector3d& p) { return Epick::Point_3(p.x(), p.y(), p.z()); };
-  const double cos_corner = std::cos(CGAL_PI / 6);
+  auto point = [&](strip_vertex v) {
+    const auto& s = strip.point(v);
+    return Eigen::Vector3d(s.x(), s.y(), s.z());
+  };
+  auto add_face = [&](strip_vertex a, strip_vertex b, strip_vertex c) {
+    if (strip.add_face(a, b, c) == Strip_mesh::null_face())
+      throw std::logic_error(caller + ": building the raw strip failed");
+  };
+  auto where = [&](Eigen::Index v) {
+    std::ostringstream os;
+    os << "vertex " << v << " (" << x(v, 0) << ", " << x(v, 1) << ", " << x(v, 2) << ")";
+    return os.str();
+  };
+  auto degrees = [](double angle) { return std::to_string(int(std::lround(angle * 180 / CGAL_PI))); };
 
-  double grown_length = 0, longest_inner_edge = 0;
-  for (std::size_t l = 0; l < loops.size(); ++l) {
-    const std::size_t k = loops[l].size();
-    // Offset every vertex touching a selected edge; vertex i is target(loops[l][i]).
-    for (std::size_t i = 0; i < k; ++i) {
-      const Edge& e_in = loop_edges[l][i];
-      const Edge& e_out = loop_edges[l][(i + 1) % k];
-      if (!e_in.selected && !e_out.selected)
-        continue;
-      const halfedge_descriptor h_in = loops[l][i];
-      const auto b = target(h_in, tm);
-      const Eigen::Index bi = static_cast<Eigen::Index>(get(vim, b));
-      const Eigen::Vector3d n = vertex_normal(tm, vim, x, h_in);
-      Eigen::Vector3d g = (e_in.selected ? e_in.direction : Eigen::Vector3d::Zero()) +
-                          (e_out.selected ? e_out.direction : Eigen::Vector3d::Zero());
-      g -= g.dot(n) * n;
-      if (!(g.norm() > parallel_sine))
-        throw_growth_error(caller, "the boundary turns back on itself at vertex " + std::to_string(bi) +
-                                       " (its two edges grow in opposite directions)");
-      g.normalize();
-      double miter = 1;
-      if (e_in.selected && e_out.selected)
-        miter = 1 / (std::max)(0.5, g.dot(e_in.direction));
-      const Eigen::Vector3d offset = distance * miter * g;
-      const Eigen::Vector3d p = x.row(bi).transpose();
-
-      inner[bi] = strip.add_vertex(to_point(p));
-      outer[bi] = strip.add_vertex(to_point(p + offset));
-      has_strip_vertex[bi] = 1;
-      put(base, inner[bi], bi);
-      put(vertex_constrained, inner[bi], true);
-      // Keep the corners of the offset curve: the ends of a grown part and sharp turns.
-      put(vertex_constrained, outer[bi],
-          !(e_in.selected && e_out.selected) || e_in.direction.dot(e_out.direction) < cos_corner);
-      if (reference) {
-        const Eigen::Vector3d p0 = reference->row(bi).transpose();
-        const Eigen::Vector3d coefficients = boundary_vertex_frame(tm, vim, x, h_in).transpose() * offset;
-        raw_reference.resize(strip.number_of_vertices());
-        raw_reference[inner[bi]] = p0;
-        raw_reference[outer[bi]] = p0 + boundary_vertex_frame(tm, vim, *reference, h_in) * coefficients;
-      }
-    }
-    for (std::size_t i = 0; i < k; ++i) {
-      if (!loop_edges[l][i].selected)
-        continue;
-      const halfedge_descriptor h = loops[l][i];
-      const Eigen::Index p = static_cast<Eigen::Index>(get(vim, source(h, tm)));
-      const Eigen::Index q = static_cast<Eigen::Index>(get(vim, target(h, tm)));
-      auto point = [&](strip_vertex v) {
-        const auto& s = strip.point(v);
-        return Eigen::Vector3d(s.x(), s.y(), s.z());
-      };
-      const Eigen::Vector3d pq = point(inner[q]) - point(inner[p]);
-      grown_length += pq.norm();
-      longest_inner_edge = (std::max)(longest_inner_edge, pq.norm());
-      // An offset edge reversed with respect to its edge: the offset curve folds over.
-      const Eigen::Vector3d offset_pq = point(outer[q]) - point(outer[p]);
-      bool folds = !(offset_pq.dot(pq) > 0);
-      if (reference && !folds)
-        folds = !((raw_reference[outer[q]] - raw_reference[outer[p]])
-                      .dot(raw_reference[inner[q]] - raw_reference[inner[p]]) > 0);
-      if (folds) {
-        std::ostringstream os;
-        os << "the distance " << distance << " is too large for the boundary near vertex " << p
-           << ": the offset curve folds over there (grow by a smaller distance, in several steps)";
-        throw_growth_error(caller, os.str());
-      }
-      const bool first_diagonal = (point(inner[p]) - point(outer[q])).squaredNorm() <=
-                                  (point(inner[q]) - point(outer[p])).squaredNorm();
-      const std::array<std::array<strip_vertex, 3>, 2> triangles =
-          first_diagonal ? std::array<std::array<strip_vertex, 3>, 2>{{{{inner[p], inner[q], outer[q]}},
-                                                                       {{inner[p], outer[q], outer[p]}}}}
-                         : std::array<std::array<strip_vertex, 3>, 2>{
-                               {{{inner[p], inner[q], outer[p]}}, {{inner[q], outer[q], outer[p]}}}};
-      for (const auto& t : triangles)
-        if (strip.add_face(t[0], t[1], t[2]) == Strip_mesh::null_face())
-          throw std::logic_error(caller + ": building the raw strip failed");
-      put(edge_constrained, strip.edge(strip.halfedge(inner[p], inner[q])), true);
-    }
-  }
-
-  // Target length: the mesh's mean edge length, raised if needed so that the protected old
-  // edges are no longer than 4/3 of it (the remesher's precondition for protected edges).
+  // A strip thinner than the edges is built directly, and not remeshed: the remesher could only
+  // keep the old boundary's edges, too long for the strip's height, by making thin triangles.
   double total_length = 0;
   std::size_t number_of_mesh_edges = 0;
   for (auto e : edges(tm)) {
@@ -396,29 +490,177 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
             .norm();
     ++number_of_mesh_edges;
   }
-  const double target_length =
-      (std::max)(total_length / static_cast<double>(number_of_mesh_edges), 0.76 * longest_inner_edge);
+  const double mean_length = total_length / static_cast<double>(number_of_mesh_edges);
+  const bool thin = distance < thin_strip * mean_length;
+
+  Growth_report report;
+  double grown_length = 0, longest_inner_edge = 0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const std::size_t k = loops[l].size();
+    const std::vector<char>& grown = loop_selected[l];
+    // The offset of every vertex on a grown edge, in the tangent plane at the vertex; vertex i is
+    // target(loops[l][i]), between the border edges i (incoming) and i + 1 (outgoing).
+    std::vector<std::vector<strip_vertex>> fans(k);
+    for (std::size_t i = 0; i < k; ++i) {
+      const bool in = grown[i] != 0, out = grown[(i + 1) % k] != 0;
+      if (!in && !out)
+        continue;
+      const halfedge_descriptor h_in = loops[l][i], h_out = loops[l][(i + 1) % k];
+      const Eigen::Index bi = static_cast<Eigen::Index>(get(vim, target(h_in, tm)));
+      const Eigen::Vector3d b = x.row(bi).transpose();
+      const Eigen::Vector3d n = vertex_normal(tm, vim, x, h_in);
+      auto tangent = [&](Eigen::Vector3d t) -> Eigen::Vector3d {
+        t -= t.dot(n) * n;
+        if (!(t.norm() > parallel_sine * (t.norm() + 1)))
+          throw_growth_error(caller, "a boundary edge at " + where(bi) +
+                                         " is along the surface normal there, so it has no outward direction");
+        return t.normalized();
+      };
+      const Eigen::Vector3d t_in = tangent(b - position<TriangleMesh>(x, vim, source(h_in, tm)));
+      const Eigen::Vector3d t_out = tangent(position<TriangleMesh>(x, vim, target(h_out, tm)) - b);
+      // The boundary runs with the outside on its left (o = n x t); its turn at the vertex is
+      // positive where the surface is convex there: the outside angle is pi + turn.
+      const Eigen::Vector3d o_in = n.cross(t_in), o_out = n.cross(t_out);
+      const double turn = -std::atan2(t_in.cross(t_out).dot(n), t_in.dot(t_out));
+      std::vector<Eigen::Vector3d> offsets; // from the incoming edge's side to the outgoing one's
+      bool corner = true;
+      if (in && out) {
+        if (turn > fan_turn) {
+          // A sharp convex corner: the arc of radius d about the vertex, in pieces of <= 60 degrees.
+          const int pieces = int(std::ceil(turn / (CGAL_PI / 3) - 1e-9));
+          for (int j = 0; j <= pieces; ++j) {
+            const double theta = turn * j / pieces;
+            offsets.push_back(distance * (std::cos(theta) * o_in + std::sin(theta) * t_in));
+          }
+        }
+        else {
+          // A miter: the intersection of the two edges' offset lines.
+          if (turn < -max_concave_turn)
+            throw_growth_error(caller, "the boundary has a concave corner of " + degrees(CGAL_PI + turn) +
+                                           " degrees at " + where(bi) +
+                                           ", too sharp to grow its two sides (at least " +
+                                           degrees(CGAL_PI - max_concave_turn) + " degrees are needed)");
+          offsets.push_back(distance / std::cos(turn / 2) * (o_in + o_out).normalized());
+          corner = std::abs(turn) >= CGAL_PI / 6;
+        }
+      }
+      else {
+        // An end of a grown run: a cap orthogonal to the grown edge, turned toward it where the old
+        // boundary beyond bends into the strip's way, so that 30 degrees stay between them.
+        const double outside = CGAL_PI + turn;
+        const double beta = (std::min)(CGAL_PI / 2, outside - CGAL_PI / 6);
+        if (beta < CGAL_PI / 6)
+          throw_growth_error(caller, "the boundary folds back at the end of the grown part at " + where(bi) +
+                                         " (an outside angle of " + degrees(outside) +
+                                         " degrees, at least 60 are needed for the strip's end)");
+        const Eigen::Vector3d along = out ? t_out : Eigen::Vector3d(-t_in);
+        const Eigen::Vector3d away = out ? o_out : o_in;
+        offsets.push_back(distance / std::sin(beta) * (std::cos(beta) * along + std::sin(beta) * away));
+      }
+
+      inner[bi] = strip.add_vertex(to_point(b));
+      put(base, inner[bi], bi);
+      put(vertex_constrained, inner[bi], true);
+      Eigen::Matrix3d frame, reference_frame;
+      if (reference) {
+        frame = boundary_vertex_frame(tm, vim, x, h_in);
+        reference_frame = boundary_vertex_frame(tm, vim, *reference, h_in);
+        raw_reference.resize(strip.number_of_vertices());
+        raw_reference[inner[bi]] = reference->row(bi).transpose();
+      }
+      for (const Eigen::Vector3d& offset : offsets) {
+        const strip_vertex v = strip.add_vertex(to_point(b + offset));
+        fans[i].push_back(v);
+        put(vertex_constrained, v, corner);
+        if (reference) {
+          raw_reference.resize(strip.number_of_vertices());
+          raw_reference[v] = raw_reference[inner[bi]] + reference_frame * (frame.transpose() * offset);
+        }
+      }
+      outer_in[bi] = fans[i].front();
+      outer_out[bi] = fans[i].back();
+    }
+    // The quads of the grown edges (p, q): p q q' p', counterclockwise like the old faces, split
+    // along the shorter diagonal; then the fans at the vertices.
+    for (std::size_t i = 0; i < k; ++i) {
+      if (!grown[i])
+        continue;
+      const halfedge_descriptor h = loops[l][i];
+      const Eigen::Index p = static_cast<Eigen::Index>(get(vim, source(h, tm)));
+      const Eigen::Index q = static_cast<Eigen::Index>(get(vim, target(h, tm)));
+      report.grown_edges.emplace_back(std::size_t(p), std::size_t(q));
+      const strip_vertex pp = outer_out[p], qq = outer_in[q];
+      const Eigen::Vector3d pq = point(inner[q]) - point(inner[p]);
+      grown_length += pq.norm();
+      longest_inner_edge = (std::max)(longest_inner_edge, pq.norm());
+      // An offset edge reversed with respect to its edge: the offset curve folds over.
+      bool folds = !((point(qq) - point(pp)).dot(pq) > 0);
+      if (reference && !folds)
+        folds = !((raw_reference[qq] - raw_reference[pp]).dot(raw_reference[inner[q]] - raw_reference[inner[p]]) >
+                  0);
+      if (folds) {
+        std::ostringstream os;
+        os << "the distance " << distance << " is too large for the boundary near " << where(p)
+           << ": the offset curve folds over there (grow by a smaller distance, in several steps)";
+        throw_growth_error(caller, os.str());
+      }
+      if (thin && pq.norm() > mid_vertex_ratio * distance) {
+        // A thin quad: a vertex in the middle of its outer side makes three triangles whose
+        // angles stay above 20 degrees while the edge is at most 5.5 times the distance.
+        const strip_vertex mid = strip.add_vertex(to_point(0.5 * (point(pp) + point(qq))));
+        if (reference) {
+          raw_reference.resize(strip.number_of_vertices());
+          raw_reference[mid] = 0.5 * (raw_reference[pp] + raw_reference[qq]);
+        }
+        add_face(inner[p], inner[q], mid);
+        add_face(inner[q], qq, mid);
+        add_face(inner[p], mid, pp);
+      }
+      else if ((point(inner[p]) - point(qq)).squaredNorm() <= (point(inner[q]) - point(pp)).squaredNorm()) {
+        add_face(inner[p], inner[q], qq);
+        add_face(inner[p], qq, pp);
+      }
+      else {
+        add_face(inner[p], inner[q], pp);
+        add_face(inner[q], qq, pp);
+      }
+      put(edge_constrained, strip.edge(strip.halfedge(inner[p], inner[q])), true);
+    }
+    for (std::size_t i = 0; i < k; ++i)
+      for (std::size_t j = 0; j + 1 < fans[i].size(); ++j) {
+        const Eigen::Index bi = static_cast<Eigen::Index>(get(vim, target(loops[l][i], tm)));
+        add_face(inner[bi], fans[i][j + 1], fans[i][j]);
+      }
+  }
+
+  // Target length: the mesh's mean edge length, raised if needed so that the protected old
+  // edges are no longer than 4/3 of it (the remesher's precondition for protected edges).
+  const double target_length = (std::max)(mean_length, 0.76 * longest_inner_edge);
   const Strip_mesh raw = strip;
   const auto offset_done = Clock::now();
 
   namespace PMP = CGAL::Polygon_mesh_processing;
-  std::vector<Strip_mesh::Edge_index> free_edges;
-  for (auto e : strip.edges())
-    if (!get(edge_constrained, e))
-      free_edges.push_back(e);
-  PMP::split_long_edges(free_edges, 4. / 3. * target_length, strip,
-                        CGAL::parameters::edge_is_constrained_map(edge_constrained));
-  const std::vector<Strip_mesh::Face_index> strip_faces(strip.faces().begin(), strip.faces().end());
-  PMP::isotropic_remeshing(strip_faces, target_length, strip,
-                           CGAL::parameters::number_of_iterations(3)
-                               .edge_is_constrained_map(edge_constrained)
-                               .vertex_is_constrained_map(vertex_constrained)
-                               .protect_constraints(true));
+  if (!thin) {
+    std::vector<Strip_mesh::Edge_index> free_edges;
+    for (auto e : strip.edges())
+      if (!get(edge_constrained, e))
+        free_edges.push_back(e);
+    PMP::split_long_edges(free_edges, 4. / 3. * target_length, strip,
+                          CGAL::parameters::edge_is_constrained_map(edge_constrained));
+    const std::vector<Strip_mesh::Face_index> strip_faces(strip.faces().begin(), strip.faces().end());
+    PMP::isotropic_remeshing(strip_faces, target_length, strip,
+                             CGAL::parameters::number_of_iterations(3)
+                                 .edge_is_constrained_map(edge_constrained)
+                                 .vertex_is_constrained_map(vertex_constrained)
+                                 .protect_constraints(true));
+  }
   const auto remeshed = Clock::now();
 
   // Number the new vertices and place them on the reference strip: same triangle of the raw
   // strip, same barycentric coordinates.
   Boundary_strip result;
+  result.report.number_of_grown_edges = report.grown_edges.size();
+  result.report.grown_edges = std::move(report.grown_edges);
   auto index = strip.add_property_map<strip_vertex, Eigen::Index>("v:fas_index", -1).first;
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Strip_mesh>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, Primitive>>;
@@ -467,12 +709,15 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
       check_face(fv, *reference, result.reference_points, " in the reference mesh M_0");
     result.faces.push_back(fv);
   }
+  const auto mapped = Clock::now();
+  check_grown_surface(tm, vim, x, result.points, result.faces, caller);
   result.report.number_of_new_vertices = result.points.size();
   result.report.number_of_new_faces = result.faces.size();
   result.report.grown_boundary_length = grown_length;
   result.report.offset_ms = std::chrono::duration<double, std::milli>(offset_done - start).count();
   result.report.remesh_ms = std::chrono::duration<double, std::milli>(remeshed - offset_done).count();
-  result.report.reference_map_ms = std::chrono::duration<double, std::milli>(Clock::now() - remeshed).count();
+  result.report.reference_map_ms = std::chrono::duration<double, std::milli>(mapped - remeshed).count();
+  result.report.check_ms = std::chrono::duration<double, std::milli>(Clock::now() - mapped).count();
   return result;
 }
 
@@ -552,33 +797,45 @@ std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> appen
 \ingroup PkgFlowAlignedSurfacesRef
 
 \brief Grows `tm` at its boundary by `distance`: offsets the whole boundary, or the part of it
-selected by the named parameters, along its outward direction in the surface's tangent plane,
-and tessellates the new strip with near-regular triangles of the mesh's mean edge length.
+selected by the named parameters, by `distance` in the surface's tangent plane, and tessellates
+the new strip with near-regular triangles.
 
 Every boundary edge \f$ e \f$ has an outward direction \f$ o_e \f$: in the plane of its face,
 orthogonal to the edge, pointing away from the face.  An edge is grown when
 - no `growth_direction` \f$ d \f$ is given, or the projection \f$ d_e \f$ of \f$ d \f$ on the plane
   of its face satisfies \f$ o_e \cdot d_e / \|d_e\| \ge \cos 60° = 1/2 \f$, and
 - `across_flow` is `false`, or the direction across the flow at the edge's midpoint,
-  \f$ a_e = \pm n_e \times v / \|v\| \f$ signed so that \f$ a_e \cdot o_e > 0 \f$, satisfies
-  \f$ a_e \cdot o_e \ge 1/2 \f$ (the outward direction is within 60° of across the flow).
+  \f$ a_e = n_e \times v / \|v\| \f$, satisfies \f$ |a_e \cdot o_e| \ge 1/2 \f$: the edge's
+  outward direction is within 60° of across the flow, on either side.
 
-Each vertex of a grown edge moves to \f$ b' = b + d\, m_b\, g_b \f$: \f$ g_b \f$ is the sum of the
-growth directions (\f$ o_e \f$, or \f$ a_e \f$ with `across_flow`) of its grown edges projected on the
-tangent plane at \f$ b \f$ (the area-weighted vertex normal) and normalized, and \f$ m_b \f$ the
-miter factor \f$ 1/\cos(\text{half the turn between them}) \f$ capped at 2, so that a straight side
-moves by exactly `distance` and a rectangle grows into a rectangle.  The quads between the old
-and the new boundary are tessellated by `CGAL::Polygon_mesh_processing::split_long_edges()` and
+The direction or the flow only selects the edges: every grown edge moves by `distance` along its
+own outward direction (taken in the tangent plane at each of its vertices, normal to the area
+weighted vertex normal), so that a straight side moves by exactly `distance` and the added area
+is `distance` times the grown length plus what the corners add, whatever the patch's pose
+against the flow.  At a vertex between two grown edges the offset curve takes
+- the miter, the intersection of the two edges' offset lines, where the boundary turns by at
+  most 90° outward (a rectangle grows into the larger rectangle) or at most 120° inward;
+- an arc of radius `distance` about the vertex, in pieces of at most 60° (a fan of triangles),
+  where it turns outward by more than 90°;
+
+and a run of grown edges ends in a cap orthogonal to its end edge, turned toward the run where
+the old boundary beyond bends into the strip's way so that 30° stay between them.
+The strip between the old and the new boundary is tessellated with triangles of about the
+mesh's mean edge length by `CGAL::Polygon_mesh_processing::split_long_edges()` and
 `CGAL::Polygon_mesh_processing::isotropic_remeshing()` (three iterations, target length the mean
-edge length of `tm`, raised to 3/4 of the longest grown edge if that is larger) on a separate
-mesh, with the old boundary edges and vertices and the corners of the new boundary protected,
-and the result is appended to `tm`.  Nothing is removed from `tm`: its vertices and faces keep
-their descriptors and its index maps stay valid.
+edge length of `tm`, raised to 3/4 of the longest grown edge if that is larger), with the old
+boundary edges and vertices and the corners of the new boundary protected.  A strip thinner
+than 0.6 times the mean edge length is triangulated directly instead: each grown edge's quad in
+two triangles, or in three with a vertex in the middle of its outer side when the edge is longer
+than 2.5 times `distance`; its smallest angle stays at or above 20° while the old boundary edges
+are at most 5.5 times `distance` (they are not split).  The strip is built on a separate mesh and
+appended to `tm`: nothing is removed from `tm`, its vertices and faces keep their descriptors and
+its index maps stay valid.  The result is then checked: the grown surface must be manifold and
+no new face may intersect another face of the surface (beyond a shared vertex or edge),
+otherwise the growth is refused and `tm` is left untouched.
 
 The offset is first order: on a curved surface the strip lies in the tangent planes of the
-boundary, and where the boundary is concave it must not fold over (the distance must stay below
-the boundary's radius of curvature there); grow in several small steps to follow a curved
-surface.  The new strip is not tested against the rest of the surface for intersections.
+boundary; grow in several small steps to follow a curved surface.
 
 \tparam TriangleMesh a model of `FaceListGraph` and `MutableFaceGraph` whose faces are
         triangles (`CGAL::Surface_mesh`, `CGAL::Polyhedron_3`, OpenMesh meshes)
@@ -606,8 +863,9 @@ surface.  The new strip is not tested against the rest of the surface for inters
     \cgalParamDefault{the whole boundary is grown}
   \cgalParamNEnd
   \cgalParamNBegin{across_flow}
-    \cgalParamDescription{grow only where the outward direction is within 60° of across the flow,
-      and along the direction across the flow (`CGAL::Flow_aligned_surfaces::parameters::across_flow()`);
+    \cgalParamDescription{grow only the boundary edges whose outward direction is within 60° of
+      across the flow, on either side (`CGAL::Flow_aligned_surfaces::parameters::across_flow()`): on a
+      tangential surface, the sides along the streamlines, which then move outward across them;
       needs `flow_field`}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
@@ -619,14 +877,18 @@ surface.  The new strip is not tested against the rest of the surface for inters
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns what was grown: new vertices and faces, the length of the grown boundary part, the
+\returns what was grown: new vertices and faces, the grown boundary edges and their length, the
          added area.
 \throws std::invalid_argument, before `tm` is modified, if `tm` is not a valid manifold triangle
         mesh or is closed, `distance` is not positive and finite, `growth_direction` is zero,
         parallel to the normal at every boundary edge or faces no boundary edge, `across_flow`
         is given without `flow_field`, the flow is zero or undefined at every boundary edge, no
-        edge faces across the flow, or the distance is so large that the offset boundary folds
-        over or a new face would be degenerate.  The message names what is wrong.
+        edge faces across the flow, or growing is impossible at this distance: the boundary has
+        a concave corner sharper than 60° between two grown edges or folds back at the end of a
+        grown part, the offset curve folds over (a concave part whose radius of curvature is
+        below `distance`), a new face would be degenerate, or the grown surface would be
+        non-manifold or cut through itself (parts of the boundary closer than about twice
+        `distance`).  The message says why and where (the vertex or the point).
 
 \sa `Flow_aligned_deformation::grow()`
 */

@@ -11,7 +11,8 @@
 // 2h apart: a particle re-integrated from c((u_i + u_{i+1}) / 2) is inserted where neighbours
 // diverge, one is removed where they converge, and the front tears where it cannot be refined
 // (a particle leaves the domain or stagnates, neighbours separate at a critical point or an
-// obstacle).  The strip between two time lines is triangulated by the shorter-diagonal rule.
+// obstacle).  The strip between two time lines is triangulated by the shorter-diagonal rule; a
+// time line whose strip would be thin (a sheared front, turned towards the flow) is left out.
 // With arc-length time lines v is replaced by v / |v| (steady fields), so τ is the arc length.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTEGRATE_STREAM_SURFACE_H
@@ -50,8 +51,10 @@ namespace Flow_aligned_surfaces {
 /// \ingroup PkgFlowAlignedSurfacesRef
 /// Why `integrate_stream_surface()` stopped.
 enum class Stream_surface_termination {
-  MAX_INTEGRATION_TIME, ///< the last time line is at `max_time` (or `max_length` with arc-length time lines)
-  MAX_NUMBER_OF_TIME_LINES, ///< `max_number_of_time_lines` time lines were computed
+  MAX_INTEGRATION_TIME,     ///< the last time line is at `max_time`
+  MAX_LENGTH,               ///< the last time line is at `max_length` (arc-length time lines)
+  MAX_NUMBER_OF_TIME_LINES, ///< `max_number_of_time_lines` time lines were computed, before `max_time`
+                            ///< (`max_length`); the message says how far the last one got
   NO_PARTICLE_LEFT,         ///< every front piece left the domain, stagnated or was torn to single particles
   MAX_NUMBER_OF_VERTICES,   ///< the surface reached `max_number_of_vertices`
   SEED_OUTSIDE_DOMAIN,      ///< no point of the seed is inside the field's domain: empty result
@@ -59,7 +62,45 @@ enum class Stream_surface_termination {
 };
 
 /// \ingroup PkgFlowAlignedSurfacesRef
-/// What `integrate_stream_surface()` did.
+/// returns the name of `t` (`"MAX_LENGTH"`, ...), for messages.
+inline const char* to_string(Stream_surface_termination t)
+{
+  switch (t) {
+  case Stream_surface_termination::MAX_INTEGRATION_TIME:
+    return "MAX_INTEGRATION_TIME";
+  case Stream_surface_termination::MAX_LENGTH:
+    return "MAX_LENGTH";
+  case Stream_surface_termination::MAX_NUMBER_OF_TIME_LINES:
+    return "MAX_NUMBER_OF_TIME_LINES";
+  case Stream_surface_termination::NO_PARTICLE_LEFT:
+    return "NO_PARTICLE_LEFT";
+  case Stream_surface_termination::MAX_NUMBER_OF_VERTICES:
+    return "MAX_NUMBER_OF_VERTICES";
+  case Stream_surface_termination::SEED_OUTSIDE_DOMAIN:
+    return "SEED_OUTSIDE_DOMAIN";
+  case Stream_surface_termination::SEED_AT_REST:
+    return "SEED_AT_REST";
+  }
+  return "?";
+}
+
+/// \ingroup PkgFlowAlignedSurfacesRef
+/// How far one direction of `integrate_stream_surface()` got and why it stopped.
+struct Stream_surface_half_report {
+  /// the number of time lines computed after the seed curve
+  std::size_t number_of_time_lines = 0;
+  /// the time-line parameter \f$ \tau \ge 0 \f$ of the last time line
+  double final_parameter = 0;
+  /// why the integration stopped
+  Stream_surface_termination termination = Stream_surface_termination::NO_PARTICLE_LEFT;
+  /// the reason in words, naming the limit and its value
+  std::string message;
+};
+
+/// \ingroup PkgFlowAlignedSurfacesRef
+/// What `integrate_stream_surface()` did.  With `Integration_direction::BOTH` the counts are
+/// those of the whole surface, `number_of_time_lines`, `final_parameter`, `termination` and
+/// `message` those of the forward half, and `backward` says how far the backward half got.
 struct Stream_surface_report {
   /// the number of time lines computed after the seed curve
   std::size_t number_of_time_lines = 0;
@@ -87,8 +128,11 @@ struct Stream_surface_report {
   double time_line_step = 0;
   /// why the integration stopped
   Stream_surface_termination termination = Stream_surface_termination::NO_PARTICLE_LEFT;
-  /// the reason in words
+  /// the reason in words, naming the limit and its value
   std::string message;
+  /// with `Integration_direction::BOTH`: the backward half's time lines, last parameter and
+  /// termination; empty otherwise
+  std::optional<Stream_surface_half_report> backward;
 };
 
 namespace internal {
@@ -192,34 +236,74 @@ public:
     std::size_t max_time_lines, max_vertices, max_steps;
     int direction;
     Integration_tolerances tolerances;
+    // The backward half is written with its triangles reversed, so that every surface is oriented
+    // by ∂x/∂u × v, and, within a BOTH surface, with negative τ.
+    bool reverse_triangles = false;
+    double written_tau_sign = 1;
+    // Time lines whose strip would be thin are left out of the mesh (with the default
+    // time-line step only: a given step is the time-line spacing the caller asked for).
+    bool skip_thin_strips = false;
   };
 
+  // The vertices of the seed samples, shared by the two halves of a BOTH surface: the first
+  // half writes those it creates, the second reuses them.
+  using Seed_vertices = std::vector<std::optional<vertex_descriptor>>;
+
   Stream_surface_front(const FlowField& field, bool normalize, const Seed_curve& seed,
-                       const Settings& settings, TriangleMesh& tm, VPM vpm, UMap u_map, TMap t_map)
+                       const Settings& settings, TriangleMesh& tm, VPM vpm, UMap u_map, TMap t_map,
+                       Seed_vertices& seed_vertices)
       : m_field{&field, normalize}, m_seed(seed), m_s(settings), m_tm(tm), m_vpm(vpm), m_u_map(u_map),
-        m_t_map(t_map)
+        m_t_map(t_map), m_seed_vertices(seed_vertices)
   {
   }
 
   Stream_surface_report run(Stream_surface_report report)
   {
     m_report = std::move(report);
+    m_report.number_of_time_lines = 0;
+    m_report.final_parameter = 0;
+    m_report.termination = Stream_surface_termination::NO_PARTICLE_LEFT;
     seed_front();
+    advance_front();
+    for (const auto& [sample, node] : m_seed_nodes)
+      if (m_nodes[node].vertex)
+        m_seed_vertices[sample] = m_nodes[node].vertex;
+    return m_report;
+  }
+
+private:
+  // The time lines, until a limit is reached or no particle is left.
+  void advance_front()
+  {
     if (m_pieces.empty())
-      return m_report;
+      return;
+    const char* limit = m_field.normalize ? "max_length" : "max_time";
     for (std::size_t k = 1;; ++k) {
       if (m_pieces.empty())
         return finish(Stream_surface_termination::NO_PARTICLE_LEFT, "no particle left");
+      // The limit in τ first: when it is reached on the last allowed time line, it is what stopped.
+      if (m_parameter >= m_s.max_parameter)
+        return finish(m_field.normalize ? Stream_surface_termination::MAX_LENGTH
+                                        : Stream_surface_termination::MAX_INTEGRATION_TIME,
+                      std::string(limit) + " " + printable(m_s.max_parameter) + " reached");
       if (k > m_s.max_time_lines)
         return finish(Stream_surface_termination::MAX_NUMBER_OF_TIME_LINES,
-                      "max_number_of_time_lines reached");
-      if (m_parameter >= m_s.max_parameter)
-        return finish(Stream_surface_termination::MAX_INTEGRATION_TIME,
-                      m_field.normalize ? "max_length reached" : "max_time reached");
+                      "max_number_of_time_lines (" + std::to_string(m_s.max_time_lines) + ") reached at " +
+                          (m_field.normalize ? "length " : "time ") + printable(m_parameter) +
+                          (std::isfinite(m_s.max_parameter)
+                               ? ", before " + std::string(limit) + " " + printable(m_s.max_parameter)
+                               : ", no " + std::string(limit) + " given"));
       if (m_report.number_of_vertices >= m_s.max_vertices || m_nodes.size() >= 2 * m_s.max_vertices)
-        return finish(Stream_surface_termination::MAX_NUMBER_OF_VERTICES, "max_number_of_vertices reached");
+        return finish(Stream_surface_termination::MAX_NUMBER_OF_VERTICES,
+                      "max_number_of_vertices (" + std::to_string(m_s.max_vertices) + ") reached at " +
+                          (m_field.normalize ? "length " : "time ") + printable(m_parameter));
       m_previous_parameter = m_parameter;
-      m_parameter = std::min(double(k) * m_s.step, m_s.max_parameter);
+      // The last time line is at the limit; one that would end less than Δ/2 before it is moved
+      // there (not a strip of slivers behind it).
+      m_parameter = double(k) * m_s.step;
+      if (m_parameter >= m_s.max_parameter || m_s.max_parameter - m_parameter < 0.5 * m_s.step)
+        m_parameter = m_s.max_parameter;
+      m_last_line = m_parameter >= m_s.max_parameter || k >= m_s.max_time_lines;
       std::vector<std::vector<Particle>> next;
       for (std::vector<Particle>& piece : m_pieces)
         advance_piece(piece, next);
@@ -229,13 +313,16 @@ public:
     }
   }
 
-private:
+  static constexpr std::size_t no_node = std::numeric_limits<std::size_t>::max();
+
   struct Particle {
     Particle(double u, Integrator integrator) : u(u), integrator(std::move(integrator)) {}
     double u;
     Integrator integrator;
     bool at_boundary = false; // it left the domain at x, before the current time line
-    std::size_t node = 0;     // the particle's sample on the current time line
+    // The particle's node on the last time line put into the mesh (`no_node` for a particle
+    // inserted after it).
+    std::size_t node = no_node;
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
     double tau = 0; // of x: the current time line's, or where the particle left the domain
     // The node where the neighbour of this end particle of its piece left the domain: the
@@ -249,11 +336,18 @@ private:
     std::optional<vertex_descriptor> vertex;
   };
 
-  const Stream_surface_report& finish(Stream_surface_termination why, const char* message)
+  void finish(Stream_surface_termination why, std::string message)
   {
     m_report.termination = why;
-    m_report.message = message;
-    return m_report;
+    m_report.message = std::move(message);
+  }
+
+  static std::string printable(double x)
+  {
+    std::ostringstream os;
+    os.precision(6);
+    os << x;
+    return os.str();
   }
 
   std::size_t add_node(const Particle& p)
@@ -269,7 +363,7 @@ private:
       const vertex_descriptor v = add_vertex(m_tm);
       put(m_vpm, v, Mesh_point(Mesh_FT(node.x[0]), Mesh_FT(node.x[1]), Mesh_FT(node.x[2])));
       put(m_u_map, v, node.u);
-      put(m_t_map, v, node.tau);
+      put(m_t_map, v, node.tau == 0 ? 0. : m_s.written_tau_sign * node.tau);
       node.vertex = v;
       ++m_report.number_of_vertices;
     }
@@ -278,6 +372,8 @@ private:
 
   void add_triangle(std::size_t a, std::size_t b, std::size_t c)
   {
+    if (m_s.reverse_triangles)
+      std::swap(b, c);
     const std::array<vertex_descriptor, 3> v = {vertex(a), vertex(b), vertex(c)};
     if (CGAL::Euler::add_face(v, m_tm) == boost::graph_traits<TriangleMesh>::null_face())
       ++m_report.number_of_refused_faces;
@@ -338,6 +434,7 @@ private:
     // rest make the first front pieces.
     const std::size_t n = static_cast<std::size_t>(
         std::min(std::ceil(m_seed.length() / m_s.spacing), double(m_s.max_vertices)));
+    m_seed_vertices.resize(n + 1); // the same samples in both halves
     std::vector<Particle> piece;
     std::size_t inside = 0, moving = 0;
     for (std::size_t i = 0; i <= n; ++i) {
@@ -352,6 +449,8 @@ private:
       }
       if (usable) {
         p.node = add_node(p);
+        m_nodes[p.node].vertex = m_seed_vertices[i];
+        m_seed_nodes.emplace_back(i, p.node);
         piece.push_back(std::move(p));
       }
       else if (!piece.empty()) {
@@ -361,7 +460,7 @@ private:
     }
     if (!piece.empty())
       m_pieces.push_back(std::move(piece));
-    m_report.number_of_lost_particles = (n + 1) - moving;
+    m_report.number_of_lost_particles += (n + 1) - moving;
     if (inside == 0) {
       m_pieces.clear();
       finish(Stream_surface_termination::SEED_OUTSIDE_DOMAIN,
@@ -445,9 +544,12 @@ private:
 
   void advance_piece(std::vector<Particle>& piece, std::vector<std::vector<Particle>>& next)
   {
-    std::vector<std::pair<double, std::size_t>> old_line; // (u, node) of the previous time line
+    std::vector<std::pair<double, std::size_t>> old_line; // (u, node) of the last meshed time line
     for (const Particle& p : piece)
-      old_line.emplace_back(p.u, p.node);
+      if (p.node != no_node)
+        old_line.emplace_back(p.u, p.node);
+    const std::array<std::size_t, 3> changes_before = {
+        m_report.number_of_lost_particles, m_report.number_of_removed_particles, m_report.number_of_tears};
 
     // Runs of particles that reach the new time line.
     std::vector<std::vector<Particle>> runs(1);
@@ -468,6 +570,17 @@ private:
       pieces.back().push_back(std::move(run.front()));
       for (std::size_t i = 1; i < run.size(); ++i)
         connect(pieces, std::move(run[i]));
+      // A piece that only moved (and gained inserted particles) since its last meshed time line
+      // waits for the next one while the strip would be thin: sheared fronts turn towards the
+      // flow, and their strips, h wide, get ever flatter.
+      if (m_s.skip_thin_strips && runs.size() == 1 && pieces.size() == 1 && !m_last_line &&
+          changes_before == std::array<std::size_t, 3>{m_report.number_of_lost_particles,
+                                                       m_report.number_of_removed_particles,
+                                                       m_report.number_of_tears} &&
+          is_thin_strip(pieces.front())) {
+        next.push_back(std::move(pieces.front()));
+        continue;
+      }
       for (std::vector<Particle>& new_piece : pieces) {
         std::vector<std::size_t> old_chain, new_chain;
         for (Particle& p : new_piece) {
@@ -492,6 +605,33 @@ private:
         continue_without_boundary_particles(std::move(new_piece), next);
       }
     }
+  }
+
+  // Whether the strip from the piece's last meshed time line to its particles would be thinner
+  // than h/2 somewhere and nowhere as wide as h: the width at a particle is its displacement
+  // since its meshed node across the front (orthogonal to the front's local tangent), at the
+  // ends its whole displacement (a border edge: longer ones make slivers in the corner where a
+  // turned front meets its border stream line).  Only a piece whose particles all stay inside,
+  // with none at an exit, qualifies.
+  bool is_thin_strip(const std::vector<Particle>& piece) const
+  {
+    if (piece.size() < 2)
+      return false;
+    double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      const Particle& p = piece[i];
+      if (p.at_boundary || p.boundary_neighbour)
+        return false;
+      if (p.node == no_node)
+        continue;
+      const Eigen::Vector3d tangent =
+          (piece[std::min(i + 1, piece.size() - 1)].x - piece[i == 0 ? 0 : i - 1].x).normalized();
+      const Eigen::Vector3d d = p.x - m_nodes[p.node].x;
+      const double width = (d - d.dot(tangent) * tangent).norm();
+      smallest = std::min(smallest, width);
+      largest = std::max(largest, i == 0 || i + 1 == piece.size() ? d.norm() : width);
+    }
+    return smallest < 0.5 * m_s.spacing && largest < m_s.spacing;
   }
 
   // The triangle from an end particle's old node to its new one and the node where its
@@ -553,10 +693,13 @@ private:
   VPM m_vpm;
   UMap m_u_map;
   TMap m_t_map;
+  Seed_vertices& m_seed_vertices;
+  std::vector<std::pair<std::size_t, std::size_t>> m_seed_nodes; // (seed sample, node)
   Stream_surface_report m_report;
   std::vector<Node> m_nodes;
   std::vector<std::vector<Particle>> m_pieces;
   double m_parameter = 0, m_previous_parameter = 0; // of the current and the previous time line
+  bool m_last_line = false;
 };
 
 // A writable property map that drops what it is given (the default of the u and t maps).
@@ -577,7 +720,10 @@ polyline with an advancing front, and adds it to `tm_out` as a triangle mesh.
 The surface \f$ x(u, \tau) \f$ solves
 \f$ \partial_\tau x = \sigma v(x, t_0 + \sigma \tau) \f$ with \f$ x(u, 0) = c(u) \f$, the seed
 polyline parametrized by its arc length \f$ u \in [0, L] \f$, \f$ \sigma = -1 \f$ with
-`integration_direction(Integration_direction::BACKWARD)`.  The front, a polyline of particles resampled from the seed at
+`integration_direction(Integration_direction::BACKWARD)`.  With `Integration_direction::BOTH` the
+backward and the forward half are one surface, joined at the seed curve (its vertices shared):
+the union of the `FORWARD` and `BACKWARD` surfaces.  Every surface is oriented by
+\f$ \partial x / \partial u \times v \f$.  The front, a polyline of particles resampled from the seed at
 spacing at most \f$ h \f$, advances in lock-step of \f$ \tau \f$ by the time-line step
 \f$ \Delta \f$; each particle is integrated by the embedded Runge–Kutta pair of Dormand and
 Prince, 5(4) (`relative_tolerance`, `absolute_tolerance`, as `integrate_streamline()`), and
@@ -596,17 +742,25 @@ evaluated on the time line by dense output.  Between consecutive time lines:
   `integrate_streamline()`) and takes part in the strip there: the surface reaches the boundary;
   the strips of its neighbour fan out from that exit until the neighbour leaves too or is more
   than \f$ 2h \f$ away, so that no notch is left between two exits;
-- the strip is triangulated by the shorter-diagonal rule (Hultquist).
+- the strip is triangulated by the shorter-diagonal rule (Hultquist);
+- with the default `time_line_step`, a piece of the front that only moved since its last time
+  line in the mesh (no particle lost, removed or torn off) skips the new time line while the
+  strip would be thinner than \f$ h/2 \f$ somewhere and nowhere \f$ h \f$ wide (at its ends:
+  long): sheared fronts turn towards the flow, and their strips would get
+  ever flatter.  The last time line is never less than \f$ \Delta/2 \f$ after the one before.
 
 Integration stops at `max_time` (`max_length` with arc-length time lines), after `max_number_of_time_lines`, at
-`max_number_of_vertices`, or when no piece of the front is left.  A closed seed (first point = last point) gives a surface with a seam.
+`max_number_of_vertices`, or when no piece of the front is left; the report's `termination` and
+`message` say which limit, with its value and how far the front got.  A closed seed (first
+point = last point) gives a surface with a seam.
 
 Every vertex carries the seed parameter \f$ u \f$ of its particle (`seed_parameter_map`) and the
 time-line parameter \f$ \tau \f$ (`integration_time_map`): the time-line / stream-line
 parametrization of the paper's Figure 3 — the curves of constant \f$ \tau \f$ are the time lines,
 those of constant \f$ u \f$ are stream lines (path lines).  All vertices of a time line have the
-same \f$ \tau = k \Delta \f$ exactly; a vertex where a particle left the domain has the
-\f$ \tau \f$ at which it left, between two time lines.
+same \f$ \tau = k \Delta \f$ exactly (the last one: the limit); a vertex where a particle left the domain has the
+\f$ \tau \f$ at which it left, between two time lines.  With `BOTH`, the backward half's vertices
+get \f$ -\tau \f$.
 
 Vertices and faces are added to `tm_out`; what it held before is kept.
 
@@ -644,9 +798,10 @@ Vertices and faces are added to `tm_out`; what it held before is kept.
     \cgalParamDefault{no limit}
   \cgalParamNEnd
   \cgalParamNBegin{max_number_of_time_lines}
-    \cgalParamDescription{`FAS::parameters::max_number_of_time_lines()`}
+    \cgalParamDescription{`FAS::parameters::max_number_of_time_lines()`, at least 1}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{`100`}
+    \cgalParamDefault{no limit when `max_time` (`max_length` with arc-length time lines) is given,
+      else `100`}
   \cgalParamNEnd
   \cgalParamNBegin{arc_length_time_lines}
     \cgalParamDescription{`FAS::parameters::arc_length_time_lines()`: whether \f$ \tau \f$ is the arc
@@ -655,14 +810,16 @@ Vertices and faces are added to `tm_out`; what it held before is kept.
     \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{integration_direction}
-    \cgalParamDescription{`FAS::parameters::integration_direction()`: `FORWARD` or `BACKWARD`
-      (\f$ \sigma = -1 \f$); `BOTH` is refused}
+    \cgalParamDescription{`FAS::parameters::integration_direction()`: `FORWARD`, `BACKWARD`
+      (\f$ \sigma = -1 \f$) or `BOTH` (one surface, joined at the seed)}
     \cgalParamType{`Integration_direction`}
     \cgalParamDefault{`Integration_direction::FORWARD`}
   \cgalParamNEnd
   \cgalParamNBegin{relative_tolerance, absolute_tolerance, max_number_of_steps}
-    \cgalParamDescription{the integrator's, per particle, as in `integrate_streamline()`}
-    \cgalParamDefault{`1e-8`, `1e-10`, `100000`}
+    \cgalParamDescription{the integrator's, per particle, as in `integrate_streamline()`; the
+      tolerances' defaults are tighter than a stream line's, so that on a sampled field the
+      vertices drift no more than the interpolation itself allows}
+    \cgalParamDefault{`1e-10`, `1e-12`, `100000`}
   \cgalParamNEnd
   \cgalParamNBegin{start_time}
     \cgalParamDescription{`FAS::parameters::start_time()`: \f$ t_0 \f$ (unsteady fields)}
@@ -696,13 +853,15 @@ Vertices and faces are added to `tm_out`; what it held before is kept.
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns the report: time lines, inserted and removed particles, tears, the termination reason.
+\returns the report: time lines, inserted and removed particles, tears, the termination reason
+  (with `BOTH`: the counts of the whole surface, the forward half's time lines and reason, and
+  `backward` for the backward half's).
   A seed entirely outside the domain, or at rest, gives an empty result
   (`SEED_OUTSIDE_DOMAIN`, `SEED_AT_REST`) and leaves `tm_out` untouched.
 
 \throws std::invalid_argument naming the input if `seed_polyline` has fewer than two points, a
   non-finite point or two equal consecutive points, if a parameter is not positive, or if
-  `arc_length_time_lines(true)` is given with an unsteady field, or the direction is `BOTH`.
+  `arc_length_time_lines(true)` is given with an unsteady field, or `max_number_of_time_lines` is 0.
 
 \sa `extract_iso_contours()` for seed curves, `normalized_flux()` to check the result
 */
@@ -727,12 +886,13 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
                                                   seed.length() / double(seed.number_of_segments())),
                                  "front_spacing");
   // The stream lines' own options: tolerances, max_time / max_length, steps, direction.
-  const internal::Streamline_options lines =
-      internal::read_streamline_options(np, "integrate_stream_surface");
-  if (lines.direction == Integration_direction::BOTH)
-    throw std::invalid_argument(
-        "integrate_stream_surface: integration_direction is BOTH; expected FORWARD or "
-        "BACKWARD (integrate the two halves with two calls)");
+  internal::Streamline_options lines = internal::read_streamline_options(np, "integrate_stream_surface");
+  // Tighter than a stream line's defaults: the vertices then follow the sampled field as closely
+  // as its interpolation allows (issue 15: 1e-8 drifted up to 1.6 × that floor on a trilinear grid).
+  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::relative_tolerance_t>::value)
+    lines.tolerances.relative = 1e-10;
+  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::absolute_tolerance_t>::value)
+    lines.tolerances.absolute = 1e-12;
   const double max_parameter = arc_length ? lines.max_length : lines.max_time;
   const double t0 = choose_parameter(get_parameter(np, internal_np::start_time_t()), 0.);
   if (!std::isfinite(t0))
@@ -743,7 +903,13 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
       double(
           choose_parameter(get_parameter(np, internal_np::max_number_of_vertices_t()), std::size_t(1000000))),
       "max_number_of_vertices"));
-  const int direction = lines.direction == Integration_direction::BACKWARD ? -1 : 1;
+  // Without a limit in τ at most 100 time lines by default; with one, only the limit (and
+  // max_number_of_vertices) unless max_number_of_time_lines is given.
+  const std::size_t max_time_lines = choose_parameter(
+      get_parameter(np, internal_np::max_number_of_time_lines_t()),
+      std::isfinite(max_parameter) ? std::numeric_limits<std::size_t>::max() : std::size_t(100));
+  if (max_time_lines == 0)
+    throw std::invalid_argument("integrate_stream_surface: max_number_of_time_lines is 0; expected at least 1");
 
   double step;
   if constexpr (!parameters::is_default_parameter<NamedParameters, internal_np::time_line_step_t>::value)
@@ -776,20 +942,39 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
                                       internal::Ignored_vertex_double_map());
   using Front = internal::Stream_surface_front<FlowField, Point_3, TriangleMesh, std::decay_t<decltype(vpm)>,
                                                std::decay_t<decltype(u_map)>, std::decay_t<decltype(t_map)>>;
-  typename Front::Settings settings{
-      spacing,
-      step,
-      max_parameter,
-      t0,
-      std::cos(std::min(tear_angle, CGAL_PI)),
-      1e-9 * seed.length(),
-      choose_parameter(get_parameter(np, internal_np::max_number_of_time_lines_t()), std::size_t(100)),
-      max_vertices,
-      lines.max_number_of_steps,
-      direction,
-      lines.tolerances};
-  Front front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map);
-  return front.run(std::move(report));
+  typename Front::Settings settings{spacing,
+                                    step,
+                                    max_parameter,
+                                    t0,
+                                    std::cos(std::min(tear_angle, CGAL_PI)),
+                                    1e-9 * seed.length(),
+                                    max_time_lines,
+                                    max_vertices,
+                                    lines.max_number_of_steps,
+                                    lines.direction == Integration_direction::BACKWARD ? -1 : 1,
+                                    lines.tolerances};
+  settings.skip_thin_strips =
+      parameters::is_default_parameter<NamedParameters, internal_np::time_line_step_t>::value;
+  typename Front::Seed_vertices seed_vertices;
+  if (lines.direction != Integration_direction::FORWARD) {
+    settings.direction = -1;
+    settings.reverse_triangles = true;
+    settings.written_tau_sign = lines.direction == Integration_direction::BOTH ? -1 : 1;
+    report = Front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map, seed_vertices).run(report);
+    if (lines.direction == Integration_direction::BACKWARD)
+      return report;
+    report.backward = Stream_surface_half_report{report.number_of_time_lines, report.final_parameter,
+                                                 report.termination, report.message};
+    if (report.termination == Stream_surface_termination::SEED_OUTSIDE_DOMAIN ||
+        report.termination == Stream_surface_termination::SEED_AT_REST) // the same seed forward
+      return report;
+    settings.direction = 1;
+    settings.reverse_triangles = false;
+    settings.written_tau_sign = 1;
+  }
+  // The forward half (of a BOTH surface: it reuses the backward half's seed vertices and adds
+  // its counts to the backward half's).
+  return Front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map, seed_vertices).run(report);
 }
 
 } // namespace Flow_aligned_surfaces

@@ -123,9 +123,9 @@ CGAL_FAS_NAMED_PARAMETER(array_name, std::string)
 /// writer writes.  Default: `"inside"` (read only if present); the empty string reads no mask.
 CGAL_FAS_NAMED_PARAMETER(mask_array_name, std::string)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
-/// Growing (`grow_boundary()`, `Flow_aligned_deformation::grow()`): grow only where the outward
-/// direction of the boundary is within 60 degrees of the direction across the flow, and along
-/// that direction (`n × v/|v|` signed outward).  Default: `false`.
+/// Growing (`grow_boundary()`, `Flow_aligned_deformation::grow()`): grow only the boundary edges
+/// whose outward direction is within 60 degrees of the direction across the flow `n × v/|v|`, on
+/// either side; each moves along its own outward direction.  Default: `false`.
 CGAL_FAS_NAMED_PARAMETER(across_flow, bool)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// Whether a parametrization's guidance field is normalized per face (`true`: near-equidistant
@@ -184,10 +184,12 @@ CGAL_FAS_NAMED_PARAMETER(front_spacing, double)
 /// Δ, the integration time (or arc length, with `arc_length_time_lines(true)`) between
 /// consecutive time lines of a stream surface; its last time line is at `max_time()`
 /// (`max_length()`).  Default: h divided by the median speed on the
-/// seed (time lines about h apart), or h with `arc_length_time_lines(true)`.
+/// seed (time lines about h apart), or h with `arc_length_time_lines(true)`; with the default, a
+/// time line whose strip would be thinner than h/2 (a sheared front) is left out of the mesh.
 CGAL_FAS_NAMED_PARAMETER(time_line_step, double)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
-/// The largest number of time lines of a stream surface after its seed curve.  Default: `100`.
+/// The largest number of time lines of a stream surface after its seed curve (per direction).
+/// Default: no limit when `max_time()` (`max_length()` with arc-length time lines) is given, else `100`.
 CGAL_FAS_NAMED_PARAMETER(max_number_of_time_lines, std::size_t)
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// Whether the particles of a stream surface advance in lock-step of arc length (the field is
@@ -221,8 +223,8 @@ patch_axis(const Vector_3& axis, const NamedParameters& np = NamedParameters())
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// Growing (`grow_boundary()`, `Flow_aligned_deformation::grow()`): grow only the boundary edges
 /// whose outward direction (in the plane of the edge's face, orthogonal to the edge) is within
-/// 60 degrees of this direction projected on that plane.  Type: the kernel's `Vector_3`, not zero.
-/// Default: the whole boundary is grown.
+/// 60 degrees of this direction projected on that plane; each moves along its own outward
+/// direction.  Type: the kernel's `Vector_3`, not zero.  Default: the whole boundary is grown.
 template <typename Vector_3, typename NamedParameters = Default_named_parameters>
 CGAL::Named_function_parameters<Vector_3, internal_np::growth_direction_t, NamedParameters>
 growth_direction(const Vector_3& direction, const NamedParameters& np = NamedParameters())
