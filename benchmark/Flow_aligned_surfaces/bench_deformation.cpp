@@ -319,7 +319,7 @@ Convergence_run run_to_convergence(const Grid& grid, FAS::Alignment alignment, s
     run.step_cpu_ms.push_back(thread_cpu_ms() - cpu_start);
     run.iterations.push_back(report);
     if (k == 0)
-      run.initial_flux = report.normalized_flux;
+      run.initial_flux = report.normalized_flux.value.value();
     if (report.converged) {
       run.converged = true;
       run.rule = (report.max_rotation_angle < 1e-6 && report.number_of_folds == 0) ? "angle" : "step";
@@ -327,7 +327,7 @@ Convergence_run run_to_convergence(const Grid& grid, FAS::Alignment alignment, s
     }
   }
   run.nconv = run.iterations.size();
-  run.final_flux = deformation.current_normalized_flux();
+  run.final_flux = deformation.current_normalized_flux().value.value();
   return run;
 }
 
@@ -795,7 +795,7 @@ int main(int argc, char** argv)
       const Convergence_run& run = first[a];
       std::vector<double> flux, rotation, step;
       for (const auto& it : run.iterations) {
-        flux.push_back(it.normalized_flux);
+        flux.push_back(it.normalized_flux.value.value());
         rotation.push_back(it.max_rotation_angle);
         step.push_back(it.max_vertex_step);
       }

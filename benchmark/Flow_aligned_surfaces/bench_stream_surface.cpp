@@ -124,7 +124,7 @@ Row measure(const Soup& soup, double ms)
           double(soup.triangles.size()),
           max_drift,
           std::sqrt(sum / std::max<double>(1, double(soup.positions.rows()))),
-          FAS::internal::normalized_flux(soup.positions, soup.triangles, abc, K()),
+          FAS::internal::normalized_flux(soup.positions, soup.triangles, abc, K()).value.value(),
           soup.positions.rows() > 0 ? soup.positions.col(0).maxCoeff() : 0.,
           smallest_angle(soup)};
 }

@@ -220,8 +220,8 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
   }
   std::cout << name << ": " << seed_curves.size() << " seed curves, stream surfaces of "
             << surfaces.number_of_faces() << " triangles (flux "
-            << (surfaces.is_empty() ? 0.0 : FAS::normalized_flux(surfaces, scene.flow)) << ")"
-            << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
+            << (surfaces.is_empty() ? FAS::Normalized_flux() : FAS::normalized_flux(surfaces, scene.flow))
+            << ")" << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
             << "\n";
   if (pictures) {
     if (write_picture(out / (name + "_seed_curves.png"), tm,
@@ -246,11 +246,40 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
   return true;
 }
 
+// A number in JSON, or null for no value.
+std::string json_number(const std::optional<double>& x)
+{
+  return x ? csv_field(x) : "null";
+}
+
+// The flux speaks only for the faces where the flow was sampled.  When more than 5% of the area
+// of the surface had no flow, at the start, during the alignment or at the end, says so and what
+// to do about it.
+void warn_unsampled(const std::string& name, const std::vector<FAS::Iteration_report>& iterations,
+                    const FAS::Normalized_flux& final_flux)
+{
+  constexpr double largest_unsampled = 0.05;
+  double worst = final_flux.sampled_area_fraction;
+  for (const auto& r : iterations)
+    worst = std::min(worst, r.normalized_flux.sampled_area_fraction);
+  if (1 - worst <= largest_unsampled)
+    return;
+  const auto percent = [](double sampled) {
+    return std::to_string(int(std::lround(100 * (1 - sampled)))) + "%";
+  };
+  std::cerr << "warning: " << name << " surface: " << percent(worst)
+            << " of its area had no flow sample (outside the domain, or a zero or non-finite velocity)"
+            << " during the alignment, " << percent(final_flux.sampled_area_fraction) << " at the end; "
+            << (final_flux.value ? "the flux is measured on the rest only" : "there is no flux value")
+            << ".  Place the patch inside the flow (--center, --normal) or make it smaller (--size); with "
+               "a data file, check its domain, mask array and velocity array (--array).\n";
+}
+
 struct Run_summary {
   std::string alignment;
   std::size_t faces = 0;
   FAS::Alignment_report report;
-  double initial_flux = 0;
+  FAS::Normalized_flux initial_flux;
   double mean_gtransf_ms = 0, mean_solve_ms = 0;
 };
 
@@ -296,17 +325,20 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     return std::nullopt;
   {
     std::ostream& os = *csv;
-    os << "iteration,normalized_flux,max_rotation_angle,max_vertex_step,folds,outside_samples,invalid_"
-          "samples,"
-          "zero_samples,gtransf_ms,solve_ms,converged\n";
+    // No flux value (no face sampled) is an empty field, not 0.
+    os << "iteration,normalized_flux,sampled_area_fraction,max_rotation_angle,max_vertex_step,folds,"
+          "outside_samples,invalid_samples,zero_samples,gtransf_ms,solve_ms,converged\n";
     for (const auto& r : iterations)
-      os << r.iteration << ',' << r.normalized_flux << ',' << r.max_rotation_angle << ',' << r.max_vertex_step
+      os << r.iteration << ',' << csv_field(r.normalized_flux.value) << ','
+         << r.normalized_flux.sampled_area_fraction << ',' << r.max_rotation_angle << ',' << r.max_vertex_step
          << ',' << r.number_of_folds << ',' << r.number_of_outside_samples << ','
          << r.number_of_invalid_samples << ',' << r.number_of_zero_samples << ','
          << r.gradient_transformation_ms << ',' << r.solve_ms << ',' << (r.converged ? 1 : 0) << '\n';
     // The flux of the final surface, which no iteration started from.
-    os << iterations.size() + 1 << ',' << summary.report.normalized_flux << ",,,,,,,,,\n";
+    os << iterations.size() + 1 << ',' << csv_field(summary.report.normalized_flux.value) << ','
+       << summary.report.normalized_flux.sampled_area_fraction << ",,,,,,,,,\n";
   }
+  warn_unsampled(name, iterations, summary.report.normalized_flux);
   std::cout << flow_name << ", " << name << ": " << summary.faces << " faces, flux " << summary.initial_flux
             << " -> " << summary.report.normalized_flux << " in " << summary.report.number_of_iterations
             << " iterations (" << (summary.report.converged ? "converged" : "not converged") << ")\n";
@@ -423,8 +455,10 @@ int main(int argc, char** argv)
       os << "    {\"alignment\": \"" << r.alignment << "\", \"faces\": " << r.faces
          << ", \"iterations\": " << r.report.number_of_iterations
          << ", \"converged\": " << (r.report.converged ? "true" : "false")
-         << ", \"initial_normalized_flux\": " << r.initial_flux
-         << ", \"final_normalized_flux\": " << r.report.normalized_flux
+         << ", \"initial_normalized_flux\": " << json_number(r.initial_flux.value)
+         << ", \"initial_sampled_area_fraction\": " << r.initial_flux.sampled_area_fraction
+         << ", \"final_normalized_flux\": " << json_number(r.report.normalized_flux.value)
+         << ", \"final_sampled_area_fraction\": " << r.report.normalized_flux.sampled_area_fraction
          << ", \"factor_ms\": " << r.report.factor_ms << ", \"mean_gtransf_ms\": " << r.mean_gtransf_ms
          << ", \"mean_solve_ms\": " << r.mean_solve_ms << ", \"files\": [\"" << r.alignment
          << "_initial.ply\", \"" << r.alignment << "_initial.vtp\", \"" << r.alignment << "_aligned.ply\", \""

@@ -34,6 +34,7 @@
 #include <iterator>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,16 @@ namespace FAS = CGAL::Flow_aligned_surfaces;
 
 // Every flow behind one type, so that the deformation is compiled once.
 using Flow = std::function<std::optional<Vector>(const Point&)>;
+
+/// A number in a CSV file, or an empty field for no value.
+inline std::string csv_field(const std::optional<double>& x)
+{
+  std::ostringstream os;
+  os.precision(17);
+  if (x)
+    os << *x;
+  return os.str();
+}
 
 /// The names that `make_built_in_flow()` knows, for usage messages.
 inline const char* built_in_flow_names()

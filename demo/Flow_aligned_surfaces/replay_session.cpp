@@ -70,13 +70,13 @@ bool write_csv(const fs::path& path, const FAS::Session_replay_report& replay)
 {
   std::ofstream os(path);
   os << std::setprecision(17);
-  os << "iteration,session_line,normalized_flux,max_rotation_angle,max_vertex_step,converged,number_of_moves_"
-        "before,moves_before\n";
+  os << "iteration,session_line,normalized_flux,sampled_area_fraction,max_rotation_angle,max_vertex_step,"
+        "converged,number_of_moves_before,moves_before\n";
   for (const FAS::Session_iteration& it : replay.iterations)
-    os << it.report.iteration << ',' << it.line << ',' << it.report.normalized_flux << ','
-       << it.report.max_rotation_angle << ',' << it.report.max_vertex_step << ','
-       << (it.report.converged ? 1 : 0) << ',' << number_of_words(it.moves_before) << ',' << it.moves_before
-       << '\n';
+    os << it.report.iteration << ',' << it.line << ',' << csv_field(it.report.normalized_flux.value) << ','
+       << it.report.normalized_flux.sampled_area_fraction << ',' << it.report.max_rotation_angle << ','
+       << it.report.max_vertex_step << ',' << (it.report.converged ? 1 : 0) << ','
+       << number_of_words(it.moves_before) << ',' << it.moves_before << '\n';
   if (!os) {
     std::cerr << "error: cannot write " << path << "\n";
     return false;

@@ -63,7 +63,7 @@ int main(int argc, char** argv)
                                    FAS::Integration_direction::BOTH,
                                    FAS::parameters::seed_parameter_map(
                                        u, FAS::parameters::integration_time_map(t))))));
-    const double flux = FAS::normalized_flux(tm, flow);
+    const FAS::Normalized_flux flux = FAS::normalized_flux(tm, flow);
     std::cout << "stream surface " << c << ": " << tm.number_of_faces() << " triangles, "
               << report.number_of_time_lines << " + " << report.backward->number_of_time_lines
               << " time lines, " << report.number_of_inserted_particles << " inserted, "

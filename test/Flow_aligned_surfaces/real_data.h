@@ -46,22 +46,22 @@ void expect_patches_align(
   for (const bool tangential : {true, false}) {
     Mesh tm;
     FAS::make_planar_patch(tm, center, tangential ? tangential_normal : orthogonal_normal, size, size, 800);
-    const double before = FAS::normalized_flux(tm, field);
+    const double before = FAS::normalized_flux(tm, field).value.value();
     const FAS::Alignment_report r =
         FAS::align_to_flow(tm, field, tangential ? FAS::Alignment::TANGENTIAL : FAS::Alignment::ORTHOGONAL);
     const std::string what = label + (tangential ? "_tangential_flux" : "_orthogonal_flux");
     if (tangential) {
       EXPECT_GT(before, 0.3) << what;
-      EXPECT_LE(r.normalized_flux, 0.02)
+      EXPECT_LE(r.normalized_flux.value.value(), 0.02)
           << what << ": from " << before << " in " << r.number_of_iterations << " iterations";
     }
     else {
       EXPECT_LT(before, 0.8) << what;
-      EXPECT_GE(r.normalized_flux, 0.9)
+      EXPECT_GE(r.normalized_flux.value.value(), 0.9)
           << what << ": from " << before << " in " << r.number_of_iterations << " iterations";
     }
     ::testing::Test::RecordProperty(what, std::to_string(before) + " -> " +
-                                              std::to_string(r.normalized_flux) + " in " +
+                                              std::to_string(r.normalized_flux.value.value()) + " in " +
                                               std::to_string(r.number_of_iterations) + " iterations");
   }
 }

@@ -144,13 +144,13 @@ TEST(FlowAlignedDeformationResources, NoCopyOfTheField)
     auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
     auto s = tm.add_property_map<Mesh::Vertex_index, double>("v:s", 0).first;
     deformation.parametrize_tangential(r, s);
-    EXPECT_NEAR(deformation.current_normalized_flux(), 0.0, 1e-9);
+    EXPECT_NEAR(deformation.current_normalized_flux().value.value(), 0.0, 1e-9);
     EXPECT_EQ(Counting_grid_field::copies, 0) << "step, run, moves, grow, parametrize";
   }
 
   // The free functions take the field by reference too, flow_field() included.
   Mesh other = make_rectangle(800);
-  EXPECT_NEAR(FAS::normalized_flux(other, field), 0.0, 1e-12);
+  EXPECT_NEAR(FAS::normalized_flux(other, field).value.value(), 0.0, 1e-12);
   EXPECT_TRUE(FAS::align_to_flow(other, field, FAS::Alignment::TANGENTIAL).converged);
   const FAS::Growth_report grown =
       FAS::grow_boundary(other, 0.05, FAS::parameters::across_flow(true, FAS::parameters::flow_field(field)));

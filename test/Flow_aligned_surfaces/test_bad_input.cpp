@@ -154,7 +154,7 @@ TEST(BadInput, DegenerateFaceHasNoWeightInTheFlux)
   // |n . v| / |v| = 0.8 for n = z and v = (0.6, 0, 0.8).
   const Mesh tm = mesh_with_degenerate_face();
   const auto field = [](const Point&) -> std::optional<Vector> { return Vector(0.6, 0, 0.8); };
-  EXPECT_NEAR(FAS::normalized_flux(tm, field), 0.8, 1e-15);
+  EXPECT_NEAR(FAS::normalized_flux(tm, field).value.value(), 0.8, 1e-15);
 }
 
 TEST(BadInput, NonManifoldVertex)
@@ -286,7 +286,7 @@ TEST(BadInput, BoundaryValuesOfTheParametersAreAccepted)
               0.0, FAS::parameters::convergence_step(0.0, CGAL::parameters::number_of_iterations(3)))));
   const FAS::Alignment_report report = FAS::align_to_flow(tm, field, FAS::Alignment::ORTHOGONAL, np);
   EXPECT_EQ(report.number_of_iterations, 3u);
-  EXPECT_GT(report.normalized_flux, 0.9);
+  EXPECT_GT(report.normalized_flux.value.value(), 0.9);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -309,7 +309,7 @@ TEST(BadInput, RotateAboutZeroOrNonFiniteAxisThrowsAndKeepsTheMesh)
   expect_invalid_argument([&] { deformation.rotate(Vector(0, 0, 1), inf); }, {"rotate", "angle", "finite"});
   expect_unchanged(before, tm);
   // The deformation still works afterwards.
-  EXPECT_GE(deformation.run().normalized_flux, 0.995);
+  EXPECT_GE(deformation.run().normalized_flux.value.value(), 0.995);
 }
 
 TEST(BadInput, RigidMovesWithNonFiniteArgumentsThrowAndKeepTheMesh)
@@ -345,12 +345,14 @@ TEST(BadInput, FieldNonFiniteEverywhereLeavesTheSurfaceInPlace)
     EXPECT_EQ(first.number_of_outside_samples, 0u);
     EXPECT_EQ(first.number_of_zero_samples, 0u);
     EXPECT_EQ(first.max_rotation_angle, 0.0);
-    EXPECT_EQ(first.normalized_flux, 0.0);
+    // No face is sampled: no flux value, not 0 ("tangential").
+    EXPECT_FALSE(first.normalized_flux.value.has_value());
+    EXPECT_EQ(first.normalized_flux.sampled_area_fraction, 0.0);
     EXPECT_TRUE(first.converged);
     std::size_t i = 0;
     for (auto v : tm.vertices())
       EXPECT_LT(std::sqrt((tm.point(v) - before.points[i++]).squared_length()), 1e-9);
-    EXPECT_EQ(FAS::normalized_flux(tm, broken), 0.0);
+    EXPECT_FALSE(FAS::normalized_flux(tm, broken).value.has_value());
   }
 }
 
@@ -364,7 +366,10 @@ TEST(BadInput, NonFiniteSamplesHaveNoWeightInTheFlux)
       return Vector(0.6, 0, 0.8);
     return Vector(nan, nan, nan);
   };
-  EXPECT_NEAR(FAS::normalized_flux(tm, half_broken), 0.8, 1e-12);
+  const FAS::Normalized_flux flux = FAS::normalized_flux(tm, half_broken);
+  EXPECT_NEAR(flux.value.value(), 0.8, 1e-12);
+  EXPECT_GT(flux.sampled_area_fraction, 0.4);
+  EXPECT_LT(flux.sampled_area_fraction, 0.6);
 }
 
 TEST(BadInput, HugeAndTinyFiniteVectors)
@@ -378,9 +383,9 @@ TEST(BadInput, HugeAndTinyFiniteVectors)
   Mesh scaled = reference;
   const FAS::Alignment_report expected = FAS::align_to_flow(reference, source, FAS::Alignment::ORTHOGONAL);
   const FAS::Alignment_report report = FAS::align_to_flow(scaled, huge, FAS::Alignment::ORTHOGONAL);
-  EXPECT_GE(report.normalized_flux, 0.995);
+  EXPECT_GE(report.normalized_flux.value.value(), 0.995);
   EXPECT_EQ(report.number_of_iterations, expected.number_of_iterations);
-  EXPECT_NEAR(report.normalized_flux, expected.normalized_flux, 1e-12);
+  EXPECT_NEAR(report.normalized_flux.value.value(), expected.normalized_flux.value.value(), 1e-12);
   for (auto v : reference.vertices())
     EXPECT_LT(std::sqrt((scaled.point(v) - reference.point(v)).squared_length()), 1e-9);
 
@@ -389,7 +394,8 @@ TEST(BadInput, HugeAndTinyFiniteVectors)
   const FAS::Iteration_report first = deformation.step();
   EXPECT_EQ(first.number_of_zero_samples, still.number_of_faces());
   EXPECT_TRUE(first.converged);
-  EXPECT_EQ(FAS::normalized_flux(still, tiny), 0.0);
+  EXPECT_FALSE(FAS::normalized_flux(still, tiny).value.has_value());
+  EXPECT_FALSE(first.normalized_flux.value.has_value());
 }
 
 TEST(BadInput, FieldOutsideEverywhereConvergesImmediatelyAndLeavesTheSurface)
@@ -404,7 +410,8 @@ TEST(BadInput, FieldOutsideEverywhereConvergesImmediatelyAndLeavesTheSurface)
         CGAL::parameters::visitor([&](const FAS::Iteration_report& r) { reports.push_back(r); }));
     EXPECT_TRUE(report.converged);
     EXPECT_EQ(report.number_of_iterations, 1u);
-    EXPECT_EQ(report.normalized_flux, 0.0);
+    EXPECT_FALSE(report.normalized_flux.value.has_value()) << "no face sampled: no flux, not 0";
+    EXPECT_EQ(report.normalized_flux.sampled_area_fraction, 0.0);
     EXPECT_EQ(report.max_rotation_angle, 0.0);
     ASSERT_EQ(reports.size(), 1u);
     EXPECT_EQ(reports[0].number_of_outside_samples, tm.number_of_faces());
@@ -412,7 +419,7 @@ TEST(BadInput, FieldOutsideEverywhereConvergesImmediatelyAndLeavesTheSurface)
     std::size_t i = 0;
     for (auto v : tm.vertices())
       EXPECT_LT(std::sqrt((tm.point(v) - before.points[i++]).squared_length()), 1e-9);
-    EXPECT_EQ(FAS::normalized_flux(tm, nowhere), 0.0);
+    EXPECT_FALSE(FAS::normalized_flux(tm, nowhere).value.has_value());
   }
 }
 
@@ -475,7 +482,7 @@ TEST(BadInput, DisconnectedMeshAlignsEveryComponent)
   EXPECT_EQ(deformation.number_of_factorizations(), 1u);
   EXPECT_GE(flux_of_faces(tm, source, 0, faces_a), 0.995);
   EXPECT_GE(flux_of_faces(tm, source, faces_a, faces_b), 0.995);
-  EXPECT_NEAR(FAS::normalized_flux(tm, source), report.normalized_flux, 1e-12);
+  EXPECT_NEAR(FAS::normalized_flux(tm, source).value.value(), report.normalized_flux.value.value(), 1e-12);
 
   const Radius_statistics a = radii(tm, 0, vertices_a), b = radii(tm, vertices_a, vertices_b);
   EXPECT_LE(a.spread / a.mean, 1e-3);

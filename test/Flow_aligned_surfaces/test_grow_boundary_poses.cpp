@@ -215,7 +215,7 @@ void expect_reconverges(const Flow& flow, const Point& center, const Vector& nor
   EXPECT_EQ(check_grown(tm, old_faces, before, report, d), "");
   const FAS::Alignment_report after = deformation.run();
   EXPECT_TRUE(after.converged) << after.number_of_iterations << " iterations, f_n " << after.normalized_flux;
-  EXPECT_LE(after.normalized_flux, 0.01);
+  EXPECT_LE(after.normalized_flux.value.value(), 0.01);
   EXPECT_FALSE(PMP::does_self_intersect(tm));
 }
 

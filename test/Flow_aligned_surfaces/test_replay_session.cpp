@@ -82,32 +82,33 @@ TEST(ReplaySession, MovesMakeTheFluxSpikesTheyMust)
   const auto& it = replay.iterations;
   ASSERT_GE(it.size(), 4u);
   // The plane contains the flow: no flux, nothing moves.
-  EXPECT_LT(it[0].report.normalized_flux, 1e-12);
+  EXPECT_LT(it[0].report.normalized_flux.value.value(), 1e-12);
   EXPECT_EQ(it[0].line, 3u);
   EXPECT_EQ(it[1].line, 3u);
   EXPECT_TRUE(it[1].moves_before.empty());
   // Tilted by 20 degrees out of the flow: f_n = |n . v| / |v| = sin 20 degrees.
   EXPECT_EQ(it[2].moves_before, "rotate");
   EXPECT_EQ(it[2].line, 5u);
-  EXPECT_NEAR(it[2].report.normalized_flux, std::sin(20 * std::acos(-1.0) / 180), 1e-9);
+  EXPECT_NEAR(it[2].report.normalized_flux.value.value(), std::sin(20 * std::acos(-1.0) / 180), 1e-9);
   // ... and aligned again by the iterations of line 5.
   const std::size_t last_of_line_5 = it.size() - 2;
   EXPECT_EQ(it[last_of_line_5].line, 5u);
   EXPECT_TRUE(it[last_of_line_5].report.converged);
-  EXPECT_LT(it[last_of_line_5].report.normalized_flux, 0.01);
+  EXPECT_LT(it[last_of_line_5].report.normalized_flux.value.value(), 0.01);
   // A translation and a rotation about the flow keep a plane that contains a uniform flow
   // tangential: no spike.
   const auto& after_moves = it.back();
   EXPECT_EQ(after_moves.line, 9u);
   EXPECT_EQ(after_moves.moves_before, "translate rotate");
-  EXPECT_LT(after_moves.report.normalized_flux, 0.01);
+  EXPECT_LT(after_moves.report.normalized_flux.value.value(), 0.01);
   // Every iteration counts once, in order.
   for (std::size_t i = 0; i < it.size(); ++i)
     EXPECT_EQ(it[i].report.iteration, i + 1);
   EXPECT_EQ(save_lines, (std::vector<std::size_t>{6, 10}));
   EXPECT_EQ(saved_at, (std::vector<std::size_t>{it.size() - 1, it.size()}));
   EXPECT_TRUE(replay.growths.empty());
-  EXPECT_NEAR(replay.final_normalized_flux, FAS::normalized_flux(tm, Flow()), 1e-15);
+  EXPECT_NEAR(replay.final_normalized_flux.value.value(), FAS::normalized_flux(tm, Flow()).value.value(),
+              1e-15);
 }
 
 TEST(ReplaySession, TheSameSessionGivesTheSameNumbersBitForBit)
@@ -143,7 +144,8 @@ TEST(ReplaySession, TheSameSessionGivesTheSameNumbersBitForBit)
     const auto &a = first.iterations[i], &b = second.iterations[i];
     EXPECT_EQ(a.line, b.line);
     EXPECT_EQ(a.moves_before, b.moves_before);
-    EXPECT_EQ(a.report.normalized_flux, b.report.normalized_flux) << "iteration " << i + 1;
+    EXPECT_EQ(a.report.normalized_flux.value.value(), b.report.normalized_flux.value.value())
+        << "iteration " << i + 1;
     EXPECT_EQ(a.report.max_rotation_angle, b.report.max_rotation_angle) << "iteration " << i + 1;
     EXPECT_EQ(a.report.max_vertex_step, b.report.max_vertex_step) << "iteration " << i + 1;
   }
@@ -152,8 +154,9 @@ TEST(ReplaySession, TheSameSessionGivesTheSameNumbersBitForBit)
   EXPECT_EQ(first.growths[0].number_of_new_faces, second.growths[0].number_of_new_faces);
   EXPECT_EQ(first.growths[0].added_area, second.growths[0].added_area);
   EXPECT_EQ(first_points, second_points);
-  EXPECT_EQ(first.final_normalized_flux, second.final_normalized_flux);
-  EXPECT_LT(first.final_normalized_flux, 0.01); // and the grown surface is a stream surface again
+  EXPECT_EQ(first.final_normalized_flux.value.value(), second.final_normalized_flux.value.value());
+  EXPECT_LT(first.final_normalized_flux.value.value(),
+            0.01); // and the grown surface is a stream surface again
 }
 
 TEST(ReplaySession, ARefusedOperationNamesItsSessionLine)

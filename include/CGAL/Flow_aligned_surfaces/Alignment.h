@@ -7,6 +7,8 @@
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_ALIGNMENT_H
 #define CGAL_FLOW_ALIGNED_SURFACES_ALIGNMENT_H
 
+#include <CGAL/Flow_aligned_surfaces/Normalized_flux.h>
+
 #include <cstddef>
 
 namespace CGAL {
@@ -21,10 +23,14 @@ enum class Alignment {
 
 /// \ingroup PkgFlowAlignedSurfacesRef
 /// What one iteration of `Flow_aligned_deformation` did.  The flux is that of the surface the
-/// iteration started from (it is measured from the samples the iteration takes anyway).
+/// iteration started from (it is measured from the samples the iteration takes anyway), with the
+/// share of the area where the flow was sampled; the faces without a sample are also counted by
+/// kind.
 struct Iteration_report {
   std::size_t iteration = 0;     ///< 1 for the first iteration since construction
-  double normalized_flux = 0;    ///< f_n of the surface before the iteration (see `normalized_flux()`)
+  /// f_n of the surface before the iteration and its sampled area fraction (see `normalized_flux()`);
+  /// no value when no face had a usable sample
+  Normalized_flux normalized_flux;
   double max_rotation_angle = 0; ///< the largest alignment rotation requested, before clamping to η (radians)
   double max_vertex_step = 0;    ///< the largest vertex displacement, relative to the bounding-box diagonal
   std::size_t number_of_folds = 0;           ///< interior edges whose dihedral angle exceeded θmax
@@ -42,7 +48,7 @@ struct Iteration_report {
 struct Alignment_report {
   std::size_t number_of_iterations = 0; ///< iterations performed
   bool converged = false;               ///< whether the last iteration met a stopping rule
-  double normalized_flux = 0;           ///< f_n of the final surface
+  Normalized_flux normalized_flux;      ///< f_n of the final surface and its sampled area fraction
   double max_rotation_angle = 0;        ///< the largest rotation requested by the last iteration (radians)
   double factor_ms = 0;                 ///< FACTOR: time spent in factorizations (ms)
 };

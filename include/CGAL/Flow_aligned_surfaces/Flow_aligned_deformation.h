@@ -302,7 +302,7 @@ public:
     report.number_of_outside_samples = face_pass.outside;
     report.number_of_invalid_samples = face_pass.invalid;
     report.number_of_zero_samples = face_pass.zero;
-    report.normalized_flux = face_pass.area > 0 ? face_pass.flux / face_pass.area : 0;
+    report.normalized_flux = face_pass.flux.result();
     report.max_rotation_angle = face_pass.largest_requested.radians();
 
     // Fold correction: open every crease sharper than theta_max by delta/2 on each side.
@@ -674,8 +674,9 @@ public:
   {
     return m_last_report;
   }
-  /// The normalized flux of the current surface (one more sampling of the field).
-  double current_normalized_flux() const
+  /// The normalized flux of the current surface and its sampled area fraction (one more sampling
+  /// of the field); no value when no face of the surface has a usable sample.
+  Normalized_flux current_normalized_flux() const
   {
     return internal::normalized_flux(internal::read_positions(m_vertices, m_vpm), m_arrays.face_vertices,
                                      m_field, m_gt);
@@ -711,13 +712,12 @@ private:
 
   // What the pass over the faces accumulates besides the per-face transforms.
   struct Face_pass {
-    double flux = 0, area = 0;
+    internal::Normalized_flux_sum flux;
     Rotation_angle largest_requested;
     std::size_t outside = 0, invalid = 0, zero = 0;
     void join(const Face_pass& other)
     {
-      flux += other.flux;
-      area += other.area;
+      flux.join(other.flux);
       if (other.largest_requested.key() > largest_requested.key())
         largest_requested = other.largest_requested;
       outside += other.outside;
@@ -749,6 +749,8 @@ private:
       const Eigen::Vector3d centroid = (a + b + c) / 3;
       const internal::Flow_sample sample =
           internal::sample_flow(m_field, construct_point(centroid.x(), centroid.y(), centroid.z()));
+      const double area = 0.5 * twice_area;
+      pass.flux.add(area, internal::face_flux(normal, sample));
       switch (sample.kind) {
       case internal::Sample_kind::OUTSIDE:
         ++pass.outside;
@@ -760,9 +762,6 @@ private:
         ++pass.zero;
         break;
       case internal::Sample_kind::VALID: {
-        const double area = 0.5 * twice_area;
-        pass.flux += area * std::abs(normal.dot(sample.direction));
-        pass.area += area;
         Rotation_angle requested;
         t = alignment_rotation(normal, sample.direction, requested);
         if (requested.key() > pass.largest_requested.key())
@@ -771,7 +770,7 @@ private:
       }
       }
       if (m_area_correction)
-        t *= std::sqrt(face.area / (0.5 * twice_area));
+        t *= std::sqrt(face.area / area);
     }
   }
 

@@ -286,10 +286,11 @@ value type
 \param field the flow field
 \param r_map the \f$ r \f$ of `parametrize_tangential()` (unnormalized for LIC)
 \param mask_map receives \f$ b \in [0, 1] \f$ for every face
-\param np the same named parameters as `normalized_flux()`
+\param np the same named parameters as `compute_face_alignment_angles()` (with
+`min_relative_speed`, the slow faces are masked too)
 
-\throws std::invalid_argument if `tm` is empty or not a valid manifold triangle mesh;
-`mask_map` is then untouched.
+\throws std::invalid_argument if `tm` is empty or not a valid manifold triangle mesh, or if
+`min_relative_speed` is not in \f$ [0, 1] \f$; `mask_map` is then untouched.
 \sa `compute_face_alignment_angles()`, `compute_flow_texture_coordinates()`, `make_noise_texture()`
 */
 template <class TriangleMesh, class FlowField, class RMap, class MaskMap,
@@ -303,10 +304,9 @@ void compute_flow_texture_mask(const TriangleMesh& tm, const FlowField& field, R
       num_faces(tm));
   for (auto f : faces(tm))
     masks[get(fim, f)] = {f, 1.0};
-  internal::visit_face_alignment_angles(
-      tm, field, r_map, np, "compute_flow_texture_mask", [&](auto f, double, double degrees) {
-        masks[get(fim, f)].second = flow_texture_blending(degrees < 0 ? -1.0 : degrees * CGAL_PI / 180);
-      });
+  for (const auto& face : internal::face_alignment_angles(tm, field, r_map, np, "compute_flow_texture_mask"))
+    masks[get(fim, face.face)].second =
+        flow_texture_blending(face.angle < 0 ? -1.0 : face.angle * CGAL_PI / 180);
   for (const auto& m : masks)
     put(mask_map, m.first, m.second);
 }

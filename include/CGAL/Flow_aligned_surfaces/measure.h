@@ -5,15 +5,19 @@
 //
 //   normalized_flux = sum_j A_j |n_j . v_j| / |v_j|  /  sum_j A_j
 //
-// over the faces j whose centroid sample v_j exists, is finite and non-zero: the
-// paper's f_n (Section 7) with the per-face flux in absolute value, so it does
+// over the faces j whose centroid sample v_j exists, is finite and non-zero (the sampled
+// faces): the paper's f_n (Section 7) with the per-face flux in absolute value, so it does
 // not depend on the orientation.  1 = exactly orthogonal, 0 = exactly tangential.
 //
 //   gamma_j = angle(v_j, grad r_j) in [0, 180] degrees,   mean = sum_j A_j gamma_j / sum_j A_j,
 //   standard deviation = sqrt(sum_j A_j (gamma_j - mean)^2 / sum_j A_j)
 //
-// for a vertex field r (a tangential parametrization), over the faces where both v_j and the
-// constant gradient of r on the face are usable: the paper's (gamma bar, sigma_gamma) (Section 7).
+// for a vertex field r (a tangential parametrization), over the sampled faces where the
+// constant gradient of r on the face is usable and, optionally, the flow is not slow
+// (|v_j| >= min_relative_speed * max_k |v_k|): the paper's (gamma bar, sigma_gamma) (Section 7).
+//
+// Every measure also gives the sampled area fraction (sampled area / area); with no sampled
+// face there is no value.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_MEASURE_H
 #define CGAL_FLOW_ALIGNED_SURFACES_MEASURE_H
@@ -23,6 +27,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
+#include <CGAL/Flow_aligned_surfaces/Normalized_flux.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -31,7 +36,9 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -61,14 +68,16 @@ void visit_face_samples(const Positions& positions,
   }
 }
 
-/// |n . v| / |v| for a usable sample, -1 otherwise.
-inline double face_flux(const Eigen::Vector3d& unit_normal, const Flow_sample& s)
+/// |n . v| / |v| for a usable sample, nothing otherwise.
+inline std::optional<double> face_flux(const Eigen::Vector3d& unit_normal, const Flow_sample& s)
 {
-  return s.kind == Sample_kind::VALID ? std::abs(unit_normal.dot(s.direction)) : -1.0;
+  if (s.kind != Sample_kind::VALID)
+    return std::nullopt;
+  return std::abs(unit_normal.dot(s.direction));
 }
 
 /// Calls `visit(j, area, flux)` for every non-degenerate face j of `positions`, with
-/// flux = |n_j . v_j| / |v_j| when the centroid sample is usable and -1 otherwise.
+/// flux = |n_j . v_j| / |v_j| when the centroid sample is usable and empty otherwise.
 template <class FlowField, class GeomTraits, class Visit>
 void visit_face_fluxes(const Positions& positions,
                        const std::vector<std::array<Eigen::Index, 3>>& face_vertices, const FlowField& field,
@@ -82,19 +91,15 @@ void visit_face_fluxes(const Positions& positions,
 
 /// The normalized flux of the faces `face_vertices` over `positions`.
 template <class FlowField, class GeomTraits>
-double normalized_flux(const Positions& positions,
-                       const std::vector<std::array<Eigen::Index, 3>>& face_vertices, const FlowField& field,
-                       const GeomTraits& gt)
+Normalized_flux normalized_flux(const Positions& positions,
+                                const std::vector<std::array<Eigen::Index, 3>>& face_vertices,
+                                const FlowField& field, const GeomTraits& gt)
 {
-  double flux = 0, area = 0;
-  visit_face_fluxes(positions, face_vertices, field, gt,
-                    [&](std::size_t, double face_area, double face_flux) {
-                      if (face_flux < 0)
-                        return;
-                      flux += face_area * face_flux;
-                      area += face_area;
-                    });
-  return area > 0 ? flux / area : 0;
+  Normalized_flux_sum sum;
+  visit_face_fluxes(
+      positions, face_vertices, field, gt,
+      [&](std::size_t, double area, const std::optional<double>& flux) { sum.add(area, flux); });
+  return sum.result();
 }
 
 /// Calls `visit(f, corners, rows, positions, unit_normal, area, sample)` for every non-degenerate
@@ -144,11 +149,15 @@ void visit_mesh_face_fluxes(const TriangleMesh& tm, const FlowField& field, cons
 
 \brief Computes the normalized flux of `field` through `tm`:
 \f$ f_n = \sum_j A_j |n_j^T v_j| / \|v_j\| \,/\, \sum_j A_j \f$ over the faces whose centroid
-sample \f$ v_j \f$ exists, is finite and is not zero.
+sample \f$ v_j \f$ exists, is finite and is not zero (the <em>sampled</em> faces), and the
+share of the area of `tm` they cover.
 
 It is the paper's \f$ f_n \f$ with the flux of each face taken in absolute value, so that it
 does not depend on the orientation of the faces: 1 for a surface exactly orthogonal to the
-flow, 0 for a stream surface.
+flow, 0 for a stream surface.  It speaks only for the sampled faces: read it together with
+`Normalized_flux::sampled_area_fraction`.  A surface of which no face is sampled (it has left
+the domain, or the flow vanishes on it) has no value, never 0, which would read as "perfectly
+tangential".
 
 \tparam TriangleMesh a model of `FaceListGraph`
 \tparam FlowField a model of `FlowField_3`
@@ -171,23 +180,20 @@ flow, 0 for a stream surface.
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns \f$ f_n \in [0, 1] \f$, or 0 when no face has a usable sample.
+\returns \f$ f_n \in [0, 1] \f$ in `value`, empty when no face is sampled, and the sampled
+area fraction.
 \throws std::invalid_argument if `tm` is empty or not a valid manifold triangle mesh.
-\sa `Flow_aligned_deformation`, `align_to_flow()`
+\sa `Normalized_flux`, `Flow_aligned_deformation`, `align_to_flow()`
 */
 template <class TriangleMesh, class FlowField, class NamedParameters = parameters::Default_named_parameters>
-double normalized_flux(const TriangleMesh& tm, const FlowField& field,
-                       const NamedParameters& np = CGAL::parameters::default_values())
+Normalized_flux normalized_flux(const TriangleMesh& tm, const FlowField& field,
+                                const NamedParameters& np = CGAL::parameters::default_values())
 {
-  double flux = 0, area = 0;
-  internal::visit_mesh_face_fluxes(tm, field, np, "normalized_flux",
-                                   [&](auto, double face_area, double face_flux) {
-                                     if (face_flux < 0)
-                                       return;
-                                     flux += face_area * face_flux;
-                                     area += face_area;
-                                   });
-  return area > 0 ? flux / area : 0;
+  internal::Normalized_flux_sum sum;
+  internal::visit_mesh_face_fluxes(
+      tm, field, np, "normalized_flux",
+      [&](auto, double area, const std::optional<double>& flux) { sum.add(area, flux); });
+  return sum.result();
 }
 
 /*!
@@ -219,19 +225,38 @@ void compute_face_normalized_flux(const TriangleMesh& tm, const FlowField& field
   internal::check_triangle_mesh(tm, "compute_face_normalized_flux: tm");
   for (auto f : faces(tm))
     put(face_flux_map, f, -1.0);
-  internal::visit_mesh_face_fluxes(tm, field, np, "compute_face_normalized_flux",
-                                   [&](auto f, double, double flux) { put(face_flux_map, f, flux); });
+  internal::visit_mesh_face_fluxes(
+      tm, field, np, "compute_face_normalized_flux",
+      [&](auto f, double, const std::optional<double>& flux) { put(face_flux_map, f, flux ? *flux : -1.0); });
 }
 
 namespace internal {
 
-/// Calls `visit(f, area, angle)` for every non-degenerate face `f` of `tm`, with the angle in
-/// degrees between the centroid sample and the gradient of `r_map` on `f`, or -1 when the
-/// sample is not usable or the gradient is zero or not finite.
-template <class TriangleMesh, class FlowField, class RMap, class NamedParameters, class Visit>
-void visit_face_alignment_angles(const TriangleMesh& tm, const FlowField& field, RMap r_map,
-                                 const NamedParameters& np, const std::string& caller, const Visit& visit)
+/// The angle of one face for `alignment_angle_statistics()`.
+template <class FaceDescriptor>
+struct Face_alignment_angle {
+  FaceDescriptor face;
+  double area = 0;
+  bool sampled = false; ///< the centroid sample is usable
+  bool slow = false;    ///< sampled, but slower than `min_relative_speed` times the fastest face
+  double angle = -1;    ///< degrees; -1 when not sampled, slow, or the gradient of r is unusable
+};
+
+/// The alignment angle of every non-degenerate face `f` of `tm` (the angle in degrees between
+/// the centroid sample and the gradient of `r_map` on `f`), with the faces slower than the
+/// named parameter `min_relative_speed` times the fastest sampled face marked slow.
+template <class TriangleMesh, class FlowField, class RMap, class NamedParameters>
+std::vector<Face_alignment_angle<typename boost::graph_traits<TriangleMesh>::face_descriptor>>
+face_alignment_angles(const TriangleMesh& tm, const FlowField& field, RMap r_map, const NamedParameters& np,
+                      const std::string& caller)
 {
+  const double min_relative_speed =
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::min_relative_speed_t()), 0.0);
+  if (!(min_relative_speed >= 0 && min_relative_speed <= 1))
+    throw std::invalid_argument(caller + ": min_relative_speed = " + std::to_string(min_relative_speed) +
+                                " is not in [0, 1]");
+  std::vector<Face_alignment_angle<typename boost::graph_traits<TriangleMesh>::face_descriptor>> result;
+  std::vector<double> speeds;
   visit_mesh_face_samples(
       tm, field, np, caller,
       [&](auto f, const auto& corners, const auto& rows, const Positions& positions, const Eigen::Vector3d&,
@@ -243,22 +268,40 @@ void visit_face_alignment_angles(const TriangleMesh& tm, const FlowField& field,
                                 CGAL::to_double(get(r_map, corners[1])),
                                 CGAL::to_double(get(r_map, corners[2])));
         const Eigen::Vector3d gradient = t ? Eigen::Vector3d(t->gradients * r) : Eigen::Vector3d::Zero();
-        const bool usable =
-            s.kind == Sample_kind::VALID && gradient.allFinite() && gradient.squaredNorm() > 0;
-        visit(f, area, usable ? angle_between(s.direction, gradient) * 180 / CGAL_PI : -1.0);
+        const bool sampled = s.kind == Sample_kind::VALID;
+        const bool usable = sampled && gradient.allFinite() && gradient.squaredNorm() > 0;
+        result.push_back(
+            {f, area, sampled, false, usable ? angle_between(s.direction, gradient) * 180 / CGAL_PI : -1.0});
+        speeds.push_back(sampled ? s.velocity.stableNorm() : 0.0);
       });
+  if (min_relative_speed > 0 && !speeds.empty()) {
+    const double threshold = min_relative_speed * *std::max_element(speeds.begin(), speeds.end());
+    for (std::size_t j = 0; j < result.size(); ++j)
+      if (result[j].sampled && speeds[j] < threshold) {
+        result[j].slow = true;
+        result[j].angle = -1;
+      }
+  }
+  return result;
 }
 
 } // namespace internal
 
 /// \ingroup PkgFlowAlignedSurfacesRef
 /// The area-weighted statistics of the angle between a flow and the gradient of a vertex field,
-/// the result of `alignment_angle_statistics()`.
+/// the result of `alignment_angle_statistics()`, with the shares of the area that were sampled
+/// and that were left out as slow.
 struct Alignment_angle_statistics {
   double mean = 0;                 ///< \f$ \bar\gamma \f$, degrees
   double standard_deviation = 0;   ///< \f$ \sigma_\gamma \f$, degrees
   double area = 0;                 ///< the total area of the faces measured
   std::size_t number_of_faces = 0; ///< the number of faces measured
+  /// the area of the faces where the flow has a usable sample divided by the area of the
+  /// surface, as `Normalized_flux::sampled_area_fraction`
+  double sampled_area_fraction = 0;
+  /// the area of the sampled faces left out because the flow there is slower than
+  /// `min_relative_speed` times the fastest face, divided by the area of the surface
+  double slow_area_fraction = 0;
 };
 
 /*!
@@ -272,7 +315,22 @@ piecewise linear vertex field `r_map` on it: the paper's \f$ (\bar\gamma, \sigma
 which measures how well the \f$ r \f$ of a tangential parametrization follows the flow.
 
 Faces whose sample is outside the domain, not finite or zero, or where the gradient of
-\f$ r \f$ is zero or not finite, are left out.
+\f$ r \f$ is zero or not finite, are left out; so are, with `min_relative_speed` \f$ s > 0 \f$,
+the <em>slow</em> faces, where \f$ \|v_j\| < s \max_k \|v_k\| \f$ (the maximum over the sampled
+faces of `tm`).  The result gives the shares of the area that were sampled and that were left
+out as slow.
+
+<b>What the paper's figures are.</b>  The figures of Section 7 (DELTA WING 1.0 and 0.9, STEP 2.2
+and 2.4, TURBINE 2.7 and 5.7 degrees) measure the \f$ r \f$ of its LIC-like textures, the
+<em>unnormalized</em> tangential parametrization \f$ a_j = v_j \f$ of Section 6
+(`parametrize_tangential()` with `FAS::parameters::normalized(false)`), over the whole surface:
+the paper excludes no slow region and names its larger deviations "outlier regions, which are
+masked by blending".  The default \f$ s = 0 \f$ follows it.  The unnormalized energy weighs each
+face by \f$ \|v_j\|^2 \f$, so where the flow almost stops (near a recirculation bubble or a wall)
+\f$ \nabla r \f$ is barely constrained and its angles there can dominate \f$ \sigma_\gamma \f$
+although they cover little area: `min_relative_speed` (e.g. 0.02) leaves them out and
+`slow_area_fraction` says how much was left out.  The paper does not say whether its averages
+are area-weighted; these are.
 
 \tparam TriangleMesh a model of `FaceListGraph`
 \tparam FlowField a model of `FlowField_3`
@@ -283,11 +341,24 @@ convertible to `double` as value type
 \param tm a triangle mesh
 \param field the flow field
 \param r_map the vertex field, e.g. the `r` of `parametrize_tangential()`
-\param np the same named parameters as `normalized_flux()`
+\param np an optional sequence of named parameters among the ones listed below
 
-\returns the statistics and the number and area of the faces measured.
-\throws std::invalid_argument if `tm` is empty or not a valid manifold triangle mesh, or if no
-face can be measured.
+\cgalNamedParamsBegin
+  \cgalParamNBegin{min_relative_speed}
+    \cgalParamDescription{`FAS::parameters::min_relative_speed()`: faces where the speed of the
+      flow is below this fraction of the largest speed sampled on `tm` are left out}
+    \cgalParamType{`double` in \f$ [0, 1] \f$}
+    \cgalParamDefault{`0` (every sampled face is measured, as in the paper)}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map, geom_traits}
+    \cgalParamDescription{as in `normalized_flux()`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the statistics, the number and area of the faces measured, and the sampled and slow
+area fractions.
+\throws std::invalid_argument if `tm` is empty or not a valid manifold triangle mesh, if
+`min_relative_speed` is not in \f$ [0, 1] \f$, or if no face can be measured (there is no value).
 \sa `parametrize_tangential()`, `compute_face_alignment_angles()`
 */
 template <class TriangleMesh, class FlowField, class RMap,
@@ -297,27 +368,32 @@ alignment_angle_statistics(const TriangleMesh& tm, const FlowField& field, RMap 
                            const NamedParameters& np = CGAL::parameters::default_values())
 {
   const std::string caller = "alignment_angle_statistics";
-  std::vector<std::array<double, 2>> measured; // area, angle
-  internal::visit_face_alignment_angles(tm, field, r_map, np, caller, [&](auto, double area, double angle) {
-    if (angle >= 0)
-      measured.push_back({area, angle});
-  });
-  if (measured.empty())
-    throw std::invalid_argument(caller +
-                                ": no face of tm has both a usable sample of the field and a non-zero, "
-                                "finite gradient of r_map");
+  const auto faces = internal::face_alignment_angles(tm, field, r_map, np, caller);
   Alignment_angle_statistics statistics;
-  double weighted = 0;
-  for (const auto& m : measured) {
-    statistics.area += m[0];
-    weighted += m[0] * m[1];
+  double total_area = 0, sampled_area = 0, slow_area = 0, weighted = 0;
+  for (const auto& f : faces) {
+    total_area += f.area;
+    sampled_area += f.sampled ? f.area : 0;
+    slow_area += f.slow ? f.area : 0;
+    if (f.angle < 0)
+      continue;
+    statistics.area += f.area;
+    weighted += f.area * f.angle;
+    ++statistics.number_of_faces;
   }
+  if (statistics.number_of_faces == 0)
+    throw std::invalid_argument(
+        caller + ": no face of tm has a usable sample of the field, a non-zero, finite gradient of r_map" +
+        (slow_area > 0 ? " and a speed above min_relative_speed times the largest one" : "") +
+        " (sampled area fraction " + std::to_string(total_area > 0 ? sampled_area / total_area : 0) + ")");
+  statistics.sampled_area_fraction = sampled_area / total_area;
+  statistics.slow_area_fraction = slow_area / total_area;
   statistics.mean = weighted / statistics.area;
   double variance = 0;
-  for (const auto& m : measured)
-    variance += m[0] * (m[1] - statistics.mean) * (m[1] - statistics.mean);
+  for (const auto& f : faces)
+    if (f.angle >= 0)
+      variance += f.area * (f.angle - statistics.mean) * (f.angle - statistics.mean);
   statistics.standard_deviation = std::sqrt(variance / statistics.area);
-  statistics.number_of_faces = measured.size();
   return statistics;
 }
 
@@ -326,7 +402,8 @@ alignment_angle_statistics(const TriangleMesh& tm, const FlowField& field, RMap 
 
 \brief Writes the angle \f$ \gamma_j \f$ (degrees) of `alignment_angle_statistics()` of every
 face of `tm` into `face_angle_map`, and `-1` where it is not defined (the sample is not usable,
-the gradient of `r_map` is zero or not finite, or the face is degenerate).
+the gradient of `r_map` is zero or not finite, or the face is degenerate) or the face is left
+out as slow by `min_relative_speed`.
 
 \tparam FaceAngleMap a model of `WritablePropertyMap` with the faces as key type and `double`
 as value type
@@ -334,7 +411,8 @@ as value type
 \param face_angle_map receives the angle of each face
 \param tm, field, r_map, np as in `alignment_angle_statistics()`
 
-\throws std::invalid_argument if `tm` is empty or not a valid manifold triangle mesh.
+\throws std::invalid_argument if `tm` is empty or not a valid manifold triangle mesh, or if
+`min_relative_speed` is not in \f$ [0, 1] \f$.
 \sa `alignment_angle_statistics()`
 */
 template <class TriangleMesh, class FlowField, class RMap, class FaceAngleMap,
@@ -346,8 +424,8 @@ void compute_face_alignment_angles(const TriangleMesh& tm, const FlowField& fiel
   internal::check_triangle_mesh(tm, "compute_face_alignment_angles: tm");
   for (auto f : faces(tm))
     put(face_angle_map, f, -1.0);
-  internal::visit_face_alignment_angles(tm, field, r_map, np, "compute_face_alignment_angles",
-                                        [&](auto f, double, double angle) { put(face_angle_map, f, angle); });
+  for (const auto& f : internal::face_alignment_angles(tm, field, r_map, np, "compute_face_alignment_angles"))
+    put(face_angle_map, f.face, f.angle);
 }
 
 } // namespace Flow_aligned_surfaces

@@ -46,6 +46,7 @@ CGAL_FAS_DECLARE_TAG(gradient_direction)
 CGAL_FAS_DECLARE_TAG(intrinsic_delaunay)
 CGAL_FAS_DECLARE_TAG(constraint_vertex)
 CGAL_FAS_DECLARE_TAG(resampling_step)
+CGAL_FAS_DECLARE_TAG(min_relative_speed)
 // integrate_streamline(), integrate_pathline()
 CGAL_FAS_DECLARE_TAG(relative_tolerance)
 CGAL_FAS_DECLARE_TAG(absolute_tolerance)
@@ -147,6 +148,11 @@ CGAL_FAS_NAMED_PARAMETER(intrinsic_delaunay, bool)
 /// The arc length between consecutive points of a polyline resampled by `project_polyline()`.
 /// Default: the mean edge length of the mesh.
 CGAL_FAS_NAMED_PARAMETER(resampling_step, double)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// `alignment_angle_statistics()`, `compute_face_alignment_angles()`: faces where the speed of
+/// the flow is below this fraction of the largest speed sampled on the surface are left out
+/// (their area is reported).  Default: `0`, every face, as the paper measured.
+CGAL_FAS_NAMED_PARAMETER(min_relative_speed, double)
 
 // Stream lines and path lines (integrate_streamline(), integrate_pathline()).
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters

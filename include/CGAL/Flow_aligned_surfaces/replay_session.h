@@ -39,7 +39,7 @@ struct Session_iteration {
 struct Session_replay_report {
   std::vector<Session_iteration> iterations; ///< every iteration, in order
   std::vector<Growth_report> growths;        ///< every `grow`, in order
-  double final_normalized_flux = 0;          ///< f_n of the surface after the last operation
+  Normalized_flux final_normalized_flux;     ///< f_n of the surface after the last operation
 };
 
 /*!

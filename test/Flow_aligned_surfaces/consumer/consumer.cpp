@@ -26,7 +26,7 @@ int main(int argc, char** argv)
     CGAL::Surface_mesh<Point> tm;
     FAS::make_planar_patch(tm, Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 1.0, 500);
     const FAS::Point_source_flow<K> source(Point(0, 0, 0), 1.0);
-    const double before = FAS::normalized_flux(tm, source);
+    const double before = FAS::normalized_flux(tm, source).value.value();
     const FAS::Alignment_report report = FAS::align_to_flow(tm, source, FAS::Alignment::ORTHOGONAL);
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
     std::cout << "sparse solver: CHOLMOD\n";
@@ -54,9 +54,10 @@ int main(int argc, char** argv)
 #endif
     std::cout << "faces: " << tm.number_of_faces() << "\n"
               << "normalized flux before: " << before << "\n"
-              << "normalized flux after: " << report.normalized_flux << " (" << report.number_of_iterations
+              << "normalized flux after: " << report.normalized_flux.value.value() << " ("
+              << report.number_of_iterations
               << " iterations, converged: " << (report.converged ? "yes" : "no") << ")\n";
-    if (!report.converged || !(report.normalized_flux >= 0.995) || !(before < 0.99)) {
+    if (!report.converged || !(report.normalized_flux.value.value() >= 0.995) || !(before < 0.99)) {
       std::cerr << "consumer: the alignment did not reach the expected flux (>= 0.995 from < 0.99)\n";
       return 1;
     }
