@@ -575,8 +575,9 @@ TEST(IntegrateStreamSurface, BothDirectionsGiveOneSurfaceJoinedAtTheSeed)
   for (Vertex v : both.tm.vertices())
     if (both.t[v] == 0) {
       ++seed_vertices;
-      if (both.u[v] > 0 && both.u[v] < both.report.seed_length) // the two ends are on the border
+      if (both.u[v] > 0 && both.u[v] < both.report.seed_length) { // the two ends are on the border
         ASSERT_FALSE(both.tm.is_border(v)) << "seed vertex on the border: the halves are not joined";
+      }
     }
   EXPECT_EQ(seed_vertices, std::size_t(std::ceil(both.report.seed_length / 0.02)) + 1);
   EXPECT_EQ(both.tm.number_of_faces(), forward.tm.number_of_faces() + backward.tm.number_of_faces());
