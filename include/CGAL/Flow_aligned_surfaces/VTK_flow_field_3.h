@@ -160,6 +160,10 @@ public:
   std::optional<Vector_3> operator()(const Point_3& p) const
   {
     double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    // Written so that NaN coordinates fail too (the locator would bin them).
+    if (!(x[0] >= m_bbox.xmin() && x[0] <= m_bbox.xmax() && x[1] >= m_bbox.ymin() && x[1] <= m_bbox.ymax() &&
+          x[2] >= m_bbox.zmin() && x[2] <= m_bbox.zmax()))
+      return std::nullopt;
     Scratch& s = scratch(m_max_cell_size);
     double pcoords[3];
     const vtkIdType c = m_locator->FindCell(x, 0., s.cell, pcoords, s.weights.data());
