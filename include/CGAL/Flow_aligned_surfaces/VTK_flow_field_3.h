@@ -126,7 +126,7 @@ public:
   ///         component.
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit VTK_flow_field_3(vtkDataSet* data_set,
-                            const NamedParameters& np = parameters::default_values())
+                            const NamedParameters& np = CGAL::parameters::default_values())
   {
     if (data_set == nullptr)
       fail("the data set is null");

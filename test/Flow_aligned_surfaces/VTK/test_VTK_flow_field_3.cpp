@@ -32,11 +32,18 @@
 
 #include <gtest/gtest.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <fstream>
 #include <limits>
+#include <mutex>
+#include <set>
+#include <thread>
 #include <optional>
 #include <string>
 #include <vector>
@@ -236,6 +243,53 @@ TEST(VTKFlowField3, LinearFieldOnTetrahedraIsExact)
   EXPECT_FALSE(masked(sheared(0.05, 0.05, 0.05)));
   EXPECT_TRUE(masked(sheared(0.95, 0.95, 0.95)));
   EXPECT_TRUE(field(sheared(0.05, 0.05, 0.05)));
+}
+
+// Sampled from several threads at once (as use_parallelism(true) does), the field answers as it
+// does on one thread: each thread has its own cell and weights for VTK's FindCell().
+TEST(VTKFlowField3, ConcurrentSamplesEqualSerialOnes)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> mesh = tetrahedra(&sheared);
+  vtkNew<vtkDoubleArray> velocity;
+  velocity->SetName("U");
+  velocity->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i) {
+    double x[3];
+    mesh->GetPoint(i, x);
+    const Vector v = linear_velocity(Point(x[0], x[1], x[2]));
+    velocity->InsertNextTuple3(v.x(), v.y(), v.z());
+  }
+  mesh->GetPointData()->AddArray(velocity);
+  const Field field(mesh.Get());
+  CGAL::Random random(13);
+  std::vector<Point> points;
+  const CGAL::Bbox_3 box = field.bbox();
+  for (int i = 0; i < 200000; ++i)
+    points.push_back(random_point(random, box)); // inside and outside the sheared cube
+  std::vector<std::optional<Vector>> serial(points.size()), concurrent(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    serial[i] = field(points[i]);
+  std::set<std::thread::id> threads;
+  std::mutex mutex;
+  tbb::task_arena arena(4);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 256), [&](const auto& range) {
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        threads.insert(std::this_thread::get_id());
+      }
+      for (std::size_t i = range.begin(); i != range.end(); ++i)
+        concurrent[i] = field(points[i]);
+    });
+  });
+  EXPECT_GE(threads.size(), 2u);
+  std::size_t inside = 0, differ = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    inside += serial[i] ? 1 : 0;
+    differ += serial[i] != concurrent[i] ? 1 : 0;
+  }
+  EXPECT_GT(inside, points.size() / 4);
+  EXPECT_EQ(differ, 0u);
 }
 
 TEST(VTKFlowField3, CellDataGivesTheCellValue)
