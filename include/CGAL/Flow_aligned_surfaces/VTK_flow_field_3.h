@@ -18,6 +18,7 @@
 #include <CGAL/Flow_aligned_surfaces/IO/internal/reader_support.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
+#include <vtkAbstractCellLocator.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
@@ -166,7 +167,10 @@ public:
       return std::nullopt;
     Scratch& s = scratch(m_max_cell_size);
     double pcoords[3];
-    const vtkIdType c = m_locator->FindCell(x, 0., s.cell, pcoords, s.weights.data());
+    // Through the base class: the overload without `subId` is declared there in VTK 9.1 and
+    // 9.2 (ParaView 5.11's), where a subclass may hide it.
+    vtkAbstractCellLocator* const locator = m_locator;
+    const vtkIdType c = locator->FindCell(x, 0., s.cell, pcoords, s.weights.data());
     if (c < 0)
       return std::nullopt;
     double r[3] = {0., 0., 0.};
