@@ -57,7 +57,7 @@ several threads at once (`parameters::use_parallelism(true)`).
 \cgalHasModels{`CGAL::Flow_aligned_surfaces::Regular_grid_flow_field_3<GeomTraits>`}
 \cgalHasModels{`CGAL::Flow_aligned_surfaces::Rectilinear_grid_flow_field_3<GeomTraits>`}
 \cgalHasModels{`CGAL::Flow_aligned_surfaces::Unstructured_flow_field_3<GeomTraits>`}
-alHasModels{`CGAL::Flow_aligned_surfaces::VTK_flow_field_3<GeomTraits>` (needs VTK)}
+\cgalHasModels{`CGAL::Flow_aligned_surfaces::VTK_flow_field_3<GeomTraits>` (needs VTK)}
 \cgalHasModels{`CGAL::Flow_aligned_surfaces::Sampled_flow_field_3<GeomTraits>`}
 \cgalHasModelsEnd
 
