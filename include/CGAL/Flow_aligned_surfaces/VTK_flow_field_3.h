@@ -55,7 +55,8 @@ namespace Flow_aligned_surfaces {
 /// - for a *cell* array, the value of the containing cell (constant per cell).
 ///
 /// There is no sample (`std::nullopt`) where no cell contains the point, and where the mask says
-/// so.  The mask is an optional 1-component array (point or cell data, any numeric type),
+/// so.  The cells that hold a volume are the 3D ones: a data set of surfaces or lines (a slice, a
+/// `vtkPolyData`) is accepted but contains hardly any point, so it gives hardly any sample.  The mask is an optional 1-component array (point or cell data, any numeric type),
 /// nonzero = fluid, zero = solid: a cell mask removes the cells where it is zero; with a point
 /// mask, a point is outside when its interpolation gives a nonzero weight to a point where the
 /// mask is zero (the rule of `Regular_grid_flow_field_3`'s node mask).  By default, the array
