@@ -15,6 +15,7 @@
 #endif
 
 #include "expect_invalid_argument.h"
+#include "triangle_angles.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
@@ -70,19 +71,7 @@ Mesh rectangle(double width, double height, std::size_t faces)
   return tm;
 }
 
-double smallest_angle_degrees(const Mesh& tm, Mesh::Face_index f)
-{
-  std::vector<Point> p;
-  for (auto v : tm.vertices_around_face(tm.halfedge(f)))
-    p.push_back(tm.point(v));
-  double smallest = 180;
-  for (int i = 0; i < 3; ++i) {
-    const Vector a = p[(i + 1) % 3] - p[i], b = p[(i + 2) % 3] - p[i];
-    const double c = a * b / std::sqrt(a.squared_length() * b.squared_length());
-    smallest = (std::min)(smallest, std::acos(std::clamp(c, -1.0, 1.0)) * 180 / CGAL_PI);
-  }
-  return smallest;
-}
+using fas_test::smallest_angle_degrees;
 
 // Faces added after the first `old_faces` (Surface_mesh appends, and growing removes nothing).
 double smallest_new_angle(const Mesh& tm, std::size_t old_faces)

@@ -10,6 +10,7 @@
 // edges, and, after growing the deformation itself, iterations that reach the alignment again.
 
 #include "expect_invalid_argument.h"
+#include "triangle_angles.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
@@ -65,19 +66,7 @@ Mesh posed_patch(const Flow& flow, const Point& center, const Vector& normal, in
   return tm;
 }
 
-double smallest_angle_degrees(const Mesh& tm, Mesh::Face_index f)
-{
-  std::vector<Point> p;
-  for (auto v : tm.vertices_around_face(tm.halfedge(f)))
-    p.push_back(tm.point(v));
-  double smallest = 180;
-  for (int i = 0; i < 3; ++i) {
-    const Vector a = p[(i + 1) % 3] - p[i], b = p[(i + 2) % 3] - p[i];
-    const double c = a * b / std::sqrt(a.squared_length() * b.squared_length());
-    smallest = (std::min)(smallest, std::acos(std::clamp(c, -1.0, 1.0)) * 180 / CGAL_PI);
-  }
-  return smallest;
-}
+using fas_test::smallest_angle_degrees;
 
 // What is wrong with `tm` grown by `d` (the first `old_faces` faces and `old_vertices` vertices
 // are the old ones, `before` the old positions in vertex order); empty when all is right.
