@@ -204,7 +204,8 @@ Vector linear_velocity(const Point& p)
   return Vector(0.5 + 2 * p.x() - p.y() + 0.25 * p.z(), -1 + 0.5 * p.x() + 3 * p.z(), 2 - p.x() + p.y() - 0.75 * p.z());
 }
 
-TEST(VTKFlowField3, LinearFieldOnTetrahedraIsExact)
+// The tetrahedra of the sheared cube with linear_velocity() at their points, as the point array "U".
+vtkSmartPointer<vtkUnstructuredGrid> linear_field_on_tetrahedra()
 {
   vtkSmartPointer<vtkUnstructuredGrid> mesh = tetrahedra(&sheared);
   vtkNew<vtkDoubleArray> velocity;
@@ -217,6 +218,12 @@ TEST(VTKFlowField3, LinearFieldOnTetrahedraIsExact)
     velocity->InsertNextTuple3(v.x(), v.y(), v.z());
   }
   mesh->GetPointData()->AddArray(velocity);
+  return mesh;
+}
+
+TEST(VTKFlowField3, LinearFieldOnTetrahedraIsExact)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> mesh = linear_field_on_tetrahedra();
   const Field field(mesh.Get(), FAS::parameters::array_name("U"));
   CGAL::Random random(3);
   for (int i = 0; i < 3000; ++i) {
@@ -249,17 +256,7 @@ TEST(VTKFlowField3, LinearFieldOnTetrahedraIsExact)
 // does on one thread: each thread has its own cell and weights for VTK's FindCell().
 TEST(VTKFlowField3, ConcurrentSamplesEqualSerialOnes)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> mesh = tetrahedra(&sheared);
-  vtkNew<vtkDoubleArray> velocity;
-  velocity->SetName("U");
-  velocity->SetNumberOfComponents(3);
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i) {
-    double x[3];
-    mesh->GetPoint(i, x);
-    const Vector v = linear_velocity(Point(x[0], x[1], x[2]));
-    velocity->InsertNextTuple3(v.x(), v.y(), v.z());
-  }
-  mesh->GetPointData()->AddArray(velocity);
+  vtkSmartPointer<vtkUnstructuredGrid> mesh = linear_field_on_tetrahedra();
   const Field field(mesh.Get());
   CGAL::Random random(13);
   std::vector<Point> points;
