@@ -1,0 +1,227 @@
+// What the plugin's filters share: the velocity field of a VTK data set as a FlowField_3, and
+// the conversions between CGAL meshes or polylines and vtkPolyData.  Private to the plugin.
+#ifndef FAS_PARAVIEW_SUPPORT_H
+#define FAS_PARAVIEW_SUPPORT_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/VTK_flow_field_3.h>
+
+#include <vtkAlgorithm.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkMatrix3x3.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace fas_paraview {
+
+namespace FAS = CGAL::Flow_aligned_surfaces;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Vector = Kernel::Vector_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Polyline = std::vector<Point>;
+
+/// The velocity of a VTK data set as a `FlowField_3`: point data of an image is copied into a
+/// `Regular_grid_flow_field_3` (the same trilinear samples, 30-70 times faster than a cell
+/// locator; see benchmark/.../RESULTS.md), every other case samples the data set through
+/// `VTK_flow_field_3`.  Safe to call concurrently.
+class Velocity_field {
+public:
+  Velocity_field() = default;
+  Velocity_field(FAS::Regular_grid_flow_field_3<Kernel> grid) : m_field(std::move(grid)) {}
+  Velocity_field(FAS::VTK_flow_field_3<Kernel> cells) : m_field(std::move(cells)) {}
+
+  std::optional<Vector> operator()(const Point& p) const
+  {
+    return std::visit([&p](const auto& f) { return f(p); }, m_field);
+  }
+
+private:
+  std::variant<FAS::Regular_grid_flow_field_3<Kernel>, FAS::VTK_flow_field_3<Kernel>> m_field;
+};
+
+/// The name of the velocity array chosen in the filter's array selector, empty if none.
+inline std::string selected_array_name(vtkAlgorithm* filter)
+{
+  vtkInformation* info = filter->GetInputArrayInformation(0);
+  if (info == nullptr || !info->Has(vtkDataObject::FIELD_NAME()))
+    return std::string();
+  return info->Get(vtkDataObject::FIELD_NAME());
+}
+
+/// The velocity field of `data_set`'s array `array_name` (the first 3-component array when the
+/// name is empty).  \throws std::invalid_argument naming the data set and the array.
+inline Velocity_field make_velocity_field(vtkDataSet* data_set, const std::string& array_name)
+{
+  if (data_set == nullptr)
+    throw std::invalid_argument("the input is not a data set (vtkDataSet)");
+  auto* image = vtkImageData::SafeDownCast(data_set);
+  vtkDataArray* points_array =
+      array_name.empty() ? nullptr : data_set->GetPointData()->GetArray(array_name.c_str());
+  if (image != nullptr && points_array != nullptr && points_array->GetNumberOfComponents() == 3) {
+    int dims[3];
+    image->GetDimensions(dims);
+    const double* origin = image->GetOrigin();
+    const double* spacing = image->GetSpacing();
+    const double* direction = image->GetDirectionMatrix()->GetData();
+    const bool axis_aligned = direction[0] == 1 && direction[4] == 1 && direction[8] == 1;
+    if (axis_aligned && dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2) {
+      const vtkIdType n = points_array->GetNumberOfTuples();
+      std::vector<float> values(std::size_t(3 * n));
+      for (vtkIdType i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c)
+          values[std::size_t(3 * i + c)] = float(points_array->GetComponent(i, c));
+      std::vector<unsigned char> mask;
+      if (vtkDataArray* inside = data_set->GetPointData()->GetArray("inside");
+          inside != nullptr && inside->GetNumberOfComponents() == 1) {
+        mask.resize(std::size_t(n));
+        for (vtkIdType i = 0; i < n; ++i)
+          mask[std::size_t(i)] = inside->GetComponent(i, 0) != 0. ? 1 : 0;
+      }
+      return Velocity_field(FAS::Regular_grid_flow_field_3<Kernel>(
+          Point(origin[0], origin[1], origin[2]), Vector(spacing[0], spacing[1], spacing[2]),
+          {{std::size_t(dims[0]), std::size_t(dims[1]), std::size_t(dims[2])}}, std::move(values),
+          std::move(mask)));
+    }
+  }
+  if (array_name.empty())
+    return Velocity_field(FAS::VTK_flow_field_3<Kernel>(data_set));
+  return Velocity_field(
+      FAS::VTK_flow_field_3<Kernel>(data_set, FAS::parameters::array_name(array_name)));
+}
+
+/// `tm` as polygonal data (points in vertex index order, one triangle per face).
+inline vtkSmartPointer<vtkPolyData> to_polydata(const Mesh& tm)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(vtkIdType(tm.number_of_vertices()));
+  for (Mesh::Vertex_index v : tm.vertices()) {
+    const Point& p = tm.point(v);
+    points->SetPoint(vtkIdType(v.idx()), p.x(), p.y(), p.z());
+  }
+  auto triangles = vtkSmartPointer<vtkCellArray>::New();
+  for (Mesh::Face_index f : tm.faces()) {
+    vtkIdType ids[3];
+    int i = 0;
+    for (Mesh::Vertex_index v : CGAL::vertices_around_face(tm.halfedge(f), tm))
+      ids[i++] = vtkIdType(v.idx());
+    triangles->InsertNextCell(3, ids);
+  }
+  auto polydata = vtkSmartPointer<vtkPolyData>::New();
+  polydata->SetPoints(points);
+  polydata->SetPolys(triangles);
+  return polydata;
+}
+
+/// The triangles of `polydata` as a mesh (vertex i = point i).  \throws std::invalid_argument
+/// naming `what` if it has no triangle, a polygon that is not a triangle, or is not a manifold
+/// surface.
+inline Mesh mesh_from_polydata(vtkPolyData* polydata, const std::string& what)
+{
+  if (polydata == nullptr || polydata->GetNumberOfPolys() == 0)
+    throw std::invalid_argument(what + " has no polygons; expected a triangulated surface");
+  Mesh tm;
+  for (vtkIdType i = 0; i < polydata->GetNumberOfPoints(); ++i) {
+    double x[3];
+    polydata->GetPoint(i, x);
+    tm.add_vertex(Point(x[0], x[1], x[2]));
+  }
+  vtkCellArray* polys = polydata->GetPolys();
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  polys->InitTraversal();
+  while (polys->GetNextCell(ids)) {
+    if (ids->GetNumberOfIds() != 3)
+      throw std::invalid_argument(what + " has a polygon with " + std::to_string(ids->GetNumberOfIds()) +
+                                  " points; triangulate it first (Filters > Triangulate)");
+    const Mesh::Face_index f = tm.add_face(Mesh::Vertex_index(Mesh::size_type(ids->GetId(0))),
+                                           Mesh::Vertex_index(Mesh::size_type(ids->GetId(1))),
+                                           Mesh::Vertex_index(Mesh::size_type(ids->GetId(2))));
+    if (f == Mesh::null_face())
+      throw std::invalid_argument(what + " is not a manifold, consistently oriented triangle surface");
+  }
+  return tm;
+}
+
+/// The lines and polylines of `polydata`, each as a list of points.
+inline std::vector<Polyline> polylines_from_polydata(vtkPolyData* polydata)
+{
+  std::vector<Polyline> polylines;
+  if (polydata == nullptr)
+    return polylines;
+  vtkCellArray* lines = polydata->GetLines();
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  lines->InitTraversal();
+  while (lines->GetNextCell(ids)) {
+    Polyline polyline;
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i) {
+      double x[3];
+      polydata->GetPoint(ids->GetId(i), x);
+      polyline.emplace_back(x[0], x[1], x[2]);
+    }
+    if (polyline.size() >= 2)
+      polylines.push_back(std::move(polyline));
+  }
+  return polylines;
+}
+
+/// A named array of `components` doubles per tuple.
+inline vtkSmartPointer<vtkDoubleArray> make_array(const char* name, int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+
+/// Adds the one-value array `name` = `value` to `data`'s field data.
+inline void add_field_value(vtkDataObject* data, const char* name, double value)
+{
+  auto array = make_array(name, 1, 1);
+  array->SetValue(0, value);
+  data->GetFieldData()->AddArray(array);
+}
+
+/// The velocity at every point of `polydata`, as the point array `velocity` (zero where the
+/// field has no sample) and `velocity_sampled` (1 where it has one).
+template <class Field>
+void add_point_velocities(vtkPolyData* polydata, const Field& field)
+{
+  const vtkIdType n = polydata->GetNumberOfPoints();
+  auto velocity = make_array("velocity", 3, n);
+  auto sampled = make_array("velocity_sampled", 1, n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    double x[3];
+    polydata->GetPoint(i, x);
+    const std::optional<Vector> v = field(Point(x[0], x[1], x[2]));
+    velocity->SetTuple3(i, v ? v->x() : 0., v ? v->y() : 0., v ? v->z() : 0.);
+    sampled->SetValue(i, v ? 1. : 0.);
+  }
+  polydata->GetPointData()->AddArray(velocity);
+  polydata->GetPointData()->SetActiveVectors("velocity");
+  polydata->GetPointData()->AddArray(sampled);
+}
+
+} // namespace fas_paraview
+
+#endif // FAS_PARAVIEW_SUPPORT_H

@@ -1,0 +1,104 @@
+// Flow-Aligned Surface: a planar or disk patch placed in the flow of the input data set and
+// deformed until it is tangential (a stream surface) or orthogonal (a seeding surface) to it;
+// Section 4 of Martinez Esturo et al., "Poisson-based Tools for Flow Visualization" (2013).
+#ifndef vtkFlowAlignedSurface_h
+#define vtkFlowAlignedSurface_h
+
+#include "FlowAlignedSurfacesFiltersModule.h"
+#include <vtkPolyDataAlgorithm.h>
+
+/// Input: any data set with a 3-component point or cell array (the velocity, chosen with
+/// `SetInputArrayToProcess(0, ...)`).  Output: the surface after the requested iteration.
+///
+/// The iterations are the output's time steps 0, 1, ..., NumberOfIterations, so that ParaView's
+/// time controls play the deformation; every computed iteration is kept.  A new pose (Center or
+/// Normal) restarts the iterations from the patch at that pose with the factorization already
+/// computed (a rigid move changes nothing the factorization depends on); only a new patch
+/// (shape, size, faces) or new parameters factor again.
+///
+/// Output arrays: point data `velocity`, `velocity_sampled`; cell data `normalized_flux`
+/// (|n.v|/|v| per face, -1 where the field has no sample); field data `normalized_flux` (absent
+/// when no face has a sample), `sampled_area_fraction`, `iteration`, `converged`,
+/// `max_rotation_angle` and `number_of_factorizations`.
+///
+/// On bad input (no 3-component array, a patch outside the data, a surface leaving the data) it
+/// reports the error and keeps its previous output.
+class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkFlowAlignedSurface : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkFlowAlignedSurface* New();
+  vtkTypeMacro(vtkFlowAlignedSurface, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum PatchShapes
+  {
+    PLANAR = 0,
+    DISK = 1
+  };
+  enum Alignments
+  {
+    TANGENTIAL = 0,
+    ORTHOGONAL = 1
+  };
+
+  /// The centre of the patch.
+  vtkSetVector3Macro(Center, double);
+  vtkGetVector3Macro(Center, double);
+  /// The normal of the patch (need not be unit).
+  vtkSetVector3Macro(Normal, double);
+  vtkGetVector3Macro(Normal, double);
+  /// PLANAR (a square of side Size) or DISK (of diameter Size).
+  vtkSetClampMacro(PatchShape, int, PLANAR, DISK);
+  vtkGetMacro(PatchShape, int);
+  vtkSetMacro(Size, double);
+  vtkGetMacro(Size, double);
+  /// The number of triangles the patch is built with (approximately).
+  vtkSetClampMacro(NumberOfFaces, int, 2, 10000000);
+  vtkGetMacro(NumberOfFaces, int);
+  /// TANGENTIAL (a stream surface) or ORTHOGONAL (a seeding surface).
+  vtkSetClampMacro(Alignment, int, TANGENTIAL, ORTHOGONAL);
+  vtkGetMacro(Alignment, int);
+  /// eta: the largest rotation per face and iteration (radians), 0.1 as in the paper.
+  vtkSetMacro(MaxRotationAngle, double);
+  vtkGetMacro(MaxRotationAngle, double);
+  /// theta_max: the dihedral angle above which the fold correction acts (radians), pi/2.
+  vtkSetMacro(MaxDihedralAngle, double);
+  vtkGetMacro(MaxDihedralAngle, double);
+  /// epsilon: converged when the largest rotation is below it (radians), 1e-6.
+  vtkSetMacro(ConvergenceAngle, double);
+  vtkGetMacro(ConvergenceAngle, double);
+  /// The number of iterations, and of time steps after the initial patch.
+  vtkSetClampMacro(NumberOfIterations, int, 0, 100000);
+  vtkGetMacro(NumberOfIterations, int);
+
+  /// The number of factorizations of the Poisson system since this filter was created.
+  int GetNumberOfFactorizations();
+
+protected:
+  vtkFlowAlignedSurface();
+  ~vtkFlowAlignedSurface() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Center[3];
+  double Normal[3];
+  int PatchShape;
+  double Size;
+  int NumberOfFaces;
+  int Alignment;
+  double MaxRotationAngle;
+  double MaxDihedralAngle;
+  double ConvergenceAngle;
+  int NumberOfIterations;
+
+private:
+  vtkFlowAlignedSurface(const vtkFlowAlignedSurface&) = delete;
+  void operator=(const vtkFlowAlignedSurface&) = delete;
+
+  struct Internals;
+  Internals* Internal;
+};
+
+#endif
