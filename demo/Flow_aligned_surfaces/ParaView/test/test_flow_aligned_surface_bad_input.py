@@ -2,6 +2,7 @@
 previous output kept."""
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
+import math
 import os
 import sys
 
@@ -61,6 +62,12 @@ with t.Messages() as m:
 expect_message(m, "has no flow sample", "move the patch")
 if not 0 < t.field_value(partly, "sampled_area_fraction") < 0.95:
     raise AssertionError("the sampled area fraction of a patch half out of the data")
+face_flux = partly.GetCellData().GetArray("normalized_flux")
+values = [face_flux.GetValue(i) for i in range(face_flux.GetNumberOfTuples())]
+unsampled = [v for v in values if math.isnan(v)]
+if not unsampled or any(not 0 <= v <= 1 for v in values if not math.isnan(v)):
+    raise AssertionError("per-face flux of a patch half out of the data: NaN where unsampled, "
+                         "else in [0, 1]; got %d NaN, range %s" % (len(unsampled), (min(values), max(values))))
 
 # 5. Bad parameters: the library's message names the parameter.
 with t.Messages() as m:

@@ -15,7 +15,7 @@ try:
     surface.Velocity = ["POINTS", "velocity"]
     surface.Center = [-1.8, 0.5, 0.0]
     surface.Normal = [1.0, 0.3, 0.2]
-    surface.Size = 0.8
+    surface.Size = 1.2
     surface.NumberOfFaces = 2000
     surface.NumberOfIterations = 25
     view = GetActiveViewOrCreate("RenderView")
@@ -28,7 +28,10 @@ try:
     outline = Show(data, view)
     outline.SetRepresentationType("Outline")
     view.ViewSize = [800, 600]
-    ResetCamera(view)
+    Render(view)  # the first render resets the camera: place it after
+    view.CameraPosition = [-4.5, -3.5, 4.0]
+    view.CameraFocalPoint = [-1.0, 0.3, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
     Render(view)
     output = servermanager.Fetch(surface)
     flux = output.GetFieldData().GetArray("normalized_flux").GetValue(0)

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -267,8 +268,11 @@ int vtkFlowAlignedSurface::RequestData(
     auto face_flux = make_array("normalized_flux", 1, vtkIdType(shown.number_of_faces()));
     auto flux_map = shown.add_property_map<Mesh::Face_index, double>("f:flux", -1.).first;
     FAS::compute_face_normalized_flux(shown, in.field, flux_map);
+    // NaN where the face has no flow sample (the library's -1): ParaView shows it in the NaN
+    // colour and leaves it out of the colour range.
     for (Mesh::Face_index f : shown.faces())
-      face_flux->SetValue(vtkIdType(f.idx()), flux_map[f]);
+      face_flux->SetValue(
+        vtkIdType(f.idx()), flux_map[f] < 0 ? std::numeric_limits<double>::quiet_NaN() : flux_map[f]);
     result->GetCellData()->AddArray(face_flux);
     result->GetCellData()->SetActiveScalars("normalized_flux");
 
