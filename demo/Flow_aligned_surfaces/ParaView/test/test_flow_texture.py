@@ -77,10 +77,15 @@ mask = column(out, "texture_mask", cells=True)
 if not (min(mask) >= 0 and max(mask) <= 1 and sum(mask) / len(mask) < 0.1):
     raise AssertionError("stream surface: mask outside [0, 1] or a mean above 0.1 (%g)" % (sum(mask) / len(mask)))
 
-# 2. The arrow texture.
-arrows = dict(noise, texture="arrows", width=64, height=64, along=4, across=8)
+# 2. The arrow texture, and Min Relative Speed masking the slow faces too.
+masked = sum(1 for m in mask if m == 1.0)
+arrows = dict(noise, texture="arrows", width=64, height=64, along=4, across=8, min_speed=0.8)
 set_properties(texture, arrows)
-expect_same_as_library(texture, "arrows", stream, arrows)
+out = expect_same_as_library(texture, "arrows", stream, arrows)
+slow = sum(1 for m in column(out, "texture_mask", cells=True) if m == 1.0)
+if not slow > masked + 100:
+    raise AssertionError("Min Relative Speed 0.8 masks %d faces, 0.02 masked %d" % (slow, masked))
+print("Min Relative Speed 0.8 masks %d faces of %d (0.02: %d)" % (slow, len(mask), masked))
 
 # 3. The plane z = 0, a stream surface of the cylinder flow (curl-free): u is the potential
 # times the scale up to a constant, and the texture follows the flow everywhere (mask near 0).

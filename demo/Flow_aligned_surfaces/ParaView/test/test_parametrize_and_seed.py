@@ -120,6 +120,7 @@ p.RandomSeed = 7
 expect_same_as_library(p, reference("orthogonal", across, "orthogonal", alpha=0.3, spacing=0.15, seed=7),
                        ["r", "s"], "orthogonal")
 curves = t.fetch_port(p, 1)
+bend = 0.0
 for i in range(curves.GetNumberOfCells()):
     ids = curves.GetCell(i).GetPointIds()
     line = [curves.GetPoint(ids.GetId(k)) for k in range(ids.GetNumberOfIds())]
@@ -133,7 +134,9 @@ for i in range(curves.GetNumberOfCells()):
         worst = max(worst, math.sqrt(max(0.0, sum(c * c for c in ax) - along * along)))
     if not worst <= 0.05 * length:
         raise AssertionError("orthogonal seed curve %d bends %g from its chord of length %g" % (i, worst, length))
-print("orthogonal: the %d seed curves are near-straight" % curves.GetNumberOfCells())
+    bend = max(bend, worst / length)
+print("orthogonal: the %d seed curves are near-straight (largest bend %.2g of the chord)" % (
+    curves.GetNumberOfCells(), bend))
 
 # 4. Circular on a disk in the plane z = 0: the geodesic distance is the Euclidean distance from
 # the source vertex there, and each seed curve is a circle of its value around it.
@@ -158,11 +161,14 @@ if not worst <= 0.02 * 0.5:
     raise AssertionError("circular seed curves are off their circles by %g" % worst)
 print("circular: distance and seed curves within %.2g of the Euclidean circles" % worst)
 
-# A given source point, on the surface's own triangles.
+# A given source point, on the surface's own triangles (a deformed disk, whose triangles are not
+# all Delaunay: the intrinsic Delaunay triangulation, the default, gives other distances there).
+stream_disk = [-1.8, 0.5, 0.0, 1.0, 0.3, 0.2, 0.8, 800, "disk", "tangential", 25]
+p.Surface = patch_file("stream_disk", stream_disk)
 p.SourceAtCentroid = 0
-p.SourcePoint = [-1.8, 1.0, 0.0]
+p.SourcePoint = [-1.8, 0.6, 0.1]
 p.IntrinsicDelaunay = 0
-expect_same_as_library(p, reference("circular_point", disk, "circular", source="-1.8,1.0,0.0",
+expect_same_as_library(p, reference("circular_point", stream_disk, "circular", source="-1.8,0.6,0.1",
                                     delaunay="direct"), ["geodesic_distance"], "circular from a point")
 
 # 5. The workflow in one pipeline: Flow-Aligned Surface into Parametrize and Seed.
