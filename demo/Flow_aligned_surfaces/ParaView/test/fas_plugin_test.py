@@ -147,6 +147,34 @@ def expect_same_polylines(actual, expected, what, tolerance=1e-9):
         expect_same_surface(actual, expected, what, tolerance)
 
 
+def output_sizes(proxy, ports):
+    """(points, cells) of each output port of `proxy` in `ports`."""
+    return [(o.GetNumberOfPoints(), o.GetNumberOfCells()) for o in [fetch_port(proxy, k) for k in ports]]
+
+
+def expect_error_keeps_outputs(proxy, ports, before, fragments, what):
+    """Updating `proxy` reports an error containing every string of `fragments`, and its outputs
+    keep the sizes `before` (an output_sizes() of the last good run)."""
+    with Messages() as messages:
+        after = output_sizes(proxy, ports)
+    text = messages.text()
+    for fragment in fragments + ["the previous output is kept"]:
+        if fragment not in text:
+            raise AssertionError("%s: expected a message with '%s', got: %s" % (what, fragment, text))
+    if after != before:
+        raise AssertionError("%s: the previous outputs were not kept (%s, before %s)" % (what, after, before))
+    print("%s: %s" % (what, text.strip().splitlines()[-1]))
+
+
+def aligned_patch_reader(setup, name, patch):
+    """The patch of `patch` (align's 11 arguments of paraview_reference) written by the library,
+    read in ParaView."""
+    from paraview.simple import XMLPolyDataReader
+    vtp = setup.path(name + "_patch.vtp")
+    setup.run_reference("align", setup.field(), vtp, *patch)
+    return XMLPolyDataReader(FileName=[vtp])
+
+
 def read_text_points(filename):
     """Points written one per line as `x y z`."""
     with open(filename) as f:

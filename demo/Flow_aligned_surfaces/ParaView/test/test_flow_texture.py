@@ -14,10 +14,7 @@ data = XMLImageDataReader(FileName=[setup.field()])
 
 
 def patch_file(name, patch):
-    """The surface of `patch` (align's 11 arguments) written by the library, read in ParaView."""
-    vtp = setup.path(name + "_patch.vtp")
-    setup.run_reference("align", setup.field(), vtp, *patch)
-    return XMLPolyDataReader(FileName=[vtp])
+    return t.aligned_patch_reader(setup, name, patch)
 
 
 def set_properties(filter, p):
@@ -116,16 +113,10 @@ if not sum(mask) / len(mask) > 0.9:
 print("orthogonal surface: mean mask %.3g" % (sum(mask) / len(mask)))
 
 # 5. A surface outside the data: a message naming the fault, no crash, the previous outputs kept.
-before = [(o.GetNumberOfPoints(), o.GetNumberOfCells()) for o in [t.fetch_port(texture, k) for k in range(2)]]
+before = t.output_sizes(texture, range(2))
 moved = Transform(Input=texture.Surface, Transform="Transform")
 moved.Transform.Translate = [100.0, 0.0, 0.0]
 texture.Surface = moved
-with t.Messages() as messages:
-    after = [(o.GetNumberOfPoints(), o.GetNumberOfCells()) for o in [t.fetch_port(texture, k) for k in range(2)]]
-text = messages.text()
-if "Flow Texture: parametrize_tangential" not in text or "previous output is kept" not in text:
-    raise AssertionError("surface outside the data: expected the library's message, got: " + text)
-if after != before:
-    raise AssertionError("surface outside the data: the previous outputs were not kept")
-print("surface outside the data: " + text.strip().splitlines()[-1])
+t.expect_error_keeps_outputs(texture, range(2), before, ["Flow Texture: parametrize_tangential"],
+                             "surface outside the data")
 print("Flow Texture: all checks passed")

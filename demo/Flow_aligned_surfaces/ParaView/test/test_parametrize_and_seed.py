@@ -14,10 +14,7 @@ data = XMLImageDataReader(FileName=[setup.field()])
 
 
 def patch_file(name, patch):
-    """The surface of `patch` (align's 11 arguments) written by the library, read in ParaView."""
-    vtp = setup.path(name + "_patch.vtp")
-    setup.run_reference("align", setup.field(), vtp, *patch)
-    return XMLPolyDataReader(FileName=[vtp])
+    return t.aligned_patch_reader(setup, name, patch)
 
 
 def reference(name, patch, method, normalization="default", alpha=0.0, source="centroid", curves=8,
@@ -192,26 +189,11 @@ if t.fetch_port(chained, 1).GetNumberOfCells() < 10:
 # no crash, and the previous outputs kept.
 p.Parametrization = "Tangential"
 p.Surface = stream_surface
-before = [t.fetch_port(p, port) for port in range(3)]
-before = [(o.GetNumberOfPoints(), o.GetNumberOfCells()) for o in before]
+before = t.output_sizes(p, range(3))
 p.Surface = Line(Point1=[-2, 0, 0], Point2=[-1.5, 0.5, 0])
-with t.Messages() as messages:
-    after = [t.fetch_port(p, port) for port in range(3)]
-text = messages.text()
-if "Surface input (port 1) has no polygons" not in text or "previous output is kept" not in text:
-    raise AssertionError("no triangles: expected a message naming the Surface input, got: " + text)
-if [(o.GetNumberOfPoints(), o.GetNumberOfCells()) for o in after] != before:
-    raise AssertionError("no triangles: the previous outputs were not kept")
-print("no triangles: " + text.strip().splitlines()[-1])
-
+t.expect_error_keeps_outputs(p, range(3), before, ["Surface input (port 1) has no polygons"], "no triangles")
 p.Surface = Transform(Input=stream_surface, Transform="Transform")
 p.Surface.Transform.Translate = [100.0, 0.0, 0.0]
-with t.Messages() as messages:
-    after = [t.fetch_port(p, port) for port in range(3)]
-text = messages.text()
-if "parametrize_tangential" not in text or "previous output is kept" not in text:
-    raise AssertionError("surface outside the data: expected the library's message, got: " + text)
-if [(o.GetNumberOfPoints(), o.GetNumberOfCells()) for o in after] != before:
-    raise AssertionError("surface outside the data: the previous outputs were not kept")
-print("surface outside the data: " + text.strip().splitlines()[-1])
+t.expect_error_keeps_outputs(p, range(3), before, ["Parametrize and Seed: parametrize_tangential"],
+                             "surface outside the data")
 print("Parametrize and Seed: all checks passed")
