@@ -112,7 +112,21 @@ if not sum(mask) / len(mask) > 0.9:
     raise AssertionError("orthogonal surface: mean mask %g, expected near 1" % (sum(mask) / len(mask)))
 print("orthogonal surface: mean mask %.3g" % (sum(mask) / len(mask)))
 
-# 5. A surface outside the data: a message naming the fault, no crash, the previous outputs kept.
+# 5. The texture saved as PNG (to be loaded as the representation's Texture): the same texels.
+png = setup.path("texture.png")
+SaveData(png, proxy=OutputPort(texture, 1))
+from vtkmodules.vtkIOImage import vtkPNGReader
+reader = vtkPNGReader()
+reader.SetFileName(png)
+reader.Update()
+saved, image = reader.GetOutput(), t.fetch_port(texture, 1)
+if saved.GetDimensions() != image.GetDimensions() or any(
+        saved.GetPointData().GetScalars().GetTuple3(i) != image.GetPointData().GetScalars().GetTuple3(i)
+        for i in range(image.GetNumberOfPoints())):
+    raise AssertionError("the texture saved as PNG is not the texture")
+print("the texture saved as PNG has the same texels")
+
+# 6. A surface outside the data: a message naming the fault, no crash, the previous outputs kept.
 before = t.output_sizes(texture, range(2))
 moved = Transform(Input=texture.Surface, Transform="Transform")
 moved.Transform.Translate = [100.0, 0.0, 0.0]
