@@ -133,4 +133,7 @@ moved.Transform.Translate = [100.0, 0.0, 0.0]
 texture.Surface = moved
 t.expect_error_keeps_outputs(texture, range(2), before, ["Flow Texture: parametrize_tangential"],
                              "surface outside the data")
+# A point that belongs to no triangle (point i must stay vertex i, it cannot be dropped).
+texture.Surface = AppendGeometry(Input=[patch_file("plane_again", plane), PointSource(NumberOfPoints=1)])
+t.expect_error_keeps_outputs(texture, range(2), before, ["point 449 belongs to no triangle", "Filters > Clean"], "isolated point")
 print("Flow Texture: all checks passed")

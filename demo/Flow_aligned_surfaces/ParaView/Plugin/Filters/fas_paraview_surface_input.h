@@ -42,6 +42,11 @@ inline Surface_input read_surface_input(vtkAlgorithm* filter, vtkInformationVect
     throw std::invalid_argument("the Surface input (port 1) is not polygonal data");
   in.field = make_velocity_field(in.data, selected_array_name(filter));
   in.tm = mesh_from_polydata(in.surface, "the Surface input (port 1)");
+  // Point i is vertex i of the mesh, so a point of no triangle cannot be dropped silently.
+  for (Mesh::Vertex_index v : in.tm.vertices())
+    if (in.tm.is_isolated(v))
+      throw std::invalid_argument("the Surface input (port 1): point " + std::to_string(v.idx()) +
+                                  " belongs to no triangle; remove such points first (Filters > Clean)");
   return in;
 }
 
