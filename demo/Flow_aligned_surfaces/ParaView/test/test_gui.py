@@ -1,5 +1,5 @@
 """The ParaView GUI with the plugin: run by ctest as
-  xvfb-run paraview --dr --plugin-search-paths=DIR --plugins=FlowAlignedSurfaces --script=test_gui.py
+  with_xvfb.sh paraview --dr --plugin-search-paths=DIR --plugins=FlowAlignedSurfaces --script=test_gui.py
 with FAS_GUI_FIELD (a VTK image with the velocity) and FAS_GUI_SCREENSHOT (a PNG to write) in the
 environment.  The GUI has no exit status of its own for a script: this one ends the process with
 os._exit(0) after its checks passed, and os._exit(1) with the reason on stderr otherwise."""
