@@ -174,7 +174,7 @@ int vtkStreamSurfaceFromCurve::RequestData(
         "); the seed curves must lie in the data set (bounds " + bounds_text(input) +
         ") where the flow is not zero");
     if (!empty.empty())
-      vtkWarningMacro(<< "Stream Surface from Curve: some seed curves give no surface: " << empty);
+      vtkWarningMacro(<< "Stream Surface From Curve: some seed curves give no surface: " << empty);
 
     vtkSmartPointer<vtkPolyData> result = to_polydata(tm);
     const vtkIdType n = vtkIdType(tm.number_of_vertices());
@@ -225,7 +225,7 @@ int vtkStreamSurfaceFromCurve::RequestData(
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< "Stream Surface from Curve: " << e.what()
+    vtkErrorMacro(<< "Stream Surface From Curve: " << e.what()
                   << (in.last_output ? "; the previous output is kept" : ""));
     if (in.last_output)
       output->ShallowCopy(in.last_output);
