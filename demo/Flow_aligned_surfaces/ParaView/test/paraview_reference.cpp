@@ -216,15 +216,16 @@ int grow(char** argv)
   FAS::Sampled_flow_field_3<K> field;
   if (!read_field(argv[2], field))
     return 1;
-  Mesh tm = rebuilt(aligned_patch(argv, field));
+  char** patch = argv + 1; // align's arguments, shifted by IN.vtp
+  Mesh tm = rebuilt(aligned_patch(patch, field));
   if (!write_surface(argv[3], tm, {}))
     return 1;
   const std::size_t input_vertices = tm.number_of_vertices();
-  const double distance = number(argv[15]);
-  const std::string mode = argv[16];
-  const int steps = int(number(argv[17]));
-  const std::size_t iterations = std::size_t(number(argv[18]));
-  FAS::Flow_aligned_deformation<Mesh, FAS::Sampled_flow_field_3<K>> deformation(tm, field, alignment_of(argv[13]));
+  const double distance = number(argv[16]);
+  const std::string mode = argv[17];
+  const int steps = int(number(argv[18]));
+  const std::size_t iterations = std::size_t(number(argv[19]));
+  FAS::Flow_aligned_deformation<Mesh, FAS::Sampled_flow_field_3<K>> deformation(tm, field, alignment_of(patch[13]));
   FAS::Growth_report sum;
   std::size_t iterations_made = 0;
   FAS::Alignment_report last;
@@ -274,7 +275,7 @@ int main(int argc, char** argv)
     return align(argv);
   if (command == "stream" && argc == 6)
     return stream_surfaces(argv);
-  if (command == "grow" && argc == 19)
+  if (command == "grow" && argc == 20)
     return grow(argv);
   return usage();
 }
