@@ -147,27 +147,24 @@ FAS::Stream_surface_report stream_surface(const std::string& name, const Field& 
                                           const std::vector<K::Point_3>& seed, Mesh& tm, UMap u, TMap t)
 {
   namespace P = FAS::parameters;
+  const auto maps = P::seed_parameter_map(u, P::integration_time_map(t));
   if (name == "backward_time")
     return FAS::integrate_stream_surface(
         field, seed, tm,
         P::integration_direction(FAS::Integration_direction::BACKWARD,
-                                 P::max_time(2.0, P::time_line_step(0.1, P::seed_parameter_map(
-                                                                              u, P::integration_time_map(t))))));
-  if (name == "both_length")
+                                 P::max_time(2.0, P::time_line_step(0.1, maps))));
+  if (name == "both_length") {
+    const auto tolerances = P::relative_tolerance(1e-9, P::absolute_tolerance(1e-11, maps));
+    const auto front = P::front_spacing(0.06, P::tear_angle(0.6, tolerances));
     return FAS::integrate_stream_surface(
         field, seed, tm,
-        P::integration_direction(
-            FAS::Integration_direction::BOTH,
-            P::arc_length_time_lines(
-                true, P::max_length(2.5, P::front_spacing(0.06, P::tear_angle(0.6, P::relative_tolerance(
-                                                   1e-9, P::absolute_tolerance(
-                                                             1e-11, P::max_number_of_time_lines(
-                                                                        std::size_t(30),
-                                                                        P::seed_parameter_map(
-                                                                            u, P::integration_time_map(t)))))))))));
+        P::integration_direction(FAS::Integration_direction::BOTH,
+                                 P::arc_length_time_lines(true, P::max_length(2.5, P::max_number_of_time_lines(
+                                                                                       std::size_t(30), front)))));
+  }
   if (name != "defaults")
     throw std::invalid_argument("unknown case " + name);
-  return FAS::integrate_stream_surface(field, seed, tm, P::seed_parameter_map(u, P::integration_time_map(t)));
+  return FAS::integrate_stream_surface(field, seed, tm, maps);
 }
 
 int stream_surfaces(char** argv)
