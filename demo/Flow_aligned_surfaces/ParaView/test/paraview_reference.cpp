@@ -8,6 +8,15 @@
 //       the patch after ITERATIONS iterations (fewer when it converged)
 //   paraview_reference parametrize ..., paraview_reference texture ...
 //       Parametrize and Seed, Flow Texture on that patch (see the functions for the arguments)
+//   paraview_reference stream FIELD.vti SEEDS.txt OUT.vtp defaults|backward_time|both_length
+//       the stream surfaces of the seed curves of SEEDS.txt (one curve a line: x y z x y z ...),
+//       with the named parameters of the case (see stream_surfaces()); point data u and t, and
+//       OUT.vtp.txt: one line per curve, "TERMINATION [BACKWARD_TERMINATION]"
+//   paraview_reference grow FIELD.vti IN.vtp OUT.vtp <the arguments of align after OUT.vtp>
+//                      DISTANCE all|across|DX,DY,DZ STEPS GROW_ITERATIONS
+//       the patch of align, written to IN.vtp, then grown STEPS times (each followed by at most
+//       GROW_ITERATIONS iterations) by a deformation made on it; point data growth_step, and
+//       OUT.vtp.txt: the summed Growth_report and the deformation's counts, "name value" a line
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -16,10 +25,10 @@
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
 #include <CGAL/Flow_aligned_surfaces/IO/write_flow_field.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
-#include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
-
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
+#include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
+#include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
 #include <CGAL/Flow_aligned_surfaces/seeds.h>
 
@@ -28,9 +37,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <sstream>
-#include <iostream>
 #include <string>
 #include <vector>
 
@@ -49,11 +58,20 @@ int usage()
                "tangential|orthogonal|circular default|normalized|unnormalized ALPHA centroid|X,Y,Z CURVES SPACING "
                "SEED delaunay|direct\n"
                "       paraview_reference texture FIELD.vti PREFIX <align's 11 patch arguments> SCALE OFFSET "
-               "MIN_RELATIVE_SPEED noise|arrows WIDTH HEIGHT FILTER_LENGTH NOISE_SEED ALONG ACROSS\n";
+               "MIN_RELATIVE_SPEED noise|arrows WIDTH HEIGHT FILTER_LENGTH NOISE_SEED ALONG ACROSS\n"
+               "       paraview_reference stream FIELD.vti SEEDS.txt OUT.vtp defaults|backward_time|both_length\n"
+               "       paraview_reference grow FIELD.vti IN.vtp OUT.vtp CX CY CZ NX NY NZ SIZE FACES "
+               "planar|disk tangential|orthogonal ITERATIONS DISTANCE all|across|DX,DY,DZ STEPS "
+               "GROW_ITERATIONS\n";
   return 2;
 }
 
 double number(const char* text) { return std::strtod(text, nullptr); }
+
+FAS::Alignment alignment_of(const std::string& text)
+{
+  return text == "orthogonal" ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL;
+}
 
 int write_field(const std::string& out)
 {
@@ -78,6 +96,16 @@ bool read_field(const char* filename, FAS::Sampled_flow_field_3<K>& field)
   return true;
 }
 
+bool write_surface(const std::string& filename, const Mesh& tm, const std::vector<FAS::IO::Data_array>& point_data)
+{
+  std::string error;
+  if (!FAS::IO::write_VTP(filename, tm, point_data, {}, CGAL::parameters::default_values(), &error)) {
+    std::cerr << error << "\n";
+    return false;
+  }
+  return true;
+}
+
 // The patch of the 11 arguments CX CY CZ NX NY NZ SIZE FACES planar|disk tangential|orthogonal
 // ITERATIONS after ITERATIONS iterations (fewer when it converged).
 Mesh aligned_surface(const FAS::Sampled_flow_field_3<K>& field, char** spec)
@@ -91,9 +119,7 @@ Mesh aligned_surface(const FAS::Sampled_flow_field_3<K>& field, char** spec)
     FAS::make_disk_patch(tm, center, normal, size / 2, faces);
   else
     FAS::make_planar_patch(tm, center, normal, size, size, faces);
-  const FAS::Alignment alignment =
-      std::string(spec[9]) == "orthogonal" ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL;
-  FAS::Flow_aligned_deformation<Mesh, FAS::Sampled_flow_field_3<K>> deformation(tm, field, alignment);
+  FAS::Flow_aligned_deformation<Mesh, FAS::Sampled_flow_field_3<K>> deformation(tm, field, alignment_of(spec[9]));
   const std::size_t iterations = std::size_t(number(spec[10]));
   for (std::size_t k = 0; k < iterations; ++k)
     if (deformation.step().converged)
@@ -106,13 +132,148 @@ int align(char** argv)
   FAS::Sampled_flow_field_3<K> field;
   if (!read_field(argv[2], field))
     return 1;
-  const Mesh tm = aligned_surface(field, argv + 4);
-  std::string error;
-  if (!FAS::IO::write_VTP(argv[3], tm, {}, {}, CGAL::parameters::default_values(), &error)) {
-    std::cerr << error << "\n";
-    return 1;
+  return write_surface(argv[3], aligned_surface(field, argv + 4), {}) ? 0 : 1;
+}
+
+// ---- Stream Surface from Curve and Grow Boundary (issue 16, item 2) ----
+
+// The seed curves of a text file, one a line: x y z x y z ...
+std::vector<std::vector<K::Point_3>> read_seed_curves(const char* filename)
+{
+  std::vector<std::vector<K::Point_3>> curves;
+  std::ifstream in(filename);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream is(line);
+    std::vector<K::Point_3> curve;
+    double x, y, z;
+    while (is >> x >> y >> z)
+      curve.emplace_back(x, y, z);
+    if (!curve.empty())
+      curves.push_back(curve);
   }
-  return 0;
+  return curves;
+}
+
+// Every case spells out the named parameters it gives: the library treats a given parameter
+// otherwise than an absent one, which is what the filter's properties at 0 must reproduce.
+template <class Field, class UMap, class TMap>
+FAS::Stream_surface_report stream_surface(const std::string& name, const Field& field,
+                                          const std::vector<K::Point_3>& seed, Mesh& tm, UMap u, TMap t)
+{
+  namespace P = FAS::parameters;
+  const auto maps = P::seed_parameter_map(u, P::integration_time_map(t));
+  if (name == "backward_time")
+    return FAS::integrate_stream_surface(
+        field, seed, tm,
+        P::integration_direction(FAS::Integration_direction::BACKWARD,
+                                 P::max_time(2.0, P::time_line_step(0.1, maps))));
+  if (name == "both_length") {
+    const auto tolerances = P::relative_tolerance(1e-9, P::absolute_tolerance(1e-11, maps));
+    const auto front = P::front_spacing(0.06, P::tear_angle(0.6, tolerances));
+    return FAS::integrate_stream_surface(
+        field, seed, tm,
+        P::integration_direction(FAS::Integration_direction::BOTH,
+                                 P::arc_length_time_lines(true, P::max_length(2.5, P::max_number_of_time_lines(
+                                                                                       std::size_t(30), front)))));
+  }
+  if (name != "defaults")
+    throw std::invalid_argument("unknown case " + name);
+  return FAS::integrate_stream_surface(field, seed, tm, maps);
+}
+
+int stream_surfaces(char** argv)
+{
+  FAS::Sampled_flow_field_3<K> field;
+  if (!read_field(argv[2], field))
+    return 1;
+  Mesh tm;
+  auto u = tm.add_property_map<Mesh::Vertex_index, double>("v:u", 0.).first;
+  auto t = tm.add_property_map<Mesh::Vertex_index, double>("v:t", 0.).first;
+  std::ofstream report(std::string(argv[4]) + ".txt");
+  for (const std::vector<K::Point_3>& seed : read_seed_curves(argv[3])) {
+    const FAS::Stream_surface_report r = stream_surface(argv[5], field, seed, tm, u, t);
+    report << FAS::to_string(r.termination);
+    if (r.backward)
+      report << " " << FAS::to_string(r.backward->termination);
+    report << "\n";
+  }
+  FAS::IO::Data_array u_array{"u", 1, {}}, t_array{"t", 1, {}};
+  for (Mesh::Vertex_index v : tm.vertices()) {
+    u_array.values.push_back(u[v]);
+    t_array.values.push_back(t[v]);
+  }
+  return write_surface(argv[4], tm, {u_array, t_array}) ? 0 : 1;
+}
+
+// `tm` built anew as the plugin builds a surface it reads: the vertices in index order, then
+// the faces in index order, each from its halfedge's vertices (as to_polydata and write_VTP
+// write them), so that both have the same halfedges.
+Mesh rebuilt(const Mesh& tm)
+{
+  Mesh copy;
+  for (Mesh::Vertex_index v : tm.vertices())
+    copy.add_vertex(tm.point(v));
+  for (Mesh::Face_index f : tm.faces()) {
+    std::vector<Mesh::Vertex_index> corners;
+    for (Mesh::Vertex_index v : CGAL::vertices_around_face(tm.halfedge(f), tm))
+      corners.push_back(v);
+    copy.add_face(corners);
+  }
+  return copy;
+}
+
+int grow(char** argv)
+{
+  FAS::Sampled_flow_field_3<K> field;
+  if (!read_field(argv[2], field))
+    return 1;
+  char** patch = argv + 5; // align's 11 patch arguments, after IN.vtp and OUT.vtp
+  Mesh tm = rebuilt(aligned_surface(field, patch));
+  if (!write_surface(argv[3], tm, {}))
+    return 1;
+  const std::size_t input_vertices = tm.number_of_vertices();
+  const double distance = number(argv[16]);
+  const std::string mode = argv[17];
+  const int steps = int(number(argv[18]));
+  const std::size_t iterations = std::size_t(number(argv[19]));
+  FAS::Flow_aligned_deformation<Mesh, FAS::Sampled_flow_field_3<K>> deformation(tm, field, alignment_of(patch[9]));
+  FAS::Growth_report sum;
+  std::size_t iterations_made = 0;
+  FAS::Alignment_report last;
+  FAS::IO::Data_array growth_step{"growth_step", 1, std::vector<double>(input_vertices, 0.)};
+  for (int step = 1; step <= steps; ++step) {
+    FAS::Growth_report r;
+    if (mode == "all")
+      r = deformation.grow(distance);
+    else if (mode == "across")
+      r = deformation.grow(distance, FAS::parameters::across_flow(true));
+    else {
+      double d[3];
+      if (std::sscanf(mode.c_str(), "%lf,%lf,%lf", &d[0], &d[1], &d[2]) != 3)
+        throw std::invalid_argument("growth mode " + mode + ": expected all, across or DX,DY,DZ");
+      r = deformation.grow(distance, FAS::parameters::growth_direction(K::Vector_3(d[0], d[1], d[2])));
+    }
+    sum.number_of_new_vertices += r.number_of_new_vertices;
+    sum.number_of_new_faces += r.number_of_new_faces;
+    sum.number_of_grown_edges += r.number_of_grown_edges;
+    sum.grown_boundary_length += r.grown_boundary_length;
+    sum.added_area += r.added_area;
+    growth_step.values.resize(tm.number_of_vertices(), double(step));
+    last = deformation.run(iterations);
+    iterations_made += last.number_of_iterations;
+  }
+  std::ofstream report(std::string(argv[4]) + ".txt");
+  report.precision(17);
+  report << "number_of_new_vertices " << sum.number_of_new_vertices << "\n"
+         << "number_of_new_faces " << sum.number_of_new_faces << "\n"
+         << "number_of_grown_edges " << sum.number_of_grown_edges << "\n"
+         << "grown_boundary_length " << sum.grown_boundary_length << "\n"
+         << "added_area " << sum.added_area << "\n"
+         << "number_of_iterations " << iterations_made << "\n"
+         << "converged " << (last.converged ? 1 : 0) << "\n"
+         << "number_of_factorizations " << deformation.number_of_factorizations() << "\n";
+  return write_surface(argv[4], tm, {growth_step}) ? 0 : 1;
 }
 
 // ---- Parametrize and Seed, Flow Texture (issue 16, item 2) ----
@@ -301,5 +462,9 @@ int main(int argc, char** argv)
     return parametrize(argv);
   if (command == "texture" && argc == 25)
     return texture(argv);
+  if (command == "stream" && argc == 6)
+    return stream_surfaces(argv);
+  if (command == "grow" && argc == 20)
+    return grow(argv);
   return usage();
 }

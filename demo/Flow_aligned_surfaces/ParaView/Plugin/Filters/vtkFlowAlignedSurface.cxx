@@ -233,14 +233,9 @@ int vtkFlowAlignedSurface::RequestData(
       const FAS::Normalized_flux start = FAS::normalized_flux(in.tm, in.field);
       if (!start.value)
       {
-        double bounds[6];
-        input->GetBounds(bounds);
         in.restart = true; // nothing of this pose is kept
         throw std::invalid_argument("the patch at centre " + point_text(this->Center) +
-          " has no flow sample: it lies outside the input data set (bounds x " +
-          std::to_string(bounds[0]) + ".." + std::to_string(bounds[1]) + ", y " +
-          std::to_string(bounds[2]) + ".." + std::to_string(bounds[3]) + ", z " +
-          std::to_string(bounds[4]) + ".." + std::to_string(bounds[5]) +
+          " has no flow sample: it lies outside the input data set (bounds " + bounds_text(input) +
           "); move it into the data");
       }
     }
@@ -264,30 +259,13 @@ int vtkFlowAlignedSurface::RequestData(
         shown.point(v) = in.positions[k][i++];
     }
     vtkSmartPointer<vtkPolyData> result = to_polydata(shown);
-    add_point_velocities(result, in.field);
-    auto face_flux = make_array("normalized_flux", 1, vtkIdType(shown.number_of_faces()));
-    auto flux_map = shown.add_property_map<Mesh::Face_index, double>("f:flux", -1.).first;
-    FAS::compute_face_normalized_flux(shown, in.field, flux_map);
-    // NaN where the face has no flow sample (the library's -1): ParaView shows it in the NaN
-    // colour and leaves it out of the colour range.
-    for (Mesh::Face_index f : shown.faces())
-      face_flux->SetValue(
-        vtkIdType(f.idx()), flux_map[f] < 0 ? std::numeric_limits<double>::quiet_NaN() : flux_map[f]);
-    result->GetCellData()->AddArray(face_flux);
-    result->GetCellData()->SetActiveScalars("normalized_flux");
-
-    const FAS::Normalized_flux flux = FAS::normalized_flux(shown, in.field);
-    if (flux.value)
-      add_field_value(result, "normalized_flux", *flux.value);
-    add_field_value(result, "sampled_area_fraction", flux.sampled_area_fraction);
+    const FAS::Normalized_flux flux = add_alignment_arrays(result, shown, in.field);
     add_field_value(result, "iteration", double(k));
     add_field_value(result, "converged", in.converged && k + 1 >= in.positions.size() ? 1. : 0.);
     add_field_value(result, "max_rotation_angle", k == 0 ? 0. : in.reports[k - 1].max_rotation_angle);
     add_field_value(result, "number_of_factorizations", double(in.factorizations()));
-    if (flux.sampled_area_fraction < 0.95)
-      vtkWarningMacro(<< "Flow-Aligned Surface: " << 100. * (1. - flux.sampled_area_fraction)
-                      << "% of the surface's area has no flow sample (it reaches out of the data): "
-                         "that part is not aligned; move the patch or make it smaller");
+    if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
+      vtkWarningMacro(<< "Flow-Aligned Surface: " << warning);
     output->ShallowCopy(result);
     in.last_output = result;
     return 1;
