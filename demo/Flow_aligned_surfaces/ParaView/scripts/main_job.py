@@ -7,8 +7,11 @@ benchmark (../shared/data/CYLINDER_grid.vtk) with the plugin's filters.
 (PLUGIN: FlowAlignedSurfaces.so of the build tree, lib/paraview-5.11/plugins/FlowAlignedSurfaces/;
 without a display drop xvfb-run and --force-offscreen-rendering is not needed for the files.)
 It aligns a patch behind the cylinder tangentially (a stream surface) and orthogonally (a seeding
-surface), writes both as VTP files and saves main_job.png: the surfaces coloured by the
-per-face normalized flux, with the cylinder and a colour bar.
+surface), cuts three seed curves out of the orthogonal one (iso-contours of its orthogonal
+parametrization), integrates a stream surface from each, forward and backward, writes every
+result as a VTP file and saves main_job.png: the aligned surfaces coloured by the per-face
+normalized flux, the stream surfaces by their integration time, with the cylinder and colour
+bars.
 """
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
@@ -46,6 +49,25 @@ for name, alignment, normal in [("tangential", "Tangential (stream surface)", [0
     print("%s: normalized flux %.4f after %d iterations" % (name, flux, iterations))
     surfaces[name] = surface
 
+# Seeding (the paper's Figure 4): seed curves on the orthogonal surface, and the stream surfaces
+# they start, integrated both ways up to twice the patch size.
+seeds = ParametrizeAndSeed(registrationName="seeds", Input=data, Surface=surfaces["orthogonal"])
+seeds.Velocity = ["POINTS", "velocity"]
+seeds.Parametrization = "Orthogonal"
+seeds.NumberOfSeedCurves = 3
+streams = StreamSurfaceFromCurve(registrationName="stream_surfaces", Input=data,
+                                 Seeds=OutputPort(seeds, 1))
+streams.Velocity = ["POINTS", "velocity"]
+streams.IntegrationDirection = "Both"
+streams.ArcLengthTimeLines = 1
+streams.MaxLength = 0.3
+streams.UpdatePipeline()
+SaveData(os.path.join(output_dir, "seed_curves.vtp"), proxy=OutputPort(seeds, 1))
+SaveData(os.path.join(output_dir, "stream_surfaces.vtp"), proxy=streams)
+stream_output = servermanager.Fetch(streams)
+print("stream surfaces: %d triangles from %d seed curves" % (
+    stream_output.GetNumberOfCells(), servermanager.Fetch(OutputPort(seeds, 1)).GetNumberOfCells()))
+
 view = CreateView("RenderView")
 view.ViewSize = [1200, 700]
 view.OrientationAxesVisibility = 1
@@ -72,6 +94,23 @@ bar.TitleColor = [0, 0, 0]
 bar.LabelColor = [0, 0, 0]
 bar.Visibility = 1
 Render(view)  # the first render resets the camera: place it after
+curves = Show(OutputPort(seeds, 1), view)
+ColorBy(curves, None)
+curves.LineWidth = 4
+curves.AmbientColor = [0, 0, 0]
+curves.DiffuseColor = [0, 0, 0]
+stream_display = Show(streams, view)
+ColorBy(stream_display, ("POINTS", "IntegrationTime"))
+time_lut = GetColorTransferFunction("IntegrationTime")
+time_lut.ApplyPreset("Viridis (matplotlib)", True)
+time_bar = GetScalarBar(time_lut, view)
+time_bar.Title = "integration time (arc length)"
+time_bar.ComponentTitle = ""
+time_bar.TitleColor = [0, 0, 0]
+time_bar.LabelColor = [0, 0, 0]
+time_bar.WindowLocation = "Upper Right Corner"
+time_bar.Visibility = 1
+stream_display.Opacity = 0.85
 view.CameraPosition = [0.42, -0.32, 0.62]
 view.CameraFocalPoint = [0.78, 0.2, 0.18]
 view.CameraViewUp = [0, 0, 1]
