@@ -80,11 +80,13 @@ inline Velocity_field make_velocity_field(vtkDataSet* data_set, const std::strin
   if (image != nullptr && points_array != nullptr && points_array->GetNumberOfComponents() == 3) {
     int dims[3];
     image->GetDimensions(dims);
-    const double* origin = image->GetOrigin();
     const double* spacing = image->GetSpacing();
     const double* direction = image->GetDirectionMatrix()->GetData();
     const bool axis_aligned = direction[0] == 1 && direction[4] == 1 && direction[8] == 1;
     if (axis_aligned && dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2) {
+      // The first point, not the origin: a piece of an image (MPI, a subset) starts at its extent.
+      double origin[3];
+      image->GetPoint(0, origin);
       const vtkIdType n = points_array->GetNumberOfTuples();
       std::vector<float> values(std::size_t(3 * n));
       for (vtkIdType i = 0; i < n; ++i)
