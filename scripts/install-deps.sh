@@ -1,13 +1,29 @@
 #!/usr/bin/env bash
 # Installs every dependency of Flow_aligned_surfaces from Debian's packages.
+#
+#   scripts/install-deps.sh               the full set: the library, its tests, the demo and the
+#                                         ParaView plugin (ParaView 5.11 and its own VTK 9.2)
+#   scripts/install-deps.sh --debian-vtk  Debian's VTK 9.1 (libvtk9-dev) instead of ParaView: the
+#                                         same without the plugin, for a machine that keeps
+#                                         python3-vtk9
+#
 # Idempotent: packages already present are skipped, and apt is not touched at all when
 # everything is there.
 #
 # It never removes a package.  apt-get install can remove packages silently to resolve a
-# conflict: on Debian bookworm, libvtk9-dev depends on python3-vtk9, which conflicts with
-# python3-paraview (ParaView's Python).  So the installation is first simulated; if apt would
-# remove anything, this script names what and why, installs nothing, and fails.
+# conflict: on Debian bookworm, python3-paraview (ParaView's Python, needed to build a plugin)
+# conflicts with python3-vtk9, which libvtk9-dev depends on.  So the installation is first
+# simulated; if apt would remove anything, this script names what and why, installs nothing,
+# and fails.  One VTK per process: the package's VTK parts build against ParaView's VTK when
+# ParaView is installed, so the full set needs no libvtk9-dev.
 set -euo pipefail
+
+vtk_set=paraview
+case "${1:-}" in
+  "") ;;
+  --debian-vtk) vtk_set=debian ;;
+  *) echo "usage: scripts/install-deps.sh [--debian-vtk]" >&2; exit 2 ;;
+esac
 
 packages=(
   cmake g++ make pkg-config ccache
@@ -18,7 +34,6 @@ packages=(
   libsuitesparse-dev                    # CHOLMOD sparse Cholesky
   libopenblas-dev                       # an optimized BLAS for CHOLMOD (Debian defaults to the reference one)
   libtbb-dev                            # parallel loops
-  libvtk9-dev                           # VTK XML readers (.vti, .vtu, .vts, .pvd), optional
   zlib1g-dev                            # compressed AmiraMesh (HxZip) and NRRD (gzip) data, optional
   libpng-dev                            # PNG textures, optional
   libx11-dev xvfb xauth                 # the demo's pictures off screen (VTK under Xvfb where no display exists)
@@ -28,12 +43,28 @@ packages=(
   gnuplot-nox                           # the flux plot of replayed sessions (Figure 6)
 )
 
+if [ "$vtk_set" = paraview ]; then
+  packages+=(
+    paraview paraview-dev python3-paraview   # ParaView 5.11 with its VTK 9.2: the plugin, and VTK for everything else
+    openmpi-bin libopenmpi-dev               # mpiexec and MPI's C headers (ParaView's CMake package asks for them)
+    libqt5svg5                               # the GUI's icons
+    # What ParaView's CMake package and its VTK modules look for (paraview-dev does not depend on them):
+    libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev
+    libexpat1-dev liblzma-dev liblz4-dev libdouble-conversion-dev libutfcpp-dev python3-dev
+    libglew-dev libgl-dev libjpeg-dev libtiff-dev
+  )
+else
+  packages+=(libvtk9-dev)                    # VTK 9.1: XML readers (.vti, .vtu, .vts, .pvd), the VTK tests, the demo's pictures
+fi
+
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 
-# ParaView's Python is there: keep it, and leave Debian's VTK out (its python3-vtk9 conflicts).
-if installed python3-paraview && ! installed libvtk9-dev; then
+# --debian-vtk where ParaView's Python is there: keep it, and leave Debian's VTK out (its
+# python3-vtk9 conflicts).
+if [ "$vtk_set" = debian ] && installed python3-paraview && ! installed libvtk9-dev; then
   echo "install-deps: python3-paraview is installed and conflicts with libvtk9-dev (through python3-vtk9);"
-  echo "  libvtk9-dev is left out, so the VTK XML readers, the VTK tests and the demo's pictures are not built."
+  echo "  libvtk9-dev is left out: the package's VTK parts use ParaView's VTK where paraview-dev is installed,"
+  echo "  and are not built where it is not (run this script without --debian-vtk to install it)."
   kept=()
   for p in "${packages[@]}"; do [ "$p" = libvtk9-dev ] || kept+=("$p"); done
   packages=("${kept[@]}")
@@ -68,6 +99,11 @@ if [ -n "$removals" ]; then
   {
     echo "install-deps: stopped, nothing installed: installing ${missing[*]} would REMOVE these packages:"
     printf '  %s\n' $removals
+    if printf '%s\n' $removals | grep -qx python3-vtk9; then
+      echo "python3-vtk9 (pulled in by libvtk9-dev) and python3-paraview cannot be installed together."
+      echo "Either remove Debian's VTK yourself once (apt-get remove libvtk9-dev python3-vtk9) and run this"
+      echo "script again, or keep it and run scripts/install-deps.sh --debian-vtk (no ParaView plugin)."
+    fi
     echo "If you want that change, run apt-get install yourself and read what it says it removes."
   } >&2
   exit 1

@@ -5,7 +5,8 @@
 # demo/Flow_aligned_surfaces/flow_texture.cpp, and the seeding workflow (Figures 4 and 5) from
 # the main job, demo/Flow_aligned_surfaces/align_patch.cpp, rendered
 # by VTK off screen (under a private Xvfb when there is no display).  The schematic SVG figures
-# come from doc/Flow_aligned_surfaces/fig/make_figures.py, the session plot from replay_session.
+# come from doc/Flow_aligned_surfaces/fig/make_figures.py, the session plot from replay_session;
+# the ParaView screenshots from the plugin's tests (demo/Flow_aligned_surfaces/ParaView/test).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="$root/build/release"
@@ -32,5 +33,15 @@ fi
 cp "$work/main_job/orthogonal_seed_curves.png" "$fig/fas_seeding_seed_curves.png"
 cp "$work/main_job/orthogonal_stream_surfaces.png" "$fig/fas_seeding_stream_surfaces.png"
 cp "$work/main_job/orthogonal_stream_lines.png" "$fig/fas_seeding_stream_lines.png"
+# The ParaView pictures, from the plugin's tests (the GUI with the plane widget, the example script).
+if [ -d "$build/demo/Flow_aligned_surfaces/ParaView" ]; then
+  cmake --build "$build" --target FlowAlignedSurfaces paraview_reference -j"$(nproc)"
+  (cd "$build" && ctest -R "paraview_gui|paraview_main_job_script" --output-on-failure)
+  cp "$build/demo/Flow_aligned_surfaces/ParaView/test/paraview_gui.png" "$fig/fas_paraview_gui.png"
+  cp "$build/demo/Flow_aligned_surfaces/ParaView/test/main_job/main_job.png" "$fig/fas_paraview_main_job.png"
+else
+  echo "make-figures: ParaView not found; fas_paraview_*.png unchanged" >&2
+fi
 echo "make-figures: wrote $fig/fas_texture_noise.png, fas_texture_arrows.png, fas_texture_seed_curves.png,"
-echo "  fas_seeding_seed_curves.png, fas_seeding_stream_surfaces.png, fas_seeding_stream_lines.png"
+echo "  fas_seeding_seed_curves.png, fas_seeding_stream_surfaces.png, fas_seeding_stream_lines.png,"
+echo "  fas_paraview_gui.png, fas_paraview_main_job.png (with ParaView)"

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds what the tests run and runs every test through ctest:
 #  1. Release: the core GoogleTest executable (no VTK), the VTK one, the examples and the demo
-#     programs (run as tests), the Doxygen manual, the find_package consumer project, the
-#     install-deps guard.  The benchmarks are not built: scripts/build-benchmarks.sh builds them.
+#     programs (run as tests), the ParaView plugin (pvbatch scripts, the GUI under Xvfb, 2 MPI
+#     ranks), the Doxygen manual, the find_package consumer project, the install-deps guard.  The benchmarks are not built: scripts/build-benchmarks.sh builds them.
 #  2. AddressSanitizer + UndefinedBehaviorSanitizer: the core executable, and the readers'
 #     libFuzzer targets (clang++).  Rendering and VTK are not sanitized.
 # Under CI=true a missing tool fails the run instead of skipping tests (FAS_REQUIRE_ALL_TOOLS).

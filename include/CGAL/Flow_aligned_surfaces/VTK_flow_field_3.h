@@ -250,7 +250,8 @@ private:
            std::to_string(m_data_set->GetNumberOfCells()) + " cells)";
   }
 
-  // The names of the arrays with `components` components, for the messages.
+  // The names of the arrays with `components` components (every array, with its number of
+  // components, when `components` is 0), for the messages.
   std::string arrays_with(int components) const
   {
     std::string list;
@@ -258,9 +259,11 @@ private:
     for (int d = 0; d < 2; ++d)
       for (int i = 0; i < data[d]->GetNumberOfArrays(); ++i) {
         vtkDataArray* a = data[d]->GetArray(i);
-        if (a != nullptr && a->GetNumberOfComponents() == components)
-          list += std::string(list.empty() ? "" : ", ") + "'" + (a->GetName() ? a->GetName() : "") + "'" +
-                  (d == 0 ? " (point data)" : " (cell data)");
+        if (a == nullptr || (components != 0 && a->GetNumberOfComponents() != components))
+          continue;
+        list += std::string(list.empty() ? "" : ", ") + "'" + (a->GetName() ? a->GetName() : "") + "' (" +
+                (d == 0 ? "point data" : "cell data") +
+                (components == 0 ? ", " + std::to_string(a->GetNumberOfComponents()) + " components)" : ")");
       }
     return list.empty() ? std::string("none") : list;
   }
@@ -299,7 +302,8 @@ private:
           return;
         }
       }
-    fail(describe() + " has no 3-component point or cell array; expected a velocity array");
+    fail(describe() + " has no 3-component point or cell array; expected a velocity array; its arrays: " +
+         arrays_with(0));
   }
 
   void find_mask(const std::string* name)

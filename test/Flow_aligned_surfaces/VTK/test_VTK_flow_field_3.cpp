@@ -337,7 +337,8 @@ TEST(VTKFlowField3, BadInputIsRefusedWithTheArrayAndTheDataSetNamed)
   pressure->Fill(0);
   image->GetPointData()->AddArray(pressure);
   expect_invalid_argument([&] { Field field(image.Get()); },
-                          {"vtkImageData", "27 points, 8 cells", "no 3-component point or cell array"});
+                          {"vtkImageData", "27 points, 8 cells", "no 3-component point or cell array",
+                           "its arrays: 'p' (point data, 1 components)"});
   expect_invalid_argument([&] { Field field(image.Get(), FAS::parameters::array_name("U")); },
                           {"no array named 'U'", "vtkImageData"});
   expect_invalid_argument([&] { Field field(image.Get(), FAS::parameters::array_name("p")); },

@@ -6,7 +6,9 @@
 # Run as: cmake -DPROJECT_BINARY_DIR=... -DCONSUMER_SOURCE_DIR=... -DWORK_DIR=... -P run_consumer_test.cmake
 # Optional: -DCONSUMER_GENERATOR=..., -DCONSUMER_CXX_COMPILER=..., -DCONSUMER_BUILD_TYPE=...,
 #           -DEXPECT_CHOLMOD=ON|OFF (checks that the CHOLMOD usage requirement reached the consumer),
-#           -DEXPECT_ZLIB=ON|OFF (likewise for zlib: the consumer then reads a gzip NRRD file).
+#           -DEXPECT_ZLIB=ON|OFF (likewise for zlib: the consumer then reads a gzip NRRD file),
+#           -DWITH_PARAVIEW_VTK=ON (also the component VTK after ParaView: consumer_VTK must run with
+#           ParaView's VTK, PARAVIEW_VTK_VERSION).
 cmake_minimum_required(VERSION 3.16)
 
 foreach(var IN ITEMS PROJECT_BINARY_DIR CONSUMER_SOURCE_DIR WORK_DIR)
@@ -67,6 +69,9 @@ endif()
 if(CONSUMER_CXX_COMPILER)
   list(APPEND configure_args "-DCMAKE_CXX_COMPILER=${CONSUMER_CXX_COMPILER}")
 endif()
+if(WITH_PARAVIEW_VTK)
+  list(APPEND configure_args -DCONSUMER_WITH_PARAVIEW_VTK=ON)
+endif()
 run_step("2/4 configure" "${CMAKE_COMMAND}" ${configure_args})
 file(STRINGS "${build}/CMakeCache.txt" found_dir REGEX "^Flow_aligned_surfaces_DIR:")
 string(REGEX REPLACE "^[^=]*=" "" found_dir "${found_dir}")
@@ -109,5 +114,12 @@ if(DEFINED EXPECT_ZLIB AND NOT "${EXPECT_ZLIB}" STREQUAL "")
   endif()
   if(NOT EXPECT_ZLIB AND step_output MATCHES "zlib: ")
     message(FATAL_ERROR "consumer test: the package was built without zlib but the consumer uses it")
+  endif()
+endif()
+if(WITH_PARAVIEW_VTK)
+  run_step("4/4 run consumer_VTK" "${build}/consumer_VTK")
+  message(STATUS "consumer_VTK output:\n${step_output}")
+  if(NOT step_output MATCHES "VTK version: ${PARAVIEW_VTK_VERSION}")
+    message(FATAL_ERROR "consumer test: consumer_VTK does not run with ParaView's VTK ${PARAVIEW_VTK_VERSION}:\n${step_output}")
   endif()
 endif()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # scripts/install-deps.sh never removes a package: with a fake apt-get whose simulated install
-# would remove python3-paraview (as libvtk9-dev does on Debian bookworm), the script must name
-# the package, install nothing and fail; with a simulation that removes nothing it installs.
+# would remove python3-vtk9 (as python3-paraview does on Debian bookworm), the script must name
+# the package, install nothing and fail; with a simulation that removes nothing it installs the
+# ParaView set by default and Debian's VTK with --debian-vtk.
 # Run as: test_install_deps.sh <path of install-deps.sh>
 set -euo pipefail
 script=$1
@@ -30,21 +31,36 @@ chmod +x "$work/bin/"*
 
 fail() { printf 'test_install_deps: %b\n' "$*" >&2; exit 1; }
 
-# 1. The simulation would remove python3-paraview: stop, name it, install nothing.
-export FAKE_LOG="$work/log1" FAKE_INSTALLED="" \
-  FAKE_SIMULATION='Inst python3-vtk9 (9.1.0)\nRemv python3-paraview [5.11.0]\nInst libvtk9-dev (9.1.0)\n'
+# 1. The default (ParaView) set where Debian's VTK is installed: the simulation would remove
+#    python3-vtk9; stop, name it, say how to go on, install nothing.
+export FAKE_LOG="$work/log1" FAKE_INSTALLED="libvtk9-dev python3-vtk9" \
+  FAKE_SIMULATION='Inst python3-paraview (5.11.0)\nRemv python3-vtk9 [9.1.0]\nRemv libvtk9-dev [9.1.0]\n'
 if output=$(PATH="$work/bin:$PATH" bash "$script" 2>&1); then
-  fail "the script succeeded although apt would remove python3-paraview:\n$output"
+  fail "the script succeeded although apt would remove python3-vtk9:\n$output"
 fi
 grep -q "would REMOVE" <<<"$output" || fail "no message about the removal:\n$output"
-grep -q "python3-paraview" <<<"$output" || fail "the package to be removed is not named:\n$output"
+grep -q "python3-vtk9" <<<"$output" || fail "the package to be removed is not named:\n$output"
+grep -q -- "--debian-vtk" <<<"$output" || fail "the way on (--debian-vtk) is not named:\n$output"
 if grep -q "install -y" "$FAKE_LOG"; then fail "apt-get install -y was called:\n$(cat "$FAKE_LOG")"; fi
 
-# 2. python3-paraview is installed: libvtk9-dev is left out, the rest is installed.
-export FAKE_LOG="$work/log2" FAKE_INSTALLED="python3-paraview" FAKE_SIMULATION='Inst cmake (3.25)\n'
-output=$(PATH="$work/bin:$PATH" bash "$script" 2>&1) || fail "failed with python3-paraview installed:\n$output"
+# 2. The default set on a fresh machine: ParaView with its Python, no libvtk9-dev.
+export FAKE_LOG="$work/log2" FAKE_INSTALLED="" FAKE_SIMULATION='Inst cmake (3.25)\n'
+output=$(PATH="$work/bin:$PATH" bash "$script" 2>&1) || fail "the default set failed:\n$output"
+grep "install -y" "$FAKE_LOG" | grep -q " python3-paraview " || fail "python3-paraview was not installed:\n$(cat "$FAKE_LOG")"
+grep "install -y" "$FAKE_LOG" | grep -q "libvtk9-dev" && fail "libvtk9-dev was installed with the ParaView set"
+
+# 3. --debian-vtk where python3-paraview is installed: libvtk9-dev is left out, the rest is
+#    installed.
+export FAKE_LOG="$work/log3" FAKE_INSTALLED="python3-paraview" FAKE_SIMULATION='Inst cmake (3.25)\n'
+output=$(PATH="$work/bin:$PATH" bash "$script" --debian-vtk 2>&1) || fail "failed with python3-paraview installed:\n$output"
 grep -q "libvtk9-dev is left out" <<<"$output" || fail "no word on leaving libvtk9-dev out:\n$output"
 grep "install -y" "$FAKE_LOG" | grep -q "libvtk9-dev" && fail "libvtk9-dev was installed beside python3-paraview"
 grep -q "install -y.* clang " "$FAKE_LOG" || fail "clang was not installed:\n$(cat "$FAKE_LOG")"
 
-echo "test_install_deps: the script stops before a removal and keeps ParaView's Python"
+# 4. --debian-vtk on a fresh machine installs libvtk9-dev and no ParaView.
+export FAKE_LOG="$work/log4" FAKE_INSTALLED="" FAKE_SIMULATION='Inst cmake (3.25)\n'
+output=$(PATH="$work/bin:$PATH" bash "$script" --debian-vtk 2>&1) || fail "--debian-vtk failed:\n$output"
+grep "install -y" "$FAKE_LOG" | grep -q "libvtk9-dev" || fail "libvtk9-dev was not installed with --debian-vtk"
+grep "install -y" "$FAKE_LOG" | grep -q "paraview" && fail "ParaView was installed with --debian-vtk"
+
+echo "test_install_deps: the script stops before a removal, installs ParaView's set by default and Debian's VTK on request"

@@ -102,3 +102,88 @@ class Messages:
 
     def text(self):
         return self.window.GetOutput()
+
+
+# ---- helpers of the tests of Parametrize and Seed and Flow Texture (issue 16, item 2) ----
+
+def fetch_port(proxy, port):
+    """The output `port` of `proxy`, brought to this process."""
+    proxy.UpdatePipeline()
+    return servermanager.Fetch(proxy, idx=port)
+
+
+def array_values(data, name, cells=False):
+    """The values of the point (cell) array `name` of `data` as a list of tuples."""
+    attributes = data.GetCellData() if cells else data.GetPointData()
+    array = attributes.GetArray(name)
+    if array is None:
+        raise AssertionError("no %s array '%s'" % ("cell" if cells else "point", name))
+    return [array.GetTuple(i) for i in range(array.GetNumberOfTuples())]
+
+
+def expect_same_array(actual, expected, name, cells=False, tolerance=1e-9):
+    """The arrays `name` of `actual` and `expected` agree within `tolerance` relative to the
+    largest magnitude of the expected values."""
+    a, e = array_values(actual, name, cells), array_values(expected, name, cells)
+    if len(a) != len(e) or (a and len(a[0]) != len(e[0])):
+        raise AssertionError("%s: %d tuples against %d expected" % (name, len(a), len(e)))
+    scale = max([abs(x) for t in e for x in t] + [1e-300])
+    worst = max([abs(x - y) for s, t in zip(a, e) for x, y in zip(s, t)] + [0.0]) / scale
+    if not worst <= tolerance:
+        raise AssertionError("%s: differs by %g relative (tolerance %g)" % (name, worst, tolerance))
+    print("%s: same values (largest relative difference %.2g)" % (name, worst))
+
+
+def expect_same_polylines(actual, expected, what, tolerance=1e-9):
+    """The same polylines (cells, their points within `tolerance` of the bounding-box diagonal)."""
+    if actual.GetNumberOfCells() != expected.GetNumberOfCells():
+        raise AssertionError("%s: %d polylines against %d expected" % (
+            what, actual.GetNumberOfCells(), expected.GetNumberOfCells()))
+    for i in range(expected.GetNumberOfCells()):
+        if actual.GetCell(i).GetNumberOfPoints() != expected.GetCell(i).GetNumberOfPoints():
+            raise AssertionError("%s: polyline %d has %d points against %d expected" % (
+                what, i, actual.GetCell(i).GetNumberOfPoints(), expected.GetCell(i).GetNumberOfPoints()))
+    if expected.GetNumberOfPoints() > 0:
+        expect_same_surface(actual, expected, what, tolerance)
+
+
+def output_sizes(proxy, ports):
+    """(points, cells) of each output port of `proxy` in `ports`."""
+    return [(o.GetNumberOfPoints(), o.GetNumberOfCells()) for o in [fetch_port(proxy, k) for k in ports]]
+
+
+def expect_error_keeps_outputs(proxy, ports, before, fragments, what):
+    """Updating `proxy` reports an error containing every string of `fragments`, and its outputs
+    keep the sizes `before` (an output_sizes() of the last good run)."""
+    with Messages() as messages:
+        after = output_sizes(proxy, ports)
+    text = messages.text()
+    for fragment in fragments + ["the previous output is kept"]:
+        if fragment not in text:
+            raise AssertionError("%s: expected a message with '%s', got: %s" % (what, fragment, text))
+    if after != before:
+        raise AssertionError("%s: the previous outputs were not kept (%s, before %s)" % (what, after, before))
+    print("%s: %s" % (what, text.strip().splitlines()[-1]))
+
+
+def aligned_patch_reader(setup, name, patch):
+    """The patch of `patch` (align's 11 arguments of paraview_reference) written by the library,
+    read in ParaView."""
+    from paraview.simple import XMLPolyDataReader
+    vtp = setup.path(name + "_patch.vtp")
+    setup.run_reference("align", setup.field(), vtp, *patch)
+    return XMLPolyDataReader(FileName=[vtp])
+
+
+def read_text_points(filename):
+    """Points written one per line as `x y z`."""
+    with open(filename) as f:
+        return [tuple(float(x) for x in line.split()) for line in f if line.strip()]
+
+
+def points_of(data):
+    return [data.GetPoint(i) for i in range(data.GetNumberOfPoints())]
+
+
+def distance(p, q):
+    return sum((p[d] - q[d]) ** 2 for d in range(3)) ** 0.5

@@ -8,9 +8,11 @@
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/VTK_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/measure.h>
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkDoubleArray.h>
@@ -25,9 +27,11 @@
 #include <vtkSmartPointer.h>
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <sstream>
 #include <variant>
 #include <vector>
 
@@ -222,6 +226,63 @@ void add_point_velocities(vtkPolyData* polydata, const Field& field)
   polydata->GetPointData()->AddArray(velocity);
   polydata->GetPointData()->SetActiveVectors("velocity");
   polydata->GetPointData()->AddArray(sampled);
+}
+
+/// Bounds (xmin, xmax, ymin, ymax, zmin, zmax) in words, for messages ("x a..b, y c..d, z e..f").
+inline std::string bounds_text(const double b[6])
+{
+  std::ostringstream os;
+  os << "x " << b[0] << ".." << b[1] << ", y " << b[2] << ".." << b[3] << ", z " << b[4] << ".." << b[5];
+  return os.str();
+}
+
+/// The bounds of `data_set` in words, for messages.
+inline std::string bounds_text(vtkDataSet* data_set)
+{
+  double b[6];
+  data_set->GetBounds(b);
+  return bounds_text(b);
+}
+
+/// The arrays of an aligned surface `tm` shown as `polydata` (its points in vertex index order,
+/// its triangles in face index order, as `to_polydata()` makes them): point data `velocity` and
+/// `velocity_sampled`, cell data `normalized_flux` (|n.v|/|v| per face, -1 where the field has no
+/// sample), field data `normalized_flux` (absent when no face has a sample) and
+/// `sampled_area_fraction`.  Returns the surface's normalized flux.
+template <class Field>
+FAS::Normalized_flux add_alignment_arrays(vtkPolyData* polydata, Mesh& tm, const Field& field)
+{
+  add_point_velocities(polydata, field);
+  auto face_flux = make_array("normalized_flux", 1, vtkIdType(tm.number_of_faces()));
+  auto flux_map = tm.add_property_map<Mesh::Face_index, double>("f:fas_paraview_flux", -1.).first;
+  FAS::compute_face_normalized_flux(tm, field, flux_map);
+  // NaN where the face has no flow sample (the library's -1): ParaView shows it in the NaN
+  // colour and leaves it out of the colour range.
+  for (Mesh::Face_index f : tm.faces())
+    face_flux->SetValue(vtkIdType(f.idx()),
+                        flux_map[f] < 0 ? std::numeric_limits<double>::quiet_NaN() : flux_map[f]);
+  tm.remove_property_map(flux_map);
+  polydata->GetCellData()->AddArray(face_flux);
+  polydata->GetCellData()->SetActiveScalars("normalized_flux");
+
+  const FAS::Normalized_flux flux = FAS::normalized_flux(tm, field);
+  if (flux.value)
+    add_field_value(polydata, "normalized_flux", *flux.value);
+  add_field_value(polydata, "sampled_area_fraction", flux.sampled_area_fraction);
+  return flux;
+}
+
+/// The warning for an aligned surface of which more than 5% of the area has no flow sample, or
+/// an empty string.
+inline std::string unsampled_area_warning(const FAS::Normalized_flux& flux)
+{
+  if (flux.sampled_area_fraction >= 0.95)
+    return std::string();
+  std::ostringstream os;
+  os << 100. * (1. - flux.sampled_area_fraction)
+     << "% of the surface's area has no flow sample (it reaches out of the data): that part is not aligned; "
+        "move the surface or make it smaller";
+  return os.str();
 }
 
 } // namespace fas_paraview

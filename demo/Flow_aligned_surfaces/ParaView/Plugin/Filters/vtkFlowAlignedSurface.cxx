@@ -19,6 +19,7 @@
 #include <chrono>
 #include <iterator>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -283,13 +284,9 @@ int vtkFlowAlignedSurface::RequestData(
       const FAS::Normalized_flux start = FAS::normalized_flux(in.tm, in.field);
       if (!start.value)
       {
-        const std::array<double, 6>& bounds = pieces.bounds;
         in.restart = true; // nothing of this pose is kept
         throw std::invalid_argument("the patch at centre " + point_text(this->Center) +
-          " has no flow sample: it lies outside the input data set (bounds x " +
-          std::to_string(bounds[0]) + ".." + std::to_string(bounds[1]) + ", y " +
-          std::to_string(bounds[2]) + ".." + std::to_string(bounds[3]) + ", z " +
-          std::to_string(bounds[4]) + ".." + std::to_string(bounds[5]) +
+          " has no flow sample: it lies outside the input data set (bounds " + bounds_text(pieces.bounds.data()) +
           "); move it into the data");
       }
     }
@@ -326,24 +323,15 @@ int vtkFlowAlignedSurface::RequestData(
       for (Mesh::Vertex_index v : shown.vertices())
         shown.point(v) = in.positions[k][i++];
     }
-    // The surface with its samples (evaluated twice on several ranks: once to learn the points).
-    const auto with_samples = [&in, &shown] {
-      vtkSmartPointer<vtkPolyData> result = to_polydata(shown);
-      add_point_velocities(result, in.field);
-      auto face_flux = make_array("normalized_flux", 1, vtkIdType(shown.number_of_faces()));
-      auto flux_map = shown.add_property_map<Mesh::Face_index, double>("f:flux", -1.).first;
-      FAS::compute_face_normalized_flux(shown, in.field, flux_map);
-      for (Mesh::Face_index f : shown.faces())
-        face_flux->SetValue(vtkIdType(f.idx()), flux_map[f]);
-      result->GetCellData()->AddArray(face_flux);
-      result->GetCellData()->SetActiveScalars("normalized_flux");
-      return std::make_pair(result, FAS::normalized_flux(shown, in.field));
+    // The surface with its arrays (evaluated twice on several ranks: once to learn the points
+    // it samples, which are then probed).
+    const auto with_arrays = [&in, &shown] {
+      vtkSmartPointer<vtkPolyData> polydata = to_polydata(shown);
+      const FAS::Normalized_flux measured = add_alignment_arrays(polydata, shown, in.field);
+      return std::make_pair(polydata, measured);
     };
-    in.field.probe_points_of(with_samples);
-    const auto [result, flux] = with_samples();
-    if (flux.value)
-      add_field_value(result, "normalized_flux", *flux.value);
-    add_field_value(result, "sampled_area_fraction", flux.sampled_area_fraction);
+    in.field.probe_points_of(with_arrays);
+    const auto [result, flux] = with_arrays();
     add_field_value(result, "iteration", double(k));
     add_field_value(result, "converged", in.converged && k + 1 >= in.positions.size() ? 1. : 0.);
     add_field_value(result, "max_rotation_angle", k == 0 ? 0. : in.reports[k - 1].max_rotation_angle);
@@ -361,10 +349,8 @@ int vtkFlowAlignedSurface::RequestData(
         add_field_value(result, "step_ms_per_iteration", step_ms / double(iterations_now));
       }
     }
-    if (flux.sampled_area_fraction < 0.95)
-      vtkWarningMacro(<< "Flow-Aligned Surface: " << 100. * (1. - flux.sampled_area_fraction)
-                      << "% of the surface's area has no flow sample (it reaches out of the data): "
-                         "that part is not aligned; move the patch or make it smaller");
+    if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
+      vtkWarningMacro(<< "Flow-Aligned Surface: " << warning);
     output->ShallowCopy(result);
     in.last_output = result;
     return 1;

@@ -17,7 +17,7 @@
 /// (shape, size, faces) or new parameters factor again.
 ///
 /// Output arrays: point data `velocity`, `velocity_sampled`; cell data `normalized_flux`
-/// (|n.v|/|v| per face, -1 where the field has no sample); field data `normalized_flux` (absent
+/// (|n.v|/|v| per face, NaN where the field has no sample); field data `normalized_flux` (absent
 /// when no face has a sample), `sampled_area_fraction`, `iteration`, `converged`,
 /// `max_rotation_angle` and `number_of_factorizations`.
 ///

@@ -1,0 +1,106 @@
+// What the filters that work on a given surface share (Parametrize and Seed, Flow Texture):
+// input port 0 the data set with the velocity, input port 1 a triangulated surface; the surface
+// as a mesh whose vertex i is the surface's point i; vertex and face values as point and cell
+// arrays; and the previous outputs, kept when an input is bad.  Private to the plugin.
+#ifndef FAS_PARAVIEW_SURFACE_INPUT_H
+#define FAS_PARAVIEW_SURFACE_INPUT_H
+
+#include "fas_paraview_support.h"
+
+#include <vtkCellData.h>
+#include <vtkDataObject.h>
+#include <vtkInformationVector.h>
+
+#include <string>
+#include <vector>
+
+namespace fas_paraview {
+
+/// Port 0: any data set (the velocity); port 1: polygonal data (the surface).
+inline int fill_surface_filter_input_port(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkDataSet" : "vtkPolyData");
+  return 1;
+}
+
+/// The velocity of input port 0 and the surface of input port 1.
+struct Surface_input {
+  vtkDataSet* data = nullptr;
+  vtkPolyData* surface = nullptr;
+  Velocity_field field;
+  Mesh tm;
+};
+
+/// Reads both inputs of `filter`.  \throws std::invalid_argument naming the input and the fault
+/// (no 3-component array, no triangles on the surface).
+inline Surface_input read_surface_input(vtkAlgorithm* filter, vtkInformationVector** inputVector)
+{
+  Surface_input in;
+  in.data = vtkDataSet::GetData(inputVector[0], 0);
+  in.surface = vtkPolyData::GetData(inputVector[1], 0);
+  if (in.surface == nullptr)
+    throw std::invalid_argument("the Surface input (port 1) is not polygonal data");
+  in.field = make_velocity_field(in.data, selected_array_name(filter));
+  in.tm = mesh_from_polydata(in.surface, "the Surface input (port 1)");
+  // Point i is vertex i of the mesh, so a point of no triangle cannot be dropped silently.
+  for (Mesh::Vertex_index v : in.tm.vertices())
+    if (in.tm.is_isolated(v))
+      throw std::invalid_argument("the Surface input (port 1): point " + std::to_string(v.idx()) +
+                                  " belongs to no triangle; remove such points first (Filters > Clean)");
+  return in;
+}
+
+/// Adds the values of a vertex property map of `tm` (vertex i = point i) to `polydata`'s point
+/// data as the array `name` of `components` components (`value(v)` gives a double or an array).
+template <class Values>
+void add_vertex_array(vtkPolyData* polydata, const Mesh& tm, const char* name, int components,
+                      const Values& value)
+{
+  auto array = make_array(name, components, vtkIdType(tm.number_of_vertices()));
+  for (Mesh::Vertex_index v : tm.vertices()) {
+    if constexpr (std::is_arithmetic_v<std::decay_t<decltype(value(v))>>)
+      array->SetValue(vtkIdType(v.idx()), value(v));
+    else
+      for (int c = 0; c < components; ++c)
+        array->SetComponent(vtkIdType(v.idx()), c, value(v)[std::size_t(c)]);
+  }
+  polydata->GetPointData()->AddArray(array);
+}
+
+/// The outputs of the last successful run, given again when a run fails.
+class Kept_outputs {
+public:
+  /// Remembers the outputs of `outputVector` (after a successful run).
+  void keep(vtkInformationVector* outputVector)
+  {
+    m_outputs.clear();
+    for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port) {
+      vtkDataObject* output = vtkDataObject::GetData(outputVector, port);
+      vtkSmartPointer<vtkDataObject> copy;
+      if (output != nullptr) {
+        copy.TakeReference(output->NewInstance());
+        copy->ShallowCopy(output);
+      }
+      m_outputs.push_back(copy);
+    }
+  }
+
+  /// Gives the kept outputs again; returns whether there were any.
+  bool restore(vtkInformationVector* outputVector) const
+  {
+    if (m_outputs.empty())
+      return false;
+    for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
+      if (vtkDataObject* output = vtkDataObject::GetData(outputVector, port);
+          output != nullptr && std::size_t(port) < m_outputs.size() && m_outputs[std::size_t(port)])
+        output->ShallowCopy(m_outputs[std::size_t(port)]);
+    return true;
+  }
+
+private:
+  std::vector<vtkSmartPointer<vtkDataObject>> m_outputs;
+};
+
+} // namespace fas_paraview
+
+#endif // FAS_PARAVIEW_SURFACE_INPUT_H

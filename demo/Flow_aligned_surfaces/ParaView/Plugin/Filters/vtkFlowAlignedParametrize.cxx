@@ -1,0 +1,226 @@
+#include "vtkFlowAlignedParametrize.h"
+
+#include "fas_paraview_surface_input.h"
+
+#include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
+#include <CGAL/Flow_aligned_surfaces/parametrize.h>
+#include <CGAL/Flow_aligned_surfaces/seeds.h>
+
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+
+#include <cmath>
+#include <iterator>
+#include <limits>
+
+using namespace fas_paraview;
+
+vtkStandardNewMacro(vtkFlowAlignedParametrize);
+
+namespace {
+
+using Vertex = Mesh::Vertex_index;
+using Scalar_map = Mesh::Property_map<Vertex, double>;
+
+// The area-weighted centroid of the triangles of `tm`.
+Point area_centroid(const Mesh& tm)
+{
+  Vector sum = CGAL::NULL_VECTOR;
+  double area = 0;
+  for (Mesh::Face_index f : tm.faces()) {
+    const auto h = tm.halfedge(f);
+    const Point &a = tm.point(tm.source(h)), &b = tm.point(tm.target(h)),
+                &c = tm.point(tm.target(tm.next(h)));
+    const double w = std::sqrt(CGAL::cross_product(b - a, c - a).squared_length()) / 2;
+    sum = sum + w * (CGAL::centroid(a, b, c) - CGAL::ORIGIN);
+    area += w;
+  }
+  return CGAL::ORIGIN + sum / area;
+}
+
+// The vertex of `tm` nearest to `p` (the first one of equal distance).
+Vertex nearest_vertex(const Mesh& tm, const Point& p)
+{
+  Vertex nearest;
+  double best = std::numeric_limits<double>::infinity();
+  for (Vertex v : tm.vertices())
+    if (const double d = CGAL::squared_distance(tm.point(v), p); d < best) {
+      best = d;
+      nearest = v;
+    }
+  return nearest;
+}
+
+// The named parameters of the guidance's normalization: none (the library's default) or
+// normalized(yes).
+template <class Call>
+void with_normalization(int normalization, const Call& call)
+{
+  if (normalization == vtkFlowAlignedParametrize::LIBRARY_DEFAULT)
+    call(CGAL::parameters::default_values());
+  else
+    call(FAS::parameters::normalized(normalization == vtkFlowAlignedParametrize::NORMALIZED));
+}
+
+// The iso-contours of `f` at `n` evenly spaced values, as polylines with the value as point and
+// cell array `name`.
+vtkSmartPointer<vtkPolyData> iso_contours(const Mesh& tm, Scalar_map f, std::size_t n, const char* name)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  std::vector<double> point_values, cell_values;
+  for (double value : FAS::evenly_spaced_iso_values(tm, f, n)) {
+    std::vector<Polyline> polylines;
+    FAS::extract_iso_contours(tm, f, std::vector<double>{value}, std::back_inserter(polylines));
+    for (const Polyline& polyline : polylines) {
+      lines->InsertNextCell(vtkIdType(polyline.size()));
+      for (const Point& p : polyline) {
+        lines->InsertCellPoint(points->InsertNextPoint(p.x(), p.y(), p.z()));
+        point_values.push_back(value);
+      }
+      cell_values.push_back(value);
+    }
+  }
+  auto curves = vtkSmartPointer<vtkPolyData>::New();
+  curves->SetPoints(points);
+  curves->SetLines(lines);
+  auto point_array = make_array(name, 1, vtkIdType(point_values.size()));
+  for (std::size_t i = 0; i < point_values.size(); ++i)
+    point_array->SetValue(vtkIdType(i), point_values[i]);
+  auto cell_array = make_array(name, 1, vtkIdType(cell_values.size()));
+  for (std::size_t i = 0; i < cell_values.size(); ++i)
+    cell_array->SetValue(vtkIdType(i), cell_values[i]);
+  curves->GetPointData()->AddArray(point_array);
+  curves->GetPointData()->SetActiveScalars(name);
+  curves->GetCellData()->AddArray(cell_array);
+  return curves;
+}
+
+// Points as vertex cells.
+vtkSmartPointer<vtkPolyData> point_cloud(const std::vector<Point>& seeds)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto verts = vtkSmartPointer<vtkCellArray>::New();
+  for (const Point& p : seeds) {
+    const vtkIdType id = points->InsertNextPoint(p.x(), p.y(), p.z());
+    verts->InsertNextCell(1, &id);
+  }
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(points);
+  cloud->SetVerts(verts);
+  return cloud;
+}
+
+} // namespace
+
+struct vtkFlowAlignedParametrize::Internals {
+  Kept_outputs kept;
+};
+
+vtkFlowAlignedParametrize::vtkFlowAlignedParametrize()
+  : Parametrization(TANGENTIAL)
+  , Normalization(LIBRARY_DEFAULT)
+  , Angle(0)
+  , SourcePoint{ 0, 0, 0 }
+  , SourceAtCentroid(1)
+  , IntrinsicDelaunay(1)
+  , NumberOfSeedCurves(10)
+  , SeedPointSpacing(0.1)
+  , RandomSeed(0)
+  , Internal(new Internals)
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(3);
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS, vtkDataSetAttributes::VECTORS);
+}
+
+vtkFlowAlignedParametrize::~vtkFlowAlignedParametrize()
+{
+  delete this->Internal;
+}
+
+int vtkFlowAlignedParametrize::FillInputPortInformation(int port, vtkInformation* info)
+{
+  return fill_surface_filter_input_port(port, info);
+}
+
+int vtkFlowAlignedParametrize::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  try
+  {
+    Surface_input in = read_surface_input(this, inputVector);
+    Mesh& tm = in.tm;
+    auto surface = vtkSmartPointer<vtkPolyData>::New();
+    surface->ShallowCopy(in.surface);
+    const char* contoured = "r";
+    Scalar_map f;
+    if (this->Parametrization == CIRCULAR)
+    {
+      const Point source = this->SourceAtCentroid
+        ? area_centroid(tm)
+        : Point(this->SourcePoint[0], this->SourcePoint[1], this->SourcePoint[2]);
+      const Vertex source_vertex = nearest_vertex(tm, source);
+      f = tm.add_property_map<Vertex, double>("v:distance", 0.).first;
+      FAS::compute_geodesic_distance(tm, source_vertex, f,
+        FAS::parameters::intrinsic_delaunay(this->IntrinsicDelaunay != 0));
+      contoured = "geodesic_distance";
+      add_vertex_array(surface, tm, contoured, 1, [&](Vertex v) { return f[v]; });
+      add_field_value(surface, "source_point_id", double(source_vertex.idx()));
+    }
+    else
+    {
+      f = tm.add_property_map<Vertex, double>("v:r", 0.).first;
+      Scalar_map s = tm.add_property_map<Vertex, double>("v:s", 0.).first;
+      if (this->Parametrization == ORTHOGONAL)
+        with_normalization(this->Normalization, [&](const auto& np) {
+          FAS::parametrize_orthogonal(tm, in.field, f, s, FAS::parameters::angle(this->Angle, np));
+        });
+      else
+        with_normalization(this->Normalization,
+          [&](const auto& np) { FAS::parametrize_tangential(tm, in.field, f, s, np); });
+      add_vertex_array(surface, tm, "r", 1, [&](Vertex v) { return f[v]; });
+      add_vertex_array(surface, tm, "s", 1, [&](Vertex v) { return s[v]; });
+    }
+    surface->GetPointData()->SetActiveScalars(contoured);
+
+    vtkSmartPointer<vtkPolyData> curves =
+      iso_contours(tm, f, std::size_t(this->NumberOfSeedCurves), contoured);
+    std::vector<Point> seeds;
+    if (this->SeedPointSpacing > 0)
+      FAS::sample_seed_points(tm, this->SeedPointSpacing, std::back_inserter(seeds),
+        CGAL::parameters::random_seed(unsigned(this->RandomSeed)));
+
+    vtkPolyData::GetData(outputVector, 0)->ShallowCopy(surface);
+    vtkPolyData::GetData(outputVector, 1)->ShallowCopy(curves);
+    vtkPolyData::GetData(outputVector, 2)->ShallowCopy(point_cloud(seeds));
+    this->Internal->kept.keep(outputVector);
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    const bool kept = this->Internal->kept.restore(outputVector);
+    vtkErrorMacro(<< "Parametrize and Seed: " << e.what()
+                  << (kept ? "; the previous output is kept" : ""));
+    return 1;
+  }
+}
+
+void vtkFlowAlignedParametrize::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Parametrization: " << this->Parametrization << "\n";
+  os << indent << "Normalization: " << this->Normalization << "\n";
+  os << indent << "Angle: " << this->Angle << "\n";
+  os << indent << "SourcePoint: " << this->SourcePoint[0] << " " << this->SourcePoint[1] << " "
+     << this->SourcePoint[2] << "\n";
+  os << indent << "SourceAtCentroid: " << this->SourceAtCentroid << "\n";
+  os << indent << "IntrinsicDelaunay: " << this->IntrinsicDelaunay << "\n";
+  os << indent << "NumberOfSeedCurves: " << this->NumberOfSeedCurves << "\n";
+  os << indent << "SeedPointSpacing: " << this->SeedPointSpacing << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+}

@@ -1,0 +1,155 @@
+#include "vtkFlowTexture.h"
+
+#include "fas_paraview_surface_input.h"
+
+#include <CGAL/Flow_aligned_surfaces/flow_texture.h>
+#include <CGAL/Flow_aligned_surfaces/parametrize.h>
+
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+using namespace fas_paraview;
+
+vtkStandardNewMacro(vtkFlowTexture);
+
+namespace {
+
+using Vertex = Mesh::Vertex_index;
+using Face = Mesh::Face_index;
+
+// The texture as an RGB image of unsigned chars (texel (x, y) is point y * width + x, as in
+// Texture_image), each channel round(255 c).
+vtkSmartPointer<vtkImageData> to_image(const FAS::Texture_image& texture)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(int(texture.width), int(texture.height), 1);
+  auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  rgb->SetName("texture");
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(vtkIdType(texture.width * texture.height));
+  for (std::size_t i = 0; i < texture.pixels.size(); ++i)
+    rgb->SetValue(vtkIdType(i),
+      (unsigned char)std::lround(255 * std::clamp(double(texture.pixels[i]), 0., 1.)));
+  image->GetPointData()->SetScalars(rgb);
+  return image;
+}
+
+} // namespace
+
+struct vtkFlowTexture::Internals {
+  Kept_outputs kept;
+};
+
+vtkFlowTexture::vtkFlowTexture()
+  : Scale(0.4)
+  , Offset(0)
+  , MinRelativeSpeed(0)
+  , Texture(NOISE)
+  , TextureWidth(128)
+  , TextureHeight(128)
+  , FilterLength(24)
+  , NoiseSeed(0)
+  , ArrowsAlong(4)
+  , ArrowsAcross(4)
+  , Internal(new Internals)
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS, vtkDataSetAttributes::VECTORS);
+}
+
+vtkFlowTexture::~vtkFlowTexture()
+{
+  delete this->Internal;
+}
+
+int vtkFlowTexture::FillInputPortInformation(int port, vtkInformation* info)
+{
+  return fill_surface_filter_input_port(port, info);
+}
+
+int vtkFlowTexture::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkPolyData" : "vtkImageData");
+  return 1;
+}
+
+int vtkFlowTexture::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  // The texture is one whole image.
+  const int extent[6] = { 0, this->TextureWidth - 1, 0, this->TextureHeight - 1, 0, 0 };
+  vtkInformation* info = outputVector->GetInformationObject(1);
+  info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  return 1;
+}
+
+int vtkFlowTexture::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  try
+  {
+    Surface_input in = read_surface_input(this, inputVector);
+    Mesh& tm = in.tm;
+    auto r = tm.add_property_map<Vertex, double>("v:r", 0.).first;
+    auto s = tm.add_property_map<Vertex, double>("v:s", 0.).first;
+    auto uv = tm.add_property_map<Vertex, std::array<double, 2>>("v:uv").first;
+    auto mask = tm.add_property_map<Face, double>("f:mask", 1.).first;
+    FAS::parametrize_tangential(tm, in.field, r, s, FAS::parameters::normalized(false));
+    FAS::compute_flow_texture_coordinates(tm, r, s, uv, this->Scale, this->Offset);
+    FAS::compute_flow_texture_mask(
+      tm, in.field, r, mask, FAS::parameters::min_relative_speed(this->MinRelativeSpeed));
+    const FAS::Texture_image texture = this->Texture == ARROWS
+      ? FAS::make_arrow_texture(std::size_t(this->TextureWidth), std::size_t(this->TextureHeight),
+          std::size_t(this->ArrowsAlong), std::size_t(this->ArrowsAcross))
+      : FAS::make_noise_texture(std::size_t(this->TextureWidth), std::size_t(this->TextureHeight),
+          this->FilterLength, std::uint32_t(this->NoiseSeed));
+
+    auto surface = vtkSmartPointer<vtkPolyData>::New();
+    surface->ShallowCopy(in.surface);
+    add_vertex_array(surface, tm, "r", 1, [&](Vertex v) { return r[v]; });
+    add_vertex_array(surface, tm, "s", 1, [&](Vertex v) { return s[v]; });
+    add_vertex_array(surface, tm, "texture_coordinates", 2, [&](Vertex v) { return uv[v]; });
+    surface->GetPointData()->SetTCoords(surface->GetPointData()->GetArray("texture_coordinates"));
+    auto face_mask = make_array("texture_mask", 1, vtkIdType(tm.number_of_faces()));
+    for (Face f : tm.faces())
+      face_mask->SetValue(vtkIdType(f.idx()), mask[f]);
+    surface->GetCellData()->AddArray(face_mask);
+    surface->GetCellData()->SetActiveScalars("texture_mask");
+
+    vtkPolyData::GetData(outputVector, 0)->ShallowCopy(surface);
+    vtkImageData::GetData(outputVector, 1)->ShallowCopy(to_image(texture));
+    this->Internal->kept.keep(outputVector);
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    const bool kept = this->Internal->kept.restore(outputVector);
+    vtkErrorMacro(<< "Flow Texture: " << e.what() << (kept ? "; the previous output is kept" : ""));
+    return 1;
+  }
+}
+
+void vtkFlowTexture::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scale: " << this->Scale << "\n";
+  os << indent << "Offset: " << this->Offset << "\n";
+  os << indent << "MinRelativeSpeed: " << this->MinRelativeSpeed << "\n";
+  os << indent << "Texture: " << this->Texture << "\n";
+  os << indent << "TextureWidth: " << this->TextureWidth << "\n";
+  os << indent << "TextureHeight: " << this->TextureHeight << "\n";
+  os << indent << "FilterLength: " << this->FilterLength << "\n";
+  os << indent << "NoiseSeed: " << this->NoiseSeed << "\n";
+  os << indent << "ArrowsAlong: " << this->ArrowsAlong << "\n";
+  os << indent << "ArrowsAcross: " << this->ArrowsAcross << "\n";
+}

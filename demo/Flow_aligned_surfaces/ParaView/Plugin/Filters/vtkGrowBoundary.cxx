@@ -1,0 +1,145 @@
+#include "vtkGrowBoundary.h"
+
+#include "fas_paraview_support.h"
+
+#include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
+
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkMath.h>
+#include <vtkObjectFactory.h>
+
+#include <string>
+
+using namespace fas_paraview;
+
+vtkStandardNewMacro(vtkGrowBoundary);
+
+struct vtkGrowBoundary::Internals {
+  vtkSmartPointer<vtkPolyData> last_output;
+};
+
+vtkGrowBoundary::vtkGrowBoundary()
+  : Distance(0.1)
+  , GrowthMode(ALL)
+  , GrowthDirection{ 1, 0, 0 }
+  , NumberOfGrowthSteps(1)
+  , Alignment(TANGENTIAL)
+  , MaxRotationAngle(0.1)
+  , MaxDihedralAngle(vtkMath::Pi() / 2)
+  , ConvergenceAngle(1e-6)
+  , NumberOfIterations(100)
+  , Internal(new Internals)
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS, vtkDataSetAttributes::VECTORS);
+}
+
+vtkGrowBoundary::~vtkGrowBoundary()
+{
+  delete this->Internal;
+}
+
+int vtkGrowBoundary::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkDataSet" : "vtkPolyData");
+  return 1;
+}
+
+int vtkGrowBoundary::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  Internals& in = *this->Internal;
+  vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
+  vtkPolyData* surface = vtkPolyData::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+
+  try
+  {
+    // Both outlive the deformation, which holds them by reference.
+    const Velocity_field field = make_velocity_field(input, selected_array_name(this));
+    Mesh tm = mesh_from_polydata(surface, "the surface (input 1)");
+    const std::size_t input_vertices = tm.number_of_vertices();
+    if (!FAS::normalized_flux(tm, field).value)
+      throw std::invalid_argument("the surface (input 1) has no flow sample: it lies outside the input "
+                                  "data set (bounds " + bounds_text(input) + "); move it into the data");
+
+    const FAS::Alignment alignment =
+      this->Alignment == ORTHOGONAL ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL;
+    FAS::Flow_aligned_deformation<Mesh, Velocity_field> deformation(tm, field, alignment,
+      FAS::parameters::max_rotation_angle(this->MaxRotationAngle,
+        FAS::parameters::max_dihedral_angle(this->MaxDihedralAngle,
+          FAS::parameters::convergence_angle(
+            this->ConvergenceAngle, FAS::parameters::use_parallelism(true)))));
+
+    FAS::Growth_report grown;
+    FAS::Alignment_report aligned;
+    std::size_t iterations = 0;
+    std::vector<double> growth_step(input_vertices, 0.);
+    for (int step = 1; step <= this->NumberOfGrowthSteps; ++step)
+    {
+      FAS::Growth_report r;
+      if (this->GrowthMode == ACROSS_FLOW)
+        r = deformation.grow(this->Distance, FAS::parameters::across_flow(true));
+      else if (this->GrowthMode == DIRECTION)
+        r = deformation.grow(this->Distance,
+          FAS::parameters::growth_direction(
+            Vector(this->GrowthDirection[0], this->GrowthDirection[1], this->GrowthDirection[2])));
+      else
+        r = deformation.grow(this->Distance);
+      grown.number_of_new_vertices += r.number_of_new_vertices;
+      grown.number_of_new_faces += r.number_of_new_faces;
+      grown.number_of_grown_edges += r.number_of_grown_edges;
+      grown.grown_boundary_length += r.grown_boundary_length;
+      grown.added_area += r.added_area;
+      growth_step.resize(tm.number_of_vertices(), double(step));
+      aligned = deformation.run(std::size_t(this->NumberOfIterations));
+      iterations += aligned.number_of_iterations;
+    }
+
+    vtkSmartPointer<vtkPolyData> result = to_polydata(tm);
+    const FAS::Normalized_flux flux = add_alignment_arrays(result, tm, field);
+    auto step_array = make_array("growth_step", 1, vtkIdType(growth_step.size()));
+    for (std::size_t i = 0; i < growth_step.size(); ++i)
+      step_array->SetValue(vtkIdType(i), growth_step[i]);
+    result->GetPointData()->AddArray(step_array);
+    add_field_value(result, "number_of_iterations", double(iterations));
+    add_field_value(result, "converged", aligned.converged ? 1. : 0.);
+    add_field_value(result, "max_rotation_angle", aligned.max_rotation_angle);
+    add_field_value(result, "number_of_factorizations", double(deformation.number_of_factorizations()));
+    add_field_value(result, "number_of_new_vertices", double(grown.number_of_new_vertices));
+    add_field_value(result, "number_of_new_faces", double(grown.number_of_new_faces));
+    add_field_value(result, "number_of_grown_edges", double(grown.number_of_grown_edges));
+    add_field_value(result, "grown_boundary_length", grown.grown_boundary_length);
+    add_field_value(result, "added_area", grown.added_area);
+    if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
+      vtkWarningMacro(<< "Grow Boundary: " << warning);
+    output->ShallowCopy(result);
+    in.last_output = result;
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "Grow Boundary: " << e.what()
+                  << (in.last_output ? "; the previous output is kept" : ""));
+    if (in.last_output)
+      output->ShallowCopy(in.last_output);
+    return 1;
+  }
+}
+
+void vtkGrowBoundary::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Distance: " << this->Distance << "\n";
+  os << indent << "GrowthMode: " << this->GrowthMode << "\n";
+  os << indent << "GrowthDirection: " << this->GrowthDirection[0] << " " << this->GrowthDirection[1]
+     << " " << this->GrowthDirection[2] << "\n";
+  os << indent << "NumberOfGrowthSteps: " << this->NumberOfGrowthSteps << "\n";
+  os << indent << "Alignment: " << this->Alignment << "\n";
+  os << indent << "MaxRotationAngle: " << this->MaxRotationAngle << "\n";
+  os << indent << "MaxDihedralAngle: " << this->MaxDihedralAngle << "\n";
+  os << indent << "ConvergenceAngle: " << this->ConvergenceAngle << "\n";
+  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+}

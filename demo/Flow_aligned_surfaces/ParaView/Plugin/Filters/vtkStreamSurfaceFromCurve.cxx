@@ -1,0 +1,251 @@
+#include "vtkStreamSurfaceFromCurve.h"
+
+#include "fas_paraview_support.h"
+
+#include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
+
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkMath.h>
+#include <vtkObjectFactory.h>
+#include <vtkStringArray.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace fas_paraview;
+
+vtkStandardNewMacro(vtkStreamSurfaceFromCurve);
+
+namespace {
+
+// One value per seed curve, as a field-data array.
+void add_per_curve(vtkDataObject* data, const char* name, const std::vector<double>& values)
+{
+  auto array = make_array(name, 1, vtkIdType(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    array->SetValue(vtkIdType(i), values[i]);
+  data->GetFieldData()->AddArray(array);
+}
+
+void add_per_curve(vtkDataObject* data, const char* name, const std::vector<std::string>& values)
+{
+  auto array = vtkSmartPointer<vtkStringArray>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(vtkIdType(values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    array->SetValue(vtkIdType(i), values[i]);
+  data->GetFieldData()->AddArray(array);
+}
+
+bool surface_is_empty(const FAS::Stream_surface_report& r)
+{
+  return r.number_of_faces == 0;
+}
+
+} // namespace
+
+struct vtkStreamSurfaceFromCurve::Internals {
+  vtkSmartPointer<vtkPolyData> last_output;
+};
+
+vtkStreamSurfaceFromCurve::vtkStreamSurfaceFromCurve()
+  : IntegrationDirection(FORWARD)
+  , FrontSpacing(0)
+  , TimeLineStep(0)
+  , ArcLengthTimeLines(false)
+  , MaxTime(0)
+  , MaxLength(0)
+  , MaxNumberOfTimeLines(0)
+  , MaxNumberOfVertices(1000000)
+  , TearAngle(vtkMath::Pi() / 4)
+  , RelativeTolerance(1e-10)
+  , AbsoluteTolerance(1e-12)
+  , MaxNumberOfSteps(100000)
+  , Internal(new Internals)
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS, vtkDataSetAttributes::VECTORS);
+}
+
+vtkStreamSurfaceFromCurve::~vtkStreamSurfaceFromCurve()
+{
+  delete this->Internal;
+}
+
+int vtkStreamSurfaceFromCurve::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkDataSet" : "vtkPolyData");
+  return 1;
+}
+
+int vtkStreamSurfaceFromCurve::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  Internals& in = *this->Internal;
+  vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
+  vtkPolyData* seeds = vtkPolyData::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+
+  try
+  {
+    const Velocity_field field = make_velocity_field(input, selected_array_name(this));
+    const std::vector<Polyline> curves = polylines_from_polydata(seeds);
+    if (curves.empty())
+      throw std::invalid_argument(
+        "the seed input (port 1) has no line or polyline of two points or more; give it seed "
+        "curves (Parametrize and Seed's, a Line source, a contour)");
+
+    const bool limited = this->ArcLengthTimeLines ? this->MaxLength > 0 : this->MaxTime > 0;
+    const std::size_t max_time_lines = this->MaxNumberOfTimeLines > 0
+      ? std::size_t(this->MaxNumberOfTimeLines)
+      : (limited ? std::numeric_limits<std::size_t>::max() : std::size_t(100));
+    const FAS::Integration_direction direction = this->IntegrationDirection == BACKWARD
+      ? FAS::Integration_direction::BACKWARD
+      : (this->IntegrationDirection == BOTH ? FAS::Integration_direction::BOTH
+                                            : FAS::Integration_direction::FORWARD);
+
+    Mesh tm;
+    auto u_map = tm.add_property_map<Mesh::Vertex_index, double>("v:u", 0.).first;
+    auto t_map = tm.add_property_map<Mesh::Vertex_index, double>("v:t", 0.).first;
+    std::vector<std::size_t> curve_of_vertex;
+    std::vector<FAS::Stream_surface_report> reports;
+    const auto base = FAS::parameters::integration_direction(direction,
+      FAS::parameters::arc_length_time_lines(this->ArcLengthTimeLines,
+        FAS::parameters::max_number_of_time_lines(max_time_lines,
+          FAS::parameters::max_number_of_vertices(std::size_t(this->MaxNumberOfVertices),
+            FAS::parameters::tear_angle(this->TearAngle,
+              FAS::parameters::relative_tolerance(this->RelativeTolerance,
+                FAS::parameters::absolute_tolerance(this->AbsoluteTolerance,
+                  FAS::parameters::max_number_of_steps(std::size_t(this->MaxNumberOfSteps),
+                    FAS::parameters::seed_parameter_map(
+                      u_map, FAS::parameters::integration_time_map(t_map))))))))));
+
+    for (std::size_t c = 0; c < curves.size(); ++c)
+    {
+      // The library tells a given parameter from an absent one at compile time (an absent
+      // front spacing, time-line step or limit takes a default that depends on the seed or on
+      // the other parameters), so the optional ones are passed only when set.
+      const auto integrate = [&](const auto& np) {
+        reports.push_back(FAS::integrate_stream_surface(field, curves[c], tm, np));
+      };
+      const auto with_max_length = [&](const auto& np) {
+        if (this->MaxLength > 0)
+          integrate(FAS::parameters::max_length(this->MaxLength, np));
+        else
+          integrate(np);
+      };
+      const auto with_max_time = [&](const auto& np) {
+        if (this->MaxTime > 0)
+          with_max_length(FAS::parameters::max_time(this->MaxTime, np));
+        else
+          with_max_length(np);
+      };
+      const auto with_step = [&](const auto& np) {
+        if (this->TimeLineStep > 0)
+          with_max_time(FAS::parameters::time_line_step(this->TimeLineStep, np));
+        else
+          with_max_time(np);
+      };
+      try
+      {
+        if (this->FrontSpacing > 0)
+          with_step(FAS::parameters::front_spacing(this->FrontSpacing, base));
+        else
+          with_step(base);
+      }
+      catch (const std::invalid_argument& e)
+      {
+        throw std::invalid_argument("seed curve " + std::to_string(c) + " of " +
+          std::to_string(curves.size()) + ": " + e.what());
+      }
+      curve_of_vertex.resize(tm.number_of_vertices(), c);
+    }
+
+    std::string empty;
+    for (std::size_t c = 0; c < reports.size(); ++c)
+      if (surface_is_empty(reports[c]))
+        empty += (empty.empty() ? "" : "; ") + std::string("curve ") + std::to_string(c) + ": " +
+          FAS::to_string(reports[c].termination) + " (" + reports[c].message + ")";
+    if (tm.number_of_faces() == 0)
+      throw std::invalid_argument("no seed curve gives a surface (" + empty +
+        "); the seed curves must lie in the data set (bounds " + bounds_text(input) +
+        ") where the flow is not zero");
+    if (!empty.empty())
+      vtkWarningMacro(<< "Stream Surface From Curve: some seed curves give no surface: " << empty);
+
+    vtkSmartPointer<vtkPolyData> result = to_polydata(tm);
+    const vtkIdType n = vtkIdType(tm.number_of_vertices());
+    auto u = make_array("u", 1, n);
+    auto t = make_array("t", 1, n);
+    auto integration_time = make_array("IntegrationTime", 1, n);
+    auto seed_curve = make_array("seed_curve", 1, n);
+    for (Mesh::Vertex_index v : tm.vertices())
+    {
+      const vtkIdType i = vtkIdType(v.idx());
+      u->SetValue(i, u_map[v]);
+      t->SetValue(i, t_map[v]);
+      integration_time->SetValue(i, t_map[v]);
+      seed_curve->SetValue(i, double(curve_of_vertex[std::size_t(v.idx())]));
+    }
+    for (vtkDoubleArray* a : { u.Get(), t.Get(), integration_time.Get(), seed_curve.Get() })
+      result->GetPointData()->AddArray(a);
+    result->GetPointData()->SetActiveScalars("u");
+
+    const auto per_curve = [&](const char* name, auto value) {
+      std::vector<decltype(value(reports.front()))> values;
+      for (const FAS::Stream_surface_report& r : reports)
+        values.push_back(value(r));
+      add_per_curve(result, name, values);
+    };
+    using R = FAS::Stream_surface_report;
+    per_curve("termination", [](const R& r) { return std::string(FAS::to_string(r.termination)); });
+    per_curve("termination_message", [](const R& r) { return r.message; });
+    if (direction == FAS::Integration_direction::BOTH)
+    {
+      per_curve("backward_termination", [](const R& r) {
+        return std::string(r.backward ? FAS::to_string(r.backward->termination) : "");
+      });
+      per_curve("backward_termination_message",
+        [](const R& r) { return r.backward ? r.backward->message : std::string(); });
+    }
+    per_curve("number_of_time_lines", [](const R& r) { return double(r.number_of_time_lines); });
+    per_curve("final_parameter", [](const R& r) { return r.final_parameter; });
+    per_curve("seed_length", [](const R& r) { return r.seed_length; });
+    per_curve("front_spacing", [](const R& r) { return r.front_spacing; });
+    per_curve("time_line_step", [](const R& r) { return r.time_line_step; });
+    per_curve("number_of_tears", [](const R& r) { return double(r.number_of_tears); });
+    per_curve("number_of_lost_particles", [](const R& r) { return double(r.number_of_lost_particles); });
+
+    output->ShallowCopy(result);
+    in.last_output = result;
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "Stream Surface From Curve: " << e.what()
+                  << (in.last_output ? "; the previous output is kept" : ""));
+    if (in.last_output)
+      output->ShallowCopy(in.last_output);
+    return 1;
+  }
+}
+
+void vtkStreamSurfaceFromCurve::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "IntegrationDirection: " << this->IntegrationDirection << "\n";
+  os << indent << "FrontSpacing: " << this->FrontSpacing << "\n";
+  os << indent << "TimeLineStep: " << this->TimeLineStep << "\n";
+  os << indent << "ArcLengthTimeLines: " << this->ArcLengthTimeLines << "\n";
+  os << indent << "MaxTime: " << this->MaxTime << "\n";
+  os << indent << "MaxLength: " << this->MaxLength << "\n";
+  os << indent << "MaxNumberOfTimeLines: " << this->MaxNumberOfTimeLines << "\n";
+  os << indent << "MaxNumberOfVertices: " << this->MaxNumberOfVertices << "\n";
+  os << indent << "TearAngle: " << this->TearAngle << "\n";
+  os << indent << "RelativeTolerance: " << this->RelativeTolerance << "\n";
+  os << indent << "AbsoluteTolerance: " << this->AbsoluteTolerance << "\n";
+  os << indent << "MaxNumberOfSteps: " << this->MaxNumberOfSteps << "\n";
+}

@@ -1,0 +1,111 @@
+// Stream Surface from Curve: the stream surface of the input data set's flow seeded by every
+// line and polyline of a second input (the seed curves of Parametrize and Seed, ParaView's Line
+// source, a contour, ...), integrated by the package's advancing front
+// (integrate_stream_surface.h).
+#ifndef vtkStreamSurfaceFromCurve_h
+#define vtkStreamSurfaceFromCurve_h
+
+#include "FlowAlignedSurfacesFiltersModule.h"
+#include <vtkPolyDataAlgorithm.h>
+
+/// Input port 0: any data set with a 3-component point or cell array (the velocity, chosen with
+/// `SetInputArrayToProcess(0, ...)`).  Input port 1: polygonal data whose lines and polylines
+/// are the seed curves.  Output: the stream surfaces as triangles, one per seed curve, with
+/// point data `u` (the seed parameter: arc length along the seed curve), `t` and
+/// `IntegrationTime` (the time-line parameter tau: integration time, or arc length with
+/// ArcLengthTimeLines; negative on the backward half of a BOTH surface), `seed_curve` (the
+/// index of the seed curve); field data with one tuple per seed curve: `termination` and
+/// `termination_message` (why the integration stopped; with BOTH, of the forward half, and
+/// `backward_termination`, `backward_termination_message` of the backward half),
+/// `number_of_time_lines`, `final_parameter`, `seed_length`, `front_spacing`, `time_line_step`,
+/// `number_of_tears`, `number_of_lost_particles`.
+///
+/// A parameter at 0 takes the library's default (FrontSpacing, TimeLineStep,
+/// MaxNumberOfTimeLines) or no limit (MaxTime, MaxLength).
+///
+/// On bad input (no 3-component array, no seed line, a seed curve the library refuses, no seed
+/// curve inside the data) it reports the error and keeps its previous output.
+class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkStreamSurfaceFromCurve : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkStreamSurfaceFromCurve* New();
+  vtkTypeMacro(vtkStreamSurfaceFromCurve, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Directions
+  {
+    FORWARD = 0,
+    BACKWARD = 1,
+    BOTH = 2
+  };
+
+  /// FORWARD (along v), BACKWARD (along -v) or BOTH (one surface joined at the seed curve).
+  vtkSetClampMacro(IntegrationDirection, int, FORWARD, BOTH);
+  vtkGetMacro(IntegrationDirection, int);
+  /// h: the largest distance between neighbouring particles of the front; 0: the mean segment
+  /// length of each seed curve.
+  vtkSetClampMacro(FrontSpacing, double, 0., VTK_DOUBLE_MAX);
+  vtkGetMacro(FrontSpacing, double);
+  /// Delta: the step between time lines; 0: h over the median speed at the seed (h with
+  /// ArcLengthTimeLines), and thin strips of sheared fronts are left out.
+  vtkSetClampMacro(TimeLineStep, double, 0., VTK_DOUBLE_MAX);
+  vtkGetMacro(TimeLineStep, double);
+  /// Whether the time-line parameter is the arc length (the field is normalized).
+  vtkSetMacro(ArcLengthTimeLines, bool);
+  vtkGetMacro(ArcLengthTimeLines, bool);
+  vtkBooleanMacro(ArcLengthTimeLines, bool);
+  /// The largest integration time (time time lines); 0: no limit.
+  vtkSetClampMacro(MaxTime, double, 0., VTK_DOUBLE_MAX);
+  vtkGetMacro(MaxTime, double);
+  /// The largest arc length (with ArcLengthTimeLines); 0: no limit.
+  vtkSetClampMacro(MaxLength, double, 0., VTK_DOUBLE_MAX);
+  vtkGetMacro(MaxLength, double);
+  /// The largest number of time lines per direction; 0: no limit when MaxTime (MaxLength with
+  /// ArcLengthTimeLines) is given, else 100.
+  vtkSetClampMacro(MaxNumberOfTimeLines, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaxNumberOfTimeLines, int);
+  /// The largest number of vertices of each surface (1000000).
+  vtkSetClampMacro(MaxNumberOfVertices, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaxNumberOfVertices, int);
+  /// The angle between the flow directions of neighbouring particles above which the front is
+  /// refined or torn (radians, pi/4).
+  vtkSetClampMacro(TearAngle, double, 0., VTK_DOUBLE_MAX);
+  vtkGetMacro(TearAngle, double);
+  /// The Dormand-Prince integrator's relative (1e-10) and absolute (1e-12) tolerances, and its
+  /// largest number of steps per particle (100000).
+  vtkSetMacro(RelativeTolerance, double);
+  vtkGetMacro(RelativeTolerance, double);
+  vtkSetMacro(AbsoluteTolerance, double);
+  vtkGetMacro(AbsoluteTolerance, double);
+  vtkSetClampMacro(MaxNumberOfSteps, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaxNumberOfSteps, int);
+
+protected:
+  vtkStreamSurfaceFromCurve();
+  ~vtkStreamSurfaceFromCurve() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int IntegrationDirection;
+  double FrontSpacing;
+  double TimeLineStep;
+  bool ArcLengthTimeLines;
+  double MaxTime;
+  double MaxLength;
+  int MaxNumberOfTimeLines;
+  int MaxNumberOfVertices;
+  double TearAngle;
+  double RelativeTolerance;
+  double AbsoluteTolerance;
+  int MaxNumberOfSteps;
+
+private:
+  vtkStreamSurfaceFromCurve(const vtkStreamSurfaceFromCurve&) = delete;
+  void operator=(const vtkStreamSurfaceFromCurve&) = delete;
+
+  struct Internals;
+  Internals* Internal;
+};
+
+#endif

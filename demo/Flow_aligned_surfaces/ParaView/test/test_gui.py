@@ -1,0 +1,49 @@
+"""The ParaView GUI with the plugin: run by ctest as
+  with_xvfb.sh paraview --dr --plugin-search-paths=DIR --plugins=FlowAlignedSurfaces --script=test_gui.py
+with FAS_GUI_FIELD (a VTK image with the velocity) and FAS_GUI_SCREENSHOT (a PNG to write) in the
+environment.  The GUI has no exit status of its own for a script: this one ends the process with
+os._exit(0) after its checks passed, and os._exit(1) with the reason on stderr otherwise."""
+import os
+import sys
+import traceback
+
+try:
+    from paraview.simple import *
+
+    data = XMLImageDataReader(FileName=[os.environ["FAS_GUI_FIELD"]])
+    surface = FlowAlignedSurface(Input=data)  # from the plugin the GUI loaded
+    surface.Velocity = ["POINTS", "velocity"]
+    surface.Center = [-1.8, 0.5, 0.0]
+    surface.Normal = [1.0, 0.3, 0.2]
+    surface.Size = 1.2
+    surface.NumberOfFaces = 2000
+    surface.NumberOfIterations = 25
+    view = GetActiveViewOrCreate("RenderView")
+    scene = GetAnimationScene()
+    scene.UpdateAnimationUsingDataTimeSteps()
+    scene.AnimationTime = 25.0  # the last iteration, as the time controls would show it
+    display = Show(surface, view)
+    ColorBy(display, ("CELLS", "normalized_flux"))
+    display.SetScalarBarVisibility(view, True)
+    outline = Show(data, view)
+    outline.SetRepresentationType("Outline")
+    view.ViewSize = [800, 600]
+    Render(view)  # the first render resets the camera: place it after
+    view.CameraPosition = [-4.5, -3.5, 4.0]
+    view.CameraFocalPoint = [-1.0, 0.3, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    Render(view)
+    output = servermanager.Fetch(surface)
+    flux = output.GetFieldData().GetArray("normalized_flux").GetValue(0)
+    iteration = output.GetFieldData().GetArray("iteration").GetValue(0)
+    if output.GetNumberOfCells() < 1000 or not flux < 0.05 or iteration != 25:
+        raise AssertionError("the GUI's Flow-Aligned Surface: %d faces, flux %g at iteration %g" % (
+            output.GetNumberOfCells(), flux, iteration))
+    SaveScreenshot(os.environ["FAS_GUI_SCREENSHOT"], view, ImageResolution=[800, 600])
+    print("GUI: Flow-Aligned Surface applied, flux %g at iteration %g" % (flux, iteration))
+    sys.stdout.flush()
+    os._exit(0)
+except BaseException:
+    traceback.print_exc()
+    sys.stderr.flush()
+    os._exit(1)
