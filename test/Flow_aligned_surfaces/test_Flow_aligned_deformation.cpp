@@ -17,6 +17,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <iterator>
+#include <map>
+#include <optional>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -380,6 +384,82 @@ TEST(FlowAlignedDeformation, ParallelIterationsGiveTheSerialSurfaces)
   for (auto v : serial.vertices())
     EXPECT_EQ(serial.point(v), parallel.point(*p++));
 #endif
+}
+
+// next_sample_points() names, bit for bit, every point the next step() samples: a field that
+// only knows the samples at those points (what a caller holding a distributed field fills in
+// one batch) gives the surfaces of the field itself, and is never asked for another point.
+// Checked after a rigid move and with a collapsed face, which step() does not sample.
+TEST(FlowAlignedDeformation, NextSamplePointsAreThePointsTheNextStepSamples)
+{
+  const FAS::Cylinder_potential_flow<K> cylinder;
+  Mesh direct = planar_patch(Point(-1.8, 0.5, 0.0), Vector(1.0, 0.3, 0.2), 0.8, 600);
+  Mesh batched = direct;
+  // Looks the samples up in a table; counts the points it was not given.
+  struct Table_field {
+    std::map<std::array<double, 3>, std::optional<Vector>> samples;
+    mutable std::size_t misses = 0;
+    std::optional<Vector> operator()(const Point& p) const
+    {
+      const auto found = samples.find({p.x(), p.y(), p.z()});
+      if (found == samples.end()) {
+        ++misses;
+        return std::nullopt;
+      }
+      return found->second;
+    }
+  } table;
+  FAS::Flow_aligned_deformation<Mesh, FAS::Cylinder_potential_flow<K>> reference(
+      direct, cylinder, FAS::Alignment::TANGENTIAL);
+  FAS::Flow_aligned_deformation<Mesh, Table_field> deformation(batched, table, FAS::Alignment::TANGENTIAL);
+  const auto fill_table = [&] {
+    std::vector<Point> points;
+    deformation.next_sample_points(std::back_inserter(points));
+    table.samples.clear();
+    for (const Point& p : points)
+      table.samples[{p.x(), p.y(), p.z()}] = cylinder(p);
+    return points.size();
+  };
+  const auto expect_same_surfaces = [&](const char* when) {
+    auto q = batched.vertices().begin();
+    for (auto v : direct.vertices())
+      ASSERT_EQ(direct.point(v), batched.point(*q++)) << when;
+  };
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_EQ(fill_table(), batched.number_of_faces());
+    const FAS::Iteration_report expected = reference.step(), actual = deformation.step();
+    EXPECT_EQ(expected.max_rotation_angle, actual.max_rotation_angle);
+    EXPECT_EQ(actual.number_of_outside_samples, 0u);
+  }
+  expect_same_surfaces("after 5 iterations");
+  EXPECT_EQ(table.misses, 0u);
+
+  reference.translate(Vector(0.1, -0.2, 0.05));
+  deformation.translate(Vector(0.1, -0.2, 0.05));
+  fill_table();
+  reference.step();
+  deformation.step();
+  expect_same_surfaces("after a translation");
+  EXPECT_EQ(table.misses, 0u);
+
+  // Faces collapsed by the user: no normal, no sample, no point.
+  const auto f = *batched.faces().begin();
+  std::vector<Mesh::Vertex_index> corners;
+  for (auto v : CGAL::vertices_around_face(batched.halfedge(f), batched))
+    corners.push_back(v);
+  batched.point(corners[1]) = batched.point(corners[0]);
+  batched.point(corners[2]) = batched.point(corners[0]);
+  direct.point(*std::next(direct.vertices().begin(), corners[1].idx())) = batched.point(corners[0]);
+  direct.point(*std::next(direct.vertices().begin(), corners[2].idx())) = batched.point(corners[0]);
+  std::size_t collapsed = 0;
+  for (auto g : batched.faces())
+    collapsed += PMP::face_area(g, batched) == 0 ? 1 : 0;
+  ASSERT_GE(collapsed, 1u);
+  EXPECT_EQ(fill_table(), batched.number_of_faces() - collapsed);
+  reference.step();
+  deformation.step();
+  expect_same_surfaces("with a collapsed face");
+  EXPECT_EQ(table.misses, 0u);
 }
 
 } // namespace

@@ -367,6 +367,35 @@ public:
   }
 
   /*!
+  Writes to `out` the points at which the next `step()` samples the field, if the positions
+  of `tm` are not changed in between: the centroid of every face of the current surface that
+  has a normal (a face collapsed to zero area is not sampled), one point per face in the order
+  of the faces, bit for bit the points that `step()` passes to the field's `operator()`.
+
+  This lets a caller whose field is expensive to query point by point (a data set distributed
+  over MPI ranks, a remote server) compute all the samples of an iteration in one batch and
+  hand them to `step()` through a field that looks them up.  The iteration reads nothing else
+  of the field.
+
+  \tparam OutputIterator an output iterator accepting `Point_3`
+  \returns the output iterator after the last point written
+  \throws std::invalid_argument if a position of `tm` is not finite (as `step()` would)
+  */
+  template <class OutputIterator>
+  OutputIterator next_sample_points(OutputIterator out) const
+  {
+    const Positions x = internal::read_positions(m_vertices, m_vpm);
+    internal::check_finite_positions(x, "Flow_aligned_deformation::next_sample_points(): tm");
+    auto construct_point = m_gt.construct_point_3_object();
+    for (const internal::Reference_face& face : m_ops.faces) {
+      const Current_face current = current_face(x, face);
+      if (current.sampled)
+        *out++ = construct_point(current.centroid.x(), current.centroid.y(), current.centroid.z());
+    }
+    return out;
+  }
+
+  /*!
   Iterates until an iteration converges or `number_of_iterations` (given at construction)
   iterations were made.  The report's flux is that of the final surface.
   */
@@ -726,6 +755,30 @@ private:
     }
   };
 
+  // A face of the current positions: its unit normal and centroid, and whether step() samples
+  // the field there (a face collapsed to zero area, or with non-finite positions, has no normal
+  // and is not sampled).  The one place the sampled points are computed: step() and
+  // next_sample_points() both use it, so that they agree bit for bit.
+  struct Current_face {
+    Eigen::Vector3d normal, centroid;
+    double twice_area = 0;
+    bool sampled = false;
+  };
+  static Current_face current_face(const Positions& x, const internal::Reference_face& face)
+  {
+    Current_face current;
+    const Eigen::Vector3d a = x.row(face.vertices[0]), b = x.row(face.vertices[1]),
+                          c = x.row(face.vertices[2]);
+    const Eigen::Vector3d cross = (b - a).cross(c - a);
+    current.twice_area = cross.norm();
+    if (!(current.twice_area > 0) || !std::isfinite(current.twice_area))
+      return current;
+    current.normal = cross / current.twice_area;
+    current.centroid = (a + b + c) / 3;
+    current.sampled = true;
+    return current;
+  }
+
   // The local transformation T_j of the faces [begin, end) of the current positions `x`:
   // samples the field at the centroid, rotates toward alignment and corrects the area.
   void transform_faces(const Positions& x, std::size_t begin, std::size_t end, Face_pass& pass)
@@ -733,23 +786,20 @@ private:
     auto construct_point = m_gt.construct_point_3_object();
     for (std::size_t j = begin; j < end; ++j) {
       const internal::Reference_face& face = m_ops.faces[j];
-      const Eigen::Vector3d a = x.row(face.vertices[0]), b = x.row(face.vertices[1]),
-                            c = x.row(face.vertices[2]);
-      const Eigen::Vector3d cross = (b - a).cross(c - a);
-      const double twice_area = cross.norm();
+      const Current_face current = current_face(x, face);
       Eigen::Matrix3d& t = m_transforms[j];
       t.setIdentity();
       // A face collapsed by the user has no normal; it keeps its gradients (T = I).
-      if (!(twice_area > 0) || !std::isfinite(twice_area))
+      if (!current.sampled)
         continue;
-      const Eigen::Vector3d normal = cross / twice_area;
+      const Eigen::Vector3d& normal = current.normal;
       m_normals[j] = normal;
       m_has_normal[j] = true;
 
-      const Eigen::Vector3d centroid = (a + b + c) / 3;
+      const Eigen::Vector3d& centroid = current.centroid;
       const internal::Flow_sample sample =
           internal::sample_flow(m_field, construct_point(centroid.x(), centroid.y(), centroid.z()));
-      const double area = 0.5 * twice_area;
+      const double area = 0.5 * current.twice_area;
       pass.flux.add(area, internal::face_flux(normal, sample));
       switch (sample.kind) {
       case internal::Sample_kind::OUTSIDE:

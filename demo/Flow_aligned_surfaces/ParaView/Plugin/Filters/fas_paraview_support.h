@@ -84,11 +84,13 @@ inline Velocity_field make_velocity_field(vtkDataSet* data_set, const std::strin
   if (image != nullptr && points_array != nullptr && points_array->GetNumberOfComponents() == 3) {
     int dims[3];
     image->GetDimensions(dims);
-    const double* origin = image->GetOrigin();
     const double* spacing = image->GetSpacing();
     const double* direction = image->GetDirectionMatrix()->GetData();
     const bool axis_aligned = direction[0] == 1 && direction[4] == 1 && direction[8] == 1;
     if (axis_aligned && dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2) {
+      // The first point, not the origin: a piece of an image (MPI, a subset) starts at its extent.
+      double origin[3];
+      image->GetPoint(0, origin);
       const vtkIdType n = points_array->GetNumberOfTuples();
       std::vector<float> values(std::size_t(3 * n));
       for (vtkIdType i = 0; i < n; ++i)
@@ -226,14 +228,20 @@ void add_point_velocities(vtkPolyData* polydata, const Field& field)
   polydata->GetPointData()->AddArray(sampled);
 }
 
-/// The bounds of `data_set` in words, for messages ("x a..b, y c..d, z e..f").
+/// Bounds (xmin, xmax, ymin, ymax, zmin, zmax) in words, for messages ("x a..b, y c..d, z e..f").
+inline std::string bounds_text(const double b[6])
+{
+  std::ostringstream os;
+  os << "x " << b[0] << ".." << b[1] << ", y " << b[2] << ".." << b[3] << ", z " << b[4] << ".." << b[5];
+  return os.str();
+}
+
+/// The bounds of `data_set` in words, for messages.
 inline std::string bounds_text(vtkDataSet* data_set)
 {
   double b[6];
   data_set->GetBounds(b);
-  std::ostringstream os;
-  os << "x " << b[0] << ".." << b[1] << ", y " << b[2] << ".." << b[3] << ", z " << b[4] << ".." << b[5];
-  return os.str();
+  return bounds_text(b);
 }
 
 /// The arrays of an aligned surface `tm` shown as `polydata` (its points in vertex index order,

@@ -1,5 +1,6 @@
 #include "vtkFlowAlignedSurface.h"
 
+#include "fas_distributed_field.h"
 #include "fas_paraview_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
@@ -10,10 +11,13 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMath.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <algorithm>
+#include <chrono>
+#include <iterator>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -25,7 +29,7 @@ vtkStandardNewMacro(vtkFlowAlignedSurface);
 
 namespace {
 
-using Deformation = FAS::Flow_aligned_deformation<Mesh, Velocity_field>;
+using Deformation = FAS::Flow_aligned_deformation<Mesh, Distributed_velocity_field>;
 
 // What the factorization depends on: the patch's connectivity and reference shape up to a
 // rigid move, and the deformation's parameters.
@@ -52,6 +56,17 @@ void make_patch(Mesh& tm, int shape, const double center[3], const double normal
     FAS::make_planar_patch(tm, c, n, size, size, std::size_t(faces));
 }
 
+// Ends the other ranks' serve() when rank 0 leaves RequestData, whatever the way out.
+struct Finish_probes {
+  Distributed_velocity_field& field;
+  ~Finish_probes() { field.finish(); }
+};
+
+double milliseconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::string point_text(const double x[3])
 {
   std::ostringstream os;
@@ -62,7 +77,9 @@ std::string point_text(const double x[3])
 } // namespace
 
 struct vtkFlowAlignedSurface::Internals {
-  Velocity_field field;       // the deformation holds a reference to it: assigned, never replaced
+  // The input's velocity (on several ranks: its samples probed from every rank's piece); the
+  // deformation holds a reference to it: never replaced.
+  Distributed_velocity_field field;
   vtkMTimeType input_time = 0;
   std::string array_name;
   bool have_field = false;
@@ -161,18 +178,51 @@ int vtkFlowAlignedSurface::RequestData(
   try
   {
     // The field: sampled anew when the input or the array changed; the deformation keeps its
-    // factorization (it depends on the patch only).
+    // factorization (it depends on the patch only).  On several ranks every rank builds the
+    // field of its own piece (none for a piece without cells) and rank 0 learns the pieces'
+    // state; then the other ranks only answer rank 0's probes.
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    const bool distributed = controller != nullptr && controller->GetNumberOfProcesses() > 1;
     const std::string array_name = selected_array_name(this);
-    if (!in.have_field || input == nullptr || input->GetMTime() != in.input_time ||
-      array_name != in.array_name)
+    const bool changed = !in.have_field || input == nullptr || input->GetMTime() != in.input_time ||
+      array_name != in.array_name;
+    if (changed)
     {
-      in.have_field = false;
-      in.field = make_velocity_field(input, array_name);
-      in.input_time = input->GetMTime();
+      std::optional<Velocity_field> local;
+      std::string error;
+      try
+      {
+        if (!distributed || (input != nullptr && input->GetNumberOfCells() > 0))
+          local = make_velocity_field(input, array_name);
+      }
+      catch (const std::exception& e)
+      {
+        error = e.what();
+      }
+      in.field.set_piece(std::move(local), error);
+      in.input_time = input != nullptr ? input->GetMTime() : 0;
       in.array_name = array_name;
-      in.have_field = true;
-      in.restart = true;
+      in.have_field = error.empty();
     }
+    std::array<double, 6> local_bounds{ { 1, -1, 1, -1, 1, -1 } };
+    if (input != nullptr && input->GetNumberOfCells() > 0)
+      input->GetBounds(local_bounds.data());
+    const Distributed_input pieces = in.field.start(controller, local_bounds, changed);
+    if (!in.field.is_root())
+    {
+      in.field.serve();
+      output->Initialize(); // the surface lives on rank 0
+      return 1;
+    }
+    Finish_probes finish_probes{ in.field };
+    if (!pieces.errors.empty())
+      throw std::invalid_argument(distributed ? "cannot sample the input's pieces (" + pieces.errors + ")"
+                                              : pieces.errors);
+    if (pieces.ranks_with_cells == 0)
+      throw std::invalid_argument("the input has no cells on any of the " + std::to_string(pieces.ranks) +
+                                  " ranks");
+    if (pieces.changed)
+      in.restart = true;
 
     const Patch_key key{ this->PatchShape, this->Size, this->NumberOfFaces, this->MaxRotationAngle,
       this->MaxDihedralAngle, this->ConvergenceAngle };
@@ -230,22 +280,37 @@ int vtkFlowAlignedSurface::RequestData(
       in.reports.clear();
       in.converged = false;
       in.restart = false;
+      in.field.probe_points_of([&] { FAS::normalized_flux(in.tm, in.field); });
       const FAS::Normalized_flux start = FAS::normalized_flux(in.tm, in.field);
       if (!start.value)
       {
         in.restart = true; // nothing of this pose is kept
         throw std::invalid_argument("the patch at centre " + point_text(this->Center) +
-          " has no flow sample: it lies outside the input data set (bounds " + bounds_text(input) +
+          " has no flow sample: it lies outside the input data set (bounds " + bounds_text(pieces.bounds.data()) +
           "); move it into the data");
       }
     }
     // Only the pose of the patch and the first positions were set when the reports are empty;
-    // the iterations up to the requested one are computed once and kept.
+    // the iterations up to the requested one are computed once and kept.  On several ranks each
+    // iteration's samples are probed first, in one exchange.
+    double exchange_ms = 0, step_ms = 0;
+    std::size_t iterations_now = 0;
     while (in.positions.size() <= requested && !in.converged)
     {
       if (in.positions.size() != in.reports.size() + 1)
         throw std::logic_error("iterations out of step");
+      if (in.field.distributed())
+      {
+        const auto exchange_start = std::chrono::steady_clock::now();
+        std::vector<Point> points;
+        in.deformation->next_sample_points(std::back_inserter(points));
+        in.field.probe(points);
+        exchange_ms += milliseconds_since(exchange_start);
+      }
+      const auto step_start = std::chrono::steady_clock::now();
       const FAS::Iteration_report r = in.deformation->step();
+      step_ms += milliseconds_since(step_start);
+      ++iterations_now;
       in.reports.push_back(r);
       in.positions.push_back(in.current_positions());
       in.converged = r.converged;
@@ -258,12 +323,32 @@ int vtkFlowAlignedSurface::RequestData(
       for (Mesh::Vertex_index v : shown.vertices())
         shown.point(v) = in.positions[k][i++];
     }
-    vtkSmartPointer<vtkPolyData> result = to_polydata(shown);
-    const FAS::Normalized_flux flux = add_alignment_arrays(result, shown, in.field);
+    // The surface with its arrays (evaluated twice on several ranks: once to learn the points
+    // it samples, which are then probed).
+    const auto with_arrays = [&in, &shown] {
+      vtkSmartPointer<vtkPolyData> polydata = to_polydata(shown);
+      const FAS::Normalized_flux measured = add_alignment_arrays(polydata, shown, in.field);
+      return std::make_pair(polydata, measured);
+    };
+    in.field.probe_points_of(with_arrays);
+    const auto [result, flux] = with_arrays();
     add_field_value(result, "iteration", double(k));
     add_field_value(result, "converged", in.converged && k + 1 >= in.positions.size() ? 1. : 0.);
     add_field_value(result, "max_rotation_angle", k == 0 ? 0. : in.reports[k - 1].max_rotation_angle);
     add_field_value(result, "number_of_factorizations", double(in.factorizations()));
+    if (in.field.distributed())
+    {
+      // How the input was spread and what the exchanges cost (for the benchmark and the tests).
+      add_field_value(result, "number_of_ranks", double(pieces.ranks));
+      add_field_value(result, "number_of_ranks_with_cells", double(pieces.ranks_with_cells));
+      add_field_value(result, "number_of_sampling_ranks", double(in.field.number_of_supplying_ranks()));
+      add_field_value(result, "iterations_computed", double(iterations_now));
+      if (iterations_now > 0)
+      {
+        add_field_value(result, "exchange_ms_per_iteration", exchange_ms / double(iterations_now));
+        add_field_value(result, "step_ms_per_iteration", step_ms / double(iterations_now));
+      }
+    }
     if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
       vtkWarningMacro(<< "Flow-Aligned Surface: " << warning);
     output->ShallowCopy(result);

@@ -23,6 +23,17 @@
 ///
 /// On bad input (no 3-component array, a patch outside the data, a surface leaving the data) it
 /// reports the error and keeps its previous output.
+///
+/// Under MPI (pvbatch --mpi, pvserver on several processes) with the input spread over the ranks,
+/// the surface and its factorization live on rank 0, which outputs it; the other ranks output an
+/// empty polydata.  Before every iteration rank 0 probes the face centroids the iteration will
+/// sample from every rank's piece in one collective exchange (fas_distributed_field.h), so the
+/// surface is the serial one (to rounding where pieces share points).  A rank without cells only
+/// contributes no samples; no cells on any rank, or a piece that cannot be sampled, is reported
+/// (naming the rank) with the previous output kept.  Then the field data also holds
+/// `number_of_ranks`, `number_of_ranks_with_cells`, `number_of_sampling_ranks` (ranks that
+/// supplied samples of the output), `iterations_computed` and, when iterations were computed,
+/// `exchange_ms_per_iteration` and `step_ms_per_iteration` (see benchmark/.../RESULTS.md).
 class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkFlowAlignedSurface : public vtkPolyDataAlgorithm
 {
 public:
