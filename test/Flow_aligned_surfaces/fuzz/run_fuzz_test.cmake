@@ -8,7 +8,8 @@
 # Optional: -DFUZZ_CXX_COMPILER=clang++, -DSEED_DIRS="dir;dir",
 #           -DFUZZ_RUNS=10000 (fuzz_read_VTK_XML: a quarter), -DFUZZ_MAX_TIME=20 (seconds per target), -DFUZZ_JOBS=2,
 #           -DFUZZ_SEED=1 (libFuzzer's random seed: the same inputs in the same order every run),
-#           -DFUZZ_REQUIRED=ON (a missing clang++, libFuzzer or VTK is a failure, not a skip: CI=true)
+#           -DFUZZ_REQUIRED=ON (a missing clang++, libFuzzer or VTK is a failure, not a skip: CI=true),
+#           -DFUZZ_VTK_DIR=... (the VTK to link, such as ParaView's: the package's own VTK_DIR)
 cmake_minimum_required(VERSION 3.16)
 
 foreach(var IN ITEMS FUZZ_SOURCE_DIR WORK_DIR)
@@ -75,8 +76,12 @@ endfunction()
 
 string(TIMESTAMP t0 "%s")
 set(build "${WORK_DIR}/build")
+set(vtk_dir_arg "")
+if(FUZZ_VTK_DIR)
+  set(vtk_dir_arg "-DVTK_DIR=${FUZZ_VTK_DIR}")
+endif()
 run_step("configure" "${CMAKE_COMMAND}" -S "${FUZZ_SOURCE_DIR}" -B "${build}"
-         "-DCMAKE_CXX_COMPILER=${FUZZ_CXX_COMPILER}" -DCMAKE_BUILD_TYPE=)
+         "-DCMAKE_CXX_COMPILER=${FUZZ_CXX_COMPILER}" -DCMAKE_BUILD_TYPE= ${vtk_dir_arg})
 run_step("build" "${CMAKE_COMMAND}" --build "${build}" -j ${FUZZ_JOBS})
 string(TIMESTAMP t1 "%s")
 math(EXPR build_seconds "${t1} - ${t0}")

@@ -1,5 +1,6 @@
-// What the plugin's filters share: the velocity field of a VTK data set as a FlowField_3, and
-// the conversions between CGAL meshes or polylines and vtkPolyData.  Private to the plugin.
+// What the plugin's filters share: the velocity field of a VTK data set as a FlowField_3, the
+// conversions between CGAL meshes or polylines and vtkPolyData, and the outputs kept for a
+// failed run.  Private to the plugin.
 #ifndef FAS_PARAVIEW_SUPPORT_H
 #define FAS_PARAVIEW_SUPPORT_H
 
@@ -14,12 +15,14 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkDataObject.h>
 #include <vtkDataSet.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
+#include <vtkInformationVector.h>
 #include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -284,6 +287,40 @@ inline std::string unsampled_area_warning(const FAS::Normalized_flux& flux)
         "move the surface or make it smaller";
   return os.str();
 }
+
+/// The outputs of the last successful run, given again when a run fails.
+class Kept_outputs {
+public:
+  /// Remembers the outputs of `outputVector` (after a successful run).
+  void keep(vtkInformationVector* outputVector)
+  {
+    m_outputs.clear();
+    for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port) {
+      vtkDataObject* output = vtkDataObject::GetData(outputVector, port);
+      vtkSmartPointer<vtkDataObject> copy;
+      if (output != nullptr) {
+        copy.TakeReference(output->NewInstance());
+        copy->ShallowCopy(output);
+      }
+      m_outputs.push_back(copy);
+    }
+  }
+
+  /// Gives the kept outputs again; returns whether there were any.
+  bool restore(vtkInformationVector* outputVector) const
+  {
+    if (m_outputs.empty())
+      return false;
+    for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
+      if (vtkDataObject* output = vtkDataObject::GetData(outputVector, port);
+          output != nullptr && std::size_t(port) < m_outputs.size() && m_outputs[std::size_t(port)])
+        output->ShallowCopy(m_outputs[std::size_t(port)]);
+    return true;
+  }
+
+private:
+  std::vector<vtkSmartPointer<vtkDataObject>> m_outputs;
+};
 
 } // namespace fas_paraview
 

@@ -1,7 +1,7 @@
 // What the filters that work on a given surface share (Parametrize and Seed, Flow Texture):
 // input port 0 the data set with the velocity, input port 1 a triangulated surface; the surface
 // as a mesh whose vertex i is the surface's point i; vertex and face values as point and cell
-// arrays; and the previous outputs, kept when an input is bad.  Private to the plugin.
+// arrays.  Private to the plugin.
 #ifndef FAS_PARAVIEW_SURFACE_INPUT_H
 #define FAS_PARAVIEW_SURFACE_INPUT_H
 
@@ -66,40 +66,6 @@ void add_vertex_array(vtkPolyData* polydata, const Mesh& tm, const char* name, i
   }
   polydata->GetPointData()->AddArray(array);
 }
-
-/// The outputs of the last successful run, given again when a run fails.
-class Kept_outputs {
-public:
-  /// Remembers the outputs of `outputVector` (after a successful run).
-  void keep(vtkInformationVector* outputVector)
-  {
-    m_outputs.clear();
-    for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port) {
-      vtkDataObject* output = vtkDataObject::GetData(outputVector, port);
-      vtkSmartPointer<vtkDataObject> copy;
-      if (output != nullptr) {
-        copy.TakeReference(output->NewInstance());
-        copy->ShallowCopy(output);
-      }
-      m_outputs.push_back(copy);
-    }
-  }
-
-  /// Gives the kept outputs again; returns whether there were any.
-  bool restore(vtkInformationVector* outputVector) const
-  {
-    if (m_outputs.empty())
-      return false;
-    for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
-      if (vtkDataObject* output = vtkDataObject::GetData(outputVector, port);
-          output != nullptr && std::size_t(port) < m_outputs.size() && m_outputs[std::size_t(port)])
-        output->ShallowCopy(m_outputs[std::size_t(port)]);
-    return true;
-  }
-
-private:
-  std::vector<vtkSmartPointer<vtkDataObject>> m_outputs;
-};
 
 } // namespace fas_paraview
 

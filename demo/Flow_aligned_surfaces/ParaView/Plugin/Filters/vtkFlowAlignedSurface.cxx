@@ -96,7 +96,7 @@ struct vtkFlowAlignedSurface::Internals {
   std::vector<FAS::Iteration_report> reports;   // reports[k] made positions[k + 1]
   bool converged = false;
 
-  vtkSmartPointer<vtkPolyData> last_output;
+  Kept_outputs kept; // the outputs of the last successful run
 
   int factorizations() const
   {
@@ -352,15 +352,13 @@ int vtkFlowAlignedSurface::RequestData(
     if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
       vtkWarningMacro(<< "Flow-Aligned Surface: " << warning);
     output->ShallowCopy(result);
-    in.last_output = result;
+    in.kept.keep(outputVector);
     return 1;
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< "Flow-Aligned Surface: " << e.what()
-                  << (in.last_output ? "; the previous output is kept" : ""));
-    if (in.last_output)
-      output->ShallowCopy(in.last_output);
+    const bool kept = in.kept.restore(outputVector);
+    vtkErrorMacro(<< "Flow-Aligned Surface: " << e.what() << (kept ? "; the previous output is kept" : ""));
     return 1;
   }
 }

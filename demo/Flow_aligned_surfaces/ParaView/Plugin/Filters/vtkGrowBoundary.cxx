@@ -16,7 +16,7 @@ using namespace fas_paraview;
 vtkStandardNewMacro(vtkGrowBoundary);
 
 struct vtkGrowBoundary::Internals {
-  vtkSmartPointer<vtkPolyData> last_output;
+  Kept_outputs kept; // the outputs of the last successful run
 };
 
 vtkGrowBoundary::vtkGrowBoundary()
@@ -116,15 +116,13 @@ int vtkGrowBoundary::RequestData(
     if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
       vtkWarningMacro(<< "Grow Boundary: " << warning);
     output->ShallowCopy(result);
-    in.last_output = result;
+    in.kept.keep(outputVector);
     return 1;
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< "Grow Boundary: " << e.what()
-                  << (in.last_output ? "; the previous output is kept" : ""));
-    if (in.last_output)
-      output->ShallowCopy(in.last_output);
+    const bool kept = in.kept.restore(outputVector);
+    vtkErrorMacro(<< "Grow Boundary: " << e.what() << (kept ? "; the previous output is kept" : ""));
     return 1;
   }
 }

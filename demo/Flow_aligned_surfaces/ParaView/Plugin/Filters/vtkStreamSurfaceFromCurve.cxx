@@ -47,7 +47,7 @@ bool surface_is_empty(const FAS::Stream_surface_report& r)
 } // namespace
 
 struct vtkStreamSurfaceFromCurve::Internals {
-  vtkSmartPointer<vtkPolyData> last_output;
+  Kept_outputs kept; // the outputs of the last successful run
 };
 
 vtkStreamSurfaceFromCurve::vtkStreamSurfaceFromCurve()
@@ -220,15 +220,13 @@ int vtkStreamSurfaceFromCurve::RequestData(
     per_curve("number_of_lost_particles", [](const R& r) { return double(r.number_of_lost_particles); });
 
     output->ShallowCopy(result);
-    in.last_output = result;
+    in.kept.keep(outputVector);
     return 1;
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< "Stream Surface From Curve: " << e.what()
-                  << (in.last_output ? "; the previous output is kept" : ""));
-    if (in.last_output)
-      output->ShallowCopy(in.last_output);
+    const bool kept = in.kept.restore(outputVector);
+    vtkErrorMacro(<< "Stream Surface From Curve: " << e.what() << (kept ? "; the previous output is kept" : ""));
     return 1;
   }
 }
