@@ -157,13 +157,18 @@ def expect_error_keeps_outputs(proxy, ports, before, fragments, what):
     keep the sizes `before` (an output_sizes() of the last good run)."""
     with Messages() as messages:
         after = output_sizes(proxy, ports)
-    text = messages.text()
-    for fragment in fragments + ["the previous output is kept"]:
-        if fragment not in text:
-            raise AssertionError("%s: expected a message with '%s', got: %s" % (what, fragment, text))
+    expect_message(messages, fragments + ["the previous output is kept"], what)
     if after != before:
         raise AssertionError("%s: the previous outputs were not kept (%s, before %s)" % (what, after, before))
-    print("%s: %s" % (what, text.strip().splitlines()[-1]))
+
+
+def expect_message(messages, fragments, what):
+    """The messages collected by `messages` (a Messages) contain every string of `fragments`."""
+    text = messages.text()
+    for fragment in fragments:
+        if fragment not in text:
+            raise AssertionError("%s: expected a message with '%s', got: %s" % (what, fragment, text))
+    print("%s: %s" % (what, text.strip().splitlines()[-1][:200]))
 
 
 def aligned_patch_reader(setup, name, patch):

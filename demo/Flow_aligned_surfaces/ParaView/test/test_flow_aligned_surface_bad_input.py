@@ -12,21 +12,14 @@ import fas_plugin_test as t
 setup = t.Setup(globals())
 
 
-def expect_message(messages, *parts):
-    text = messages.text()
-    for part in parts:
-        if part not in text:
-            raise AssertionError("the message %r lacks %r" % (text, part))
-    print("message: " + text.strip().splitlines()[-1][:200])
-
-
 # 1. A data set without a 3-component array (the Wavelet source has one scalar array).
 wavelet = Wavelet()
 with t.Messages() as m:
     surface = FlowAlignedSurface(Input=wavelet)
     surface.UpdatePipeline()
     out = servermanager.Fetch(surface)
-expect_message(m, "Flow-Aligned Surface", "no 3-component", "'RTData' (point data, 1 components)")
+t.expect_message(m, ["Flow-Aligned Surface", "no 3-component", "'RTData' (point data, 1 components)"],
+                 "no velocity array")
 if out.GetNumberOfPoints() != 0:
     raise AssertionError("an output without a velocity")
 Delete(surface)
@@ -46,7 +39,7 @@ if good.GetNumberOfPoints() == 0:
 with t.Messages() as m:
     surface.Center = [20.0, 0.0, 0.0]
     kept = t.fetch(surface, 5)
-expect_message(m, "outside the input data set", "(20, 0, 0)", "previous output is kept")
+t.expect_message(m, ["outside the input data set", "(20, 0, 0)", "previous output is kept"], "patch outside")
 t.expect_same_surface(kept, good, "previous output kept after the patch left the data", 0.0)
 
 # 3. Back into the data: it works again.
@@ -59,7 +52,7 @@ if again.GetNumberOfPoints() != good.GetNumberOfPoints() or t.field_value(again,
 with t.Messages() as m:
     surface.Center = [-2.9, 0.5, 0.0]
     partly = t.fetch(surface, 5)
-expect_message(m, "has no flow sample", "make it smaller")
+t.expect_message(m, ["has no flow sample", "make it smaller"], "patch partly outside")
 if not 0 < t.field_value(partly, "sampled_area_fraction") < 0.95:
     raise AssertionError("the sampled area fraction of a patch half out of the data")
 face_flux = partly.GetCellData().GetArray("normalized_flux")
@@ -74,7 +67,7 @@ with t.Messages() as m:
     surface.Center = [-1.6, 0.5, 0.0]
     surface.Normal = [0.0, 0.0, 0.0]
     kept = t.fetch(surface, 5)
-expect_message(m, "normal")
+t.expect_message(m, ["normal"], "zero normal")
 if kept.GetNumberOfPoints() == 0:
     raise AssertionError("the previous output was not kept after a zero normal")
 print("Flow-Aligned Surface, bad input: all checks passed")

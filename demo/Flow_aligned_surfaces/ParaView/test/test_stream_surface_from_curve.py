@@ -175,17 +175,13 @@ good = t.fetch(surface)
 surface.Seeds = Sphere()
 with t.Messages() as messages:
     kept = t.fetch(surface)
-text = messages.text()
-if "has no line or polyline" not in text or "previous output is kept" not in text:
-    raise AssertionError("no seed line: expected the filter's message, got: %r" % text)
+t.expect_message(messages, ["has no line or polyline", "previous output is kept"], "no seed line")
 t.expect_same_surface(kept, good, "no seed line: previous output kept")
 
 outside = Line(Point1=[10, 0, 0], Point2=[10, 1, 0], Resolution=5)
 surface.Seeds = outside
 with t.Messages() as messages:
     kept = t.fetch(surface)
-text = messages.text()
-if "no seed curve gives a surface" not in text or "SEED_OUTSIDE_DOMAIN" not in text:
-    raise AssertionError("seed outside the data: expected the filter's message, got: %r" % text)
+t.expect_message(messages, ["no seed curve gives a surface", "SEED_OUTSIDE_DOMAIN"], "seed outside the data")
 t.expect_same_surface(kept, good, "seed outside the data: previous output kept")
 print("Stream Surface From Curve: all checks passed")
