@@ -20,6 +20,10 @@
 // and without --normal it faces the flow there (orthogonal) or contains it (tangential).
 
 #include "demo_support.h"
+#include "distinct_stream_surfaces.h"
+#include "feature_placement.h"
+#include "grow_across_flow.h"
+#include "stream_lines_with_arrays.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
@@ -95,6 +99,16 @@ std::optional<std::array<double, 3>> parse_triple(const std::string& text)
   return v;
 }
 
+// "x,y,z", as --center and --normal take it.
+template <class T>
+std::string triple_text(const T& p)
+{
+  std::ostringstream os;
+  os.precision(4);
+  os << p.x() << ',' << p.y() << ',' << p.z();
+  return os.str();
+}
+
 struct Placement {
   std::optional<std::array<double, 3>> center, normal;
   std::optional<double> size;
@@ -108,27 +122,39 @@ std::optional<Scene> make_data_scene(const std::string& file, const std::string&
   if (!field)
     return std::nullopt;
   const CGAL::Bbox_3 box = field->bbox();
-  const Point center = placement.center
-                           ? Point((*placement.center)[0], (*placement.center)[1], (*placement.center)[2])
-                           : Point((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
-                                   (box.zmin() + box.zmax()) / 2);
-  const auto v = (*field)(center);
-  if (!v || v->squared_length() == 0) {
-    std::cerr << "error: --center: the flow of " << file << " is not defined (or zero) at " << center
-              << "; place the patch in the fluid with --center X,Y,Z\n";
-    return std::nullopt;
-  }
   const double size =
       placement.size
           ? *placement.size
           : 0.25 * (std::min)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
-  Vector orthogonal_normal = *v, tangential_normal = CGAL::cross_product(*v, Vector(0, 0, 1));
-  if (tangential_normal.squared_length() < 1e-12 * v->squared_length())
-    tangential_normal = CGAL::cross_product(*v, Vector(1, 0, 0));
+  const std::optional<Point> given_center =
+      placement.center ? std::optional<Point>(Point((*placement.center)[0], (*placement.center)[1],
+                                                    (*placement.center)[2]))
+                       : std::nullopt;
+  if (given_center) {
+    const auto v = (*field)(*given_center);
+    if (!v || v->squared_length() == 0) {
+      std::cerr << "error: --center: the flow of " << file << " is not defined (or zero) at " << *given_center
+                << "; place the patch in the fluid with --center X,Y,Z\n";
+      return std::nullopt;
+    }
+  }
+  // Without --normal: near the main feature (or at --center), tilted 30 degrees off the flow.
+  const auto placed = place_near_feature<Point, Vector>(*field, box, size, CGAL_PI / 6, given_center);
+  if (!placed) {
+    std::cerr << "error: --field: " << file << " has no flow (no finite non-zero velocity) anywhere\n";
+    return std::nullopt;
+  }
+  Scene scene{Flow(*field), placed->tangential_center, placed->orthogonal_center, placed->tangential_normal,
+              placed->orthogonal_normal, size};
   if (placement.normal)
-    orthogonal_normal = tangential_normal =
+    scene.orthogonal_normal = scene.tangential_normal =
         Vector((*placement.normal)[0], (*placement.normal)[1], (*placement.normal)[2]);
-  return Scene{Flow(*field), center, center, tangential_normal, orthogonal_normal, size};
+  else
+    std::cout << "patches placed " << placed->description << ": tangential at --center "
+              << triple_text(scene.tangential_center) << " --normal " << triple_text(scene.tangential_normal)
+              << ", orthogonal at --center " << triple_text(scene.orthogonal_center) << " --normal "
+              << triple_text(scene.orthogonal_normal) << "\n";
+  return scene;
 }
 
 // Opens `path` for writing, or says why not.
@@ -146,9 +172,10 @@ std::optional<std::ofstream> open_output(const std::filesystem::path& path)
 using Polyline = std::vector<Point>;
 
 // The seeding workflow on the aligned surface `tm` of `deformation`: seed curves from its
-// parametrization, a stream surface from each (forward and backward, arc-length time lines up to
-// twice the patch size), and stream lines from seed points on an orthogonal surface; all written
-// as VTP, with pictures when `pictures`.  Returns false when a file cannot be written.
+// parametrization (iso-contours of r, each with its value), one stream surface per distinct seed
+// curve (distinct_stream_surfaces.h: forward and backward in one mesh, arc-length time lines up
+// to twice the patch size), and stream lines from seed points on an orthogonal surface; all
+// written as VTP, with pictures when `pictures`.  Returns false when a file cannot be written.
 bool seed_and_integrate(const std::string& name, Mesh& tm,
                         const FAS::Flow_aligned_deformation<Mesh, Flow>& deformation, const Scene& scene,
                         const std::filesystem::path& out, bool pictures)
@@ -161,67 +188,72 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
   else
     deformation.parametrize_orthogonal(r, s);
   std::vector<Polyline> seed_curves;
-  FAS::extract_iso_contours(tm, r, FAS::evenly_spaced_iso_values(tm, r, 3), std::back_inserter(seed_curves));
-
-  Mesh surfaces;
-  auto u = surfaces.add_property_map<Mesh::Vertex_index, double>("v:u", 0).first;
-  auto t = surfaces.add_property_map<Mesh::Vertex_index, double>("v:t", 0).first;
-  // Forward and backward in one surface per seed curve (t < 0 on the backward half).
-  const auto np = FAS::parameters::front_spacing(
-      scene.size / 30,
-      FAS::parameters::arc_length_time_lines(
-          true, FAS::parameters::max_length(
-                    2 * scene.size, FAS::parameters::integration_direction(
-                                        FAS::Integration_direction::BOTH,
-                                        FAS::parameters::seed_parameter_map(
-                                            u, FAS::parameters::integration_time_map(t))))));
-  for (const Polyline& seed : seed_curves) {
-    if (seed.size() < 2)
-      continue;
-    try {
-      FAS::integrate_stream_surface(scene.flow, seed, surfaces, np);
-    } catch (const std::exception& e) { // a degenerate contour: skip it, say why
-      std::cerr << name << ": seed curve skipped: " << e.what() << "\n";
+  std::vector<double> curve_values, point_values; // r of each curve and of each of its points
+  for (double value : FAS::evenly_spaced_iso_values(tm, r, 3)) {
+    const std::size_t before = seed_curves.size();
+    FAS::extract_iso_contours(tm, r, std::vector<double>{value}, std::back_inserter(seed_curves));
+    for (std::size_t i = before; i < seed_curves.size(); ++i) {
+      curve_values.push_back(value);
+      point_values.insert(point_values.end(), seed_curves[i].size(), value);
     }
   }
-  std::vector<double> us, ts;
+
+  const auto integrated = integrate_distinct_stream_surfaces<Mesh>(scene.flow, seed_curves, scene.size / 30,
+                                                                   2 * scene.size);
+  for (const std::string& reason : integrated.skipped_reasons)
+    std::cerr << name << ": " << reason << "\n";
+  const Mesh& surfaces = integrated.mesh;
+  const auto u = surfaces.property_map<Mesh::Vertex_index, double>("v:u").first;
+  const auto t = surfaces.property_map<Mesh::Vertex_index, double>("v:t").first;
+  const auto seed_id = surfaces.property_map<Mesh::Vertex_index, double>("v:seed").first;
+  std::vector<double> us, ts, ids;
   for (Mesh::Vertex_index v : surfaces.vertices()) {
     us.push_back(u[v]);
     ts.push_back(t[v]);
+    ids.push_back(seed_id[v]);
   }
   std::string error;
-  bool ok =
-      FAS::IO::write_VTP_polylines((out / (name + "_seed_curves.vtp")).string(), seed_curves, {}, {}, &error);
-  ok = ok && (surfaces.is_empty() || write_surface_VTP(out / (name + "_stream_surfaces.vtp"), surfaces,
-                                                       scene.flow, {{"u", 1, us}, {"t", 1, ts}}));
+  bool ok = write_polylines_VTP((out / (name + "_seed_curves.vtp")).string(), seed_curves,
+                                {{"r", 1, point_values}}, {{"r", 1, curve_values}}, Active_scalars{"r", "r"},
+                                &error);
+  // The flux of the stream surfaces, a check of the integration; a surface whose front tore and
+  // met itself at a vertex (non-manifold there) has none, and the rest is written all the same.
+  std::optional<FAS::Normalized_flux> surfaces_flux;
+  std::vector<FAS::IO::Data_array> surfaces_cell_data;
+  if (!surfaces.is_empty()) {
+    try {
+      surfaces_cell_data.push_back({"normalized_flux", 1, face_fluxes(surfaces, scene.flow)});
+      surfaces_flux = FAS::normalized_flux(surfaces, scene.flow);
+    } catch (const std::exception& e) {
+      std::cerr << name << ": the stream surfaces' flux is not measured: " << e.what() << "\n";
+      surfaces_cell_data.clear();
+    }
+  }
+  if (ok && !surfaces.is_empty()) {
+    std::vector<FAS::IO::Data_array> arrays{
+        {"velocity", 3, vertex_velocities(surfaces, scene.flow)}, {"u", 1, us}, {"t", 1, ts}, {"SeedIds", 1, ids}};
+    ok = write_mesh_VTP((out / (name + "_stream_surfaces.vtp")).string(), surfaces, arrays, surfaces_cell_data,
+                        Active_scalars{"t", ""}, &error);
+  }
   std::size_t number_of_lines = 0;
   if (ok && !tangential) { // seed points on the orthogonal surface seed stream lines (Figure 5)
     std::vector<Point> seed_points;
     FAS::sample_seed_points(tm, scene.size / 6, std::back_inserter(seed_points));
-    std::vector<Polyline> lines;
-    for (const Point& seed : seed_points) {
-      Polyline line;
-      FAS::integrate_streamline(
-          scene.flow, seed, std::back_inserter(line),
-          FAS::parameters::max_length(
-              2 * scene.size, FAS::parameters::integration_direction(FAS::Integration_direction::BOTH)));
-      if (line.size() > 1)
-        lines.push_back(std::move(line));
-    }
-    number_of_lines = lines.size();
-    ok = FAS::IO::write_VTP_polylines((out / (name + "_stream_lines.vtp")).string(), lines, {}, {}, &error);
+    const Stream_lines<Point> lines = integrate_stream_lines(scene.flow, seed_points, 2 * scene.size);
+    number_of_lines = lines.lines.size();
+    ok = write_polylines_VTP((out / (name + "_stream_lines.vtp")).string(), lines.lines, lines.point_data(),
+                             lines.cell_data(), Active_scalars{"IntegrationTime", ""}, &error);
     if (ok && pictures) { // the stream lines through the seeding surface (Figure 5)
-      write_picture(out / (name + "_stream_lines.png"), tm, flux_with_polylines(tm, scene.flow, lines));
+      write_picture(out / (name + "_stream_lines.png"), tm, flux_with_polylines(tm, scene.flow, lines.lines));
     }
   }
   if (!ok) {
     std::cerr << "error: " << error << "\n";
     return false;
   }
-  std::cout << name << ": " << seed_curves.size() << " seed curves, stream surfaces of "
-            << surfaces.number_of_faces() << " triangles (flux "
-            << (surfaces.is_empty() ? FAS::Normalized_flux() : FAS::normalized_flux(surfaces, scene.flow))
-            << ")" << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
+  std::cout << name << ": " << seed_curves.size() << " seed curves, " << integrated.number_of_surfaces()
+            << " distinct stream surfaces of " << surfaces.number_of_faces() << " triangles (flux "
+            << (surfaces_flux ? *surfaces_flux : FAS::Normalized_flux()) << ")" << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
             << "\n";
   if (pictures) {
     if (write_picture(out / (name + "_seed_curves.png"), tm,
@@ -308,6 +340,20 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   summary.report = deformation.run();
   // The first iteration reports the flux of the surface it started from: the initial patch.
   summary.initial_flux = iterations.front().normalized_flux;
+  if (tangential) { // grown across the flow before its seed curves are taken (Figure 4, top)
+    const Growth_across_flow growth = grow_across_flow(deformation, scene.size / 2, 2);
+    if (!growth.stopped_because.empty())
+      std::cerr << name << ": not grown further across the flow: " << growth.stopped_because << "\n";
+    std::cout << name << ": grown across the flow in " << growth.number_of_steps << " steps by "
+              << growth.number_of_new_faces << " faces, realigned in " << growth.alignment.number_of_iterations
+              << " iterations\n";
+    if (growth.number_of_steps > 0) {
+      summary.report.number_of_iterations += growth.alignment.number_of_iterations;
+      summary.report.converged = growth.alignment.converged;
+      summary.report.normalized_flux = growth.alignment.normalized_flux;
+      summary.report.factor_ms += growth.alignment.factor_ms;
+    }
+  }
   for (const auto& r : iterations) {
     summary.mean_gtransf_ms += r.gradient_transformation_ms / iterations.size();
     summary.mean_solve_ms += r.solve_ms / iterations.size();
@@ -339,6 +385,11 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
        << summary.report.normalized_flux.sampled_area_fraction << ",,,,,,,,,\n";
   }
   warn_unsampled(name, iterations, summary.report.normalized_flux);
+  if (!summary.report.converged)
+    std::cerr << "warning: " << name << " surface: not converged after " << summary.report.number_of_iterations
+              << " iterations (flux " << summary.report.normalized_flux
+              << "): it may still be moving or folding.  Try a smaller patch (--size), a finer one (--faces), "
+                 "or another place (--center, --normal).\n";
   std::cout << flow_name << ", " << name << ": " << summary.faces << " faces, flux " << summary.initial_flux
             << " -> " << summary.report.normalized_flux << " in " << summary.report.number_of_iterations
             << " iterations (" << (summary.report.converged ? "converged" : "not converged") << ")\n";

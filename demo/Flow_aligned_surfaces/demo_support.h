@@ -20,6 +20,7 @@
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
 
 #include "surface_rendering.h"
+#include "write_polydata_VTP.h"
 #ifdef FAS_DEMO_HAVE_RENDERING
 #include "render_surface_PNG.h"
 #endif
@@ -125,16 +126,15 @@ inline std::vector<double> vertex_velocities(const Mesh& tm, const Flow& flow)
   return values;
 }
 
-/// Writes `tm` to `path` as VTP, with the velocity at the vertices, the per-face flux and the
-/// `extra` vertex arrays.
+/// Writes `tm` to `path` as VTP (binary when built with VTK, write_polydata_VTP.h), with the
+/// velocity at the vertices, the per-face flux (the active scalars) and the `extra` vertex arrays.
 inline bool write_surface_VTP(const std::filesystem::path& path, const Mesh& tm, const Flow& flow,
                               std::vector<FAS::IO::Data_array> extra = {})
 {
   std::string error;
   extra.insert(extra.begin(), {"velocity", 3, vertex_velocities(tm, flow)});
-  const bool vtp =
-      FAS::IO::write_VTP(path.string(), tm, extra, {{"normalized_flux", 1, face_fluxes(tm, flow)}},
-                         CGAL::parameters::default_values(), &error);
+  const bool vtp = write_mesh_VTP(path.string(), tm, extra, {{"normalized_flux", 1, face_fluxes(tm, flow)}},
+                                  Active_scalars{"", "normalized_flux"}, &error);
   if (!vtp)
     std::cerr << "error: " << error << "\n";
   return vtp;
