@@ -23,6 +23,9 @@
 #include "distinct_stream_surfaces.h"
 #include "feature_placement.h"
 #include "grow_across_flow.h"
+#include "iteration_collection.h"
+#include "paraview_script.h"
+#include "scene_assembly.h"
 #include "stream_lines_with_arrays.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
@@ -53,6 +56,7 @@ struct Scene {
   Point tangential_center, orthogonal_center;
   Vector tangential_normal, orthogonal_normal;
   double size;
+  std::optional<CGAL::Bbox_3> domain = std::nullopt; // the data's box (analytic flows: none)
 };
 
 // A built-in flow with a tangential and an orthogonal placement of the patch in it.
@@ -145,7 +149,7 @@ std::optional<Scene> make_data_scene(const std::string& file, const std::string&
     return std::nullopt;
   }
   Scene scene{Flow(*field), placed->tangential_center, placed->orthogonal_center, placed->tangential_normal,
-              placed->orthogonal_normal, size};
+              placed->orthogonal_normal, size, box};
   if (placement.normal)
     scene.orthogonal_normal = scene.tangential_normal =
         Vector((*placement.normal)[0], (*placement.normal)[1], (*placement.normal)[2]);
@@ -175,10 +179,11 @@ using Polyline = std::vector<Point>;
 // parametrization (iso-contours of r, each with its value), one stream surface per distinct seed
 // curve (distinct_stream_surfaces.h: forward and backward in one mesh, arc-length time lines up
 // to twice the patch size), and stream lines from seed points on an orthogonal surface; all
-// written as VTP, with pictures when `pictures`.  Returns false when a file cannot be written.
+// written as VTP, with pictures when `pictures`, and added to `view` (the scene picture's).
+// Returns false when a file cannot be written.
 bool seed_and_integrate(const std::string& name, Mesh& tm,
                         const FAS::Flow_aligned_deformation<Mesh, Flow>& deformation, const Scene& scene,
-                        const std::filesystem::path& out, bool pictures)
+                        const std::filesystem::path& out, bool pictures, Scene_view& view)
 {
   const bool tangential = deformation.alignment() == FAS::Alignment::TANGENTIAL;
   auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
@@ -241,6 +246,7 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
     FAS::sample_seed_points(tm, scene.size / 6, std::back_inserter(seed_points));
     const Stream_lines<Point> lines = integrate_stream_lines(scene.flow, seed_points, 2 * scene.size);
     number_of_lines = lines.lines.size();
+    view.lines.push_back(to_scene_lines(lines.lines, {0.6, 0.05, 0.05}, 2));
     ok = write_polylines_VTP((out / (name + "_stream_lines.vtp")).string(), lines.lines, lines.point_data(),
                              lines.cell_data(), Active_scalars{"IntegrationTime", ""}, &error);
     if (ok && pictures) { // the stream lines through the seeding surface (Figure 5)
@@ -251,6 +257,9 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
     std::cerr << "error: " << error << "\n";
     return false;
   }
+  view.lines.push_back(to_scene_lines(seed_curves, {0.02, 0.02, 0.02}, 4));
+  if (!surfaces.is_empty()) // the stream surfaces, translucent, beyond the aligned patch
+    view.surfaces.push_back(to_scene_surface(surfaces, {}, {0.98, 0.8, 0.3}, 0.6));
   std::cout << name << ": " << seed_curves.size() << " seed curves, " << integrated.number_of_surfaces()
             << " distinct stream surfaces of " << surfaces.number_of_faces() << " triangles (flux "
             << (surfaces_flux ? *surfaces_flux : FAS::Normalized_flux()) << ")" << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
@@ -270,6 +279,7 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
         largest = std::max(largest, mean);
       }
       by_time.scalar_range = {0, largest > 0 ? largest : 1};
+      by_time.scalar_bar_title = "|t| (arc length from the seed curve)";
       write_picture(out / (name + "_stream_surfaces.png"), surfaces, by_time);
     }
   }
@@ -307,12 +317,62 @@ void warn_unsampled(const std::string& name, const std::vector<FAS::Iteration_re
                "a data file, check its domain, mask array and velocity array (--array).\n";
 }
 
+// The scene picture of one alignment: the initial patch (left) beside the aligned one with its
+// seed curves, stream surfaces and stream lines (`aligned`, right), both coloured by the
+// normalized flux, with the obstacle and the outline of the domain (analytic flows: of the
+// scene), seen by the oblique camera.
+Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view aligned, const std::string& kind)
+{
+  CGAL::Bbox_3 focus = CGAL::bbox_3(initial.points().begin(), initial.points().end());
+  for (const Scene_view* view : {&aligned})
+    for (const Scene_surface& s : view->surfaces)
+      for (const auto& p : s.points)
+        focus += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+  focus = expanded(focus, 0.1);
+  // The obstacle near the scene, whole when it is not too large: where the flow is not defined.
+  // In data, inside its box (just inside: outside it the flow is not defined either, and its
+  // faces are no obstacle).
+  CGAL::Bbox_3 around = expanded(focus, 0.5);
+  if (scene.domain)
+    around = box_intersection(around, expanded(*scene.domain, -0.04));
+  Flow_domain_lattice obstacle = sample_flow_domain<Point>(scene.flow, around, 100);
+  double obstacle_y = 0, obstacle_points = 0;
+  for (std::size_t i = 0; i < obstacle.defined.size(); ++i)
+    if (obstacle.defined[i] == 0) {
+      const std::size_t nx = std::size_t(obstacle.dimensions[0]), ny = std::size_t(obstacle.dimensions[1]);
+      const double x = obstacle.origin[0] + double(i % nx) * obstacle.spacing[0],
+                   y = obstacle.origin[1] + double((i / nx) % ny) * obstacle.spacing[1],
+                   z = obstacle.origin[2] + double(i / (nx * ny)) * obstacle.spacing[2];
+      focus += CGAL::Bbox_3(x, y, z, x, y, z);
+      obstacle_y += y;
+      ++obstacle_points;
+    }
+  // Seen from the side of the initial patch, so that the obstacle does not hide it.
+  const CGAL::Bbox_3 patch = CGAL::bbox_3(initial.points().begin(), initial.points().end());
+  const double side =
+      obstacle_points > 0 && (patch.ymin() + patch.ymax()) / 2 > obstacle_y / obstacle_points ? 1 : -1;
+  if (scene.domain) // no farther than the data
+    focus = box_intersection(focus, *scene.domain);
+  const Scene_lines outline = box_outline(scene.domain ? *scene.domain : focus);
+  Scene_picture picture;
+  picture.views.push_back(
+      {{to_scene_surface(initial, face_fluxes(initial, scene.flow), {0.8, 0.8, 0.8})}, {outline}, "initial " + kind + " patch"});
+  aligned.lines.push_back(outline);
+  aligned.title = std::string(kind == "tangential" ? "grown, " : "") + "aligned, seeded";
+  picture.views.push_back(std::move(aligned));
+  picture.scalar_name = "normalized_flux";
+  picture.obstacle = std::move(obstacle);
+  picture.camera = oblique_camera(focus, 0.5 * double(picture.width) / double(picture.height), side);
+  return picture;
+}
+
 struct Run_summary {
   std::string alignment;
   std::size_t faces = 0;
   FAS::Alignment_report report;
   FAS::Normalized_flux initial_flux;
   double mean_gtransf_ms = 0, mean_solve_ms = 0;
+  Paraview_run paraview; // what open_in_paraview.py opens of this run, and its camera
 };
 
 std::optional<Run_summary> align(const std::string& flow_name, const Scene& scene, FAS::Alignment alignment,
@@ -326,6 +386,10 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
                          scene.size, faces);
   if (!write_surface(out / (name + "_initial"), tm, scene.flow))
     return std::nullopt;
+  const Mesh initial = tm;
+  // The iterations as time steps of a ParaView collection, from the initial patch on.
+  Iteration_collection collection(out, name);
+  collection.add(tm, scene.flow);
   // Pictures (PNG, through VTK) are extras: without a display the job goes on without them.
   bool pictures = write_flux_picture(out / (name + "_initial.png"), tm, scene.flow);
 
@@ -333,7 +397,10 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   FAS::Flow_aligned_deformation<Mesh, Flow> deformation(
       tm, scene.flow, alignment,
       CGAL::parameters::number_of_iterations(200).visitor(
-          [&](const FAS::Iteration_report& r) { iterations.push_back(r); }));
+          [&](const FAS::Iteration_report& r) {
+            iterations.push_back(r);
+            collection.add(tm, scene.flow);
+          }));
   Run_summary summary;
   summary.alignment = name;
   summary.faces = tm.number_of_faces();
@@ -358,13 +425,22 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     summary.mean_gtransf_ms += r.gradient_transformation_ms / iterations.size();
     summary.mean_solve_ms += r.solve_ms / iterations.size();
   }
+  if (!collection.write_pvd()) {
+    std::cerr << "error: " << collection.error() << "\n";
+    return std::nullopt;
+  }
   if (!write_surface(out / (name + "_aligned"), tm, scene.flow))
     return std::nullopt;
   pictures = pictures && write_flux_picture(out / (name + "_aligned.png"), tm, scene.flow);
   if (pictures && tangential) // the LIC-like texture of the stream surface (Section 6)
     write_textured_picture(out / (name + "_textured.png"), tm, scene.flow, 2 / scene.size);
-  if (!seed_and_integrate(name, tm, deformation, scene, out, pictures))
+  Scene_view aligned_view{{to_scene_surface(tm, face_fluxes(tm, scene.flow), {0.8, 0.8, 0.8})}, {}, "aligned"};
+  if (!seed_and_integrate(name, tm, deformation, scene, out, pictures, aligned_view))
     return std::nullopt;
+  const bool has_stream_surfaces = aligned_view.surfaces.size() > 1, has_stream_lines = !tangential;
+  const Scene_picture picture = scene_picture(scene, initial, aligned_view, name);
+  if (pictures) // the paper's Figures 4 and 5: the initial patch beside the aligned one and what it seeds
+    write_scene_picture(out / (name + "_scene.png"), picture);
 
   auto csv = open_output(out / (name + "_flux.csv"));
   if (!csv)
@@ -384,6 +460,7 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     os << iterations.size() + 1 << ',' << csv_field(summary.report.normalized_flux.value) << ','
        << summary.report.normalized_flux.sampled_area_fraction << ",,,,,,,,,\n";
   }
+  summary.paraview = Paraview_run{name, picture.camera, has_stream_surfaces, has_stream_lines};
   warn_unsampled(name, iterations, summary.report.normalized_flux);
   if (!summary.report.converged)
     std::cerr << "warning: " << name << " surface: not converged after " << summary.report.number_of_iterations
@@ -492,6 +569,15 @@ int main(int argc, char** argv)
     }
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+
+  // A pvpython script that opens every output as the pictures show it.
+  std::vector<Paraview_run> paraview_runs;
+  for (const Run_summary& r : runs)
+    paraview_runs.push_back(r.paraview);
+  if (std::string error; !write_paraview_script(out, paraview_runs, error)) {
+    std::cerr << "error: " << error << "\n";
     return 1;
   }
 

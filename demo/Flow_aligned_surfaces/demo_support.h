@@ -150,8 +150,8 @@ inline bool write_surface(const std::filesystem::path& stem, const Mesh& tm, con
   return write_surface_VTP(stem.string() + ".vtp", tm, flow);
 }
 
-/// Renders `what` of `tm` into the PNG `path`, seen along the surface's mean normal unless `what`
-/// has a camera; prints why and returns false when it cannot (no
+/// Renders `what` of `tm` into the PNG `path`, seen obliquely (50 degrees off the surface's mean
+/// normal) unless `what` has a camera; prints why and returns false when it cannot (no
 /// VTK rendering in the build, no display): the other files of a program do not depend on it.
 inline bool write_picture(const std::filesystem::path& path, const Mesh& tm, const Surface_rendering& what)
 {
@@ -179,8 +179,15 @@ inline bool write_picture(const std::filesystem::path& path, const Mesh& tm, con
     const double length = std::sqrt(normal.squared_length());
     if (area > 0 && length > 1e-3 * area) { // a surface that faces some way (not a closed one)
       const Point center = CGAL::ORIGIN + sum / area;
-      const Point eye = center + (2 * diagonal / length) * normal;
       const Vector up = std::abs(normal.z()) < 0.9 * length ? Vector(0, 0, 1) : Vector(0, 1, 0);
+      // Oblique: 50 degrees off the normal, about the picture's vertical and towards the top, so
+      // that a bent surface shows its bending instead of its face.
+      const Vector n = normal / length;
+      Vector side = CGAL::cross_product(up, n);
+      side = side / std::sqrt(side.squared_length());
+      const double off = 50 * CGAL_PI / 180;
+      const Vector direction = std::cos(off) * n + std::sin(off) * (0.8 * side + 0.6 * up);
+      const Point eye = center + 2 * diagonal * direction / std::sqrt(direction.squared_length());
       facing.camera = Render_camera{
           {eye.x(), eye.y(), eye.z()}, {center.x(), center.y(), center.z()}, {up.x(), up.y(), up.z()}, 0, 30};
     }
@@ -204,6 +211,7 @@ inline Surface_rendering flux_with_polylines(const Mesh& tm, const Flow& flow,
 {
   Surface_rendering what;
   what.face_scalars = face_fluxes(tm, flow);
+  what.scalar_bar_title = "normalized_flux";
   for (const std::vector<Point>& line : lines) {
     what.polylines.emplace_back();
     for (const Point& p : line)
