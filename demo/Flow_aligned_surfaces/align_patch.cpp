@@ -1,14 +1,17 @@
 // The package's main job: place a planar patch in a built-in flow, align it
 // tangentially (a stream surface) or orthogonally (a seeding surface), and write
 // what a user opens afterwards: the initial and aligned surfaces as PLY and VTP
-// (ParaView), the normalized flux of every iteration as CSV, and a JSON summary; and, when built
-// with VTK rendering and a display (or Xvfb) is there, pictures of the initial and aligned
-// surfaces coloured by flux and of the tangential one with its LIC-like texture (PNG).
-// Then the seeding workflow of the paper's Figures 4 and 5 on each aligned surface: its
-// parametrization (with the deformation's own factorization) gives seed curves (iso-contours of
-// r, VTP), each seeds a stream surface integrated forward and backward (VTP with the seed
-// parameter u and the time t), and on the orthogonal surface seed points seed stream lines (VTP);
-// pictures of the seed curves on the surface and of the stream surfaces.
+// (ParaView), the iterations as a ParaView collection (.pvd), the normalized flux of every
+// iteration as CSV, a JSON summary and open_in_paraview.py (every output with the colouring and
+// camera of the pictures); and, when built with VTK rendering and a display (or Xvfb) is there,
+// pictures (PNG): the scene of each alignment (the initial patch beside the aligned one with
+// what it seeds, the obstacle and the domain, as the paper's Figures 4 and 5), the surfaces
+// coloured by flux, and the tangential one with its LIC-like texture.
+// The seeding workflow of the paper's Figures 4 and 5 on each aligned surface: the tangential
+// one grown across the flow first; its parametrization (with the deformation's own
+// factorization) gives seed curves (iso-contours of r, VTP), one stream surface per distinct
+// seed curve, integrated forward and backward as one mesh (VTP with u, t, SeedIds), and on the
+// orthogonal surface seed points seed stream lines (VTP with velocity, IntegrationTime, SeedIds).
 //
 // Usage: align_patch [--flow NAME | --field FILE [--array NAME]]
 //                    [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]
@@ -16,8 +19,9 @@
 // Flows: cylinder (default), point-source, sphere, helical, hill, burgers, abc, tornado.
 // A data file is any file IO::read_flow_field() reads (legacy VTK grids and cells, VTK XML
 // .vti/.vtu/.vts when built with VTK, AmiraMesh, NRRD) with a velocity array (and an optional
-// mask array "inside"); without --center the patch is placed at the middle of the data's box,
-// and without --normal it faces the flow there (orthogonal) or contains it (tangential).
+// mask array "inside"); without --center the patches are placed near the obstacle (or the largest
+// vorticity), and without --normal they are tilted 30 degrees off the flow
+// (feature_placement.h).
 
 #include "demo_support.h"
 #include "distinct_stream_surfaces.h"

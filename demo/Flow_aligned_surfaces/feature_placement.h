@@ -9,7 +9,8 @@
 //   hole) at lattice points away from the box's faces (the outer 10% of each side, where the
 //   channel's walls are, are left out); its centre and extent are those of these points;
 // - without such points, the feature is the lattice point of largest vorticity |curl v|
-//   (central differences on the lattice).
+//   (central differences on the lattice), also away from the box's faces (a lid-driven
+//   cavity's largest vorticity is in the corners of its lid, where nothing can be placed).
 // The mean flow direction d is the mean of the sampled velocities.  The orthogonal patch goes
 // downstream of the obstacle (its centre moved along d by the obstacle's half extent and one
 // patch size: the wake), the tangential one beside it (moved across d by the same amount, on
@@ -111,9 +112,10 @@ std::optional<Feature_placement<Point, Vector>> place_near_feature(const Field& 
   }
   else { // the lattice point of largest |curl v|
     double largest = -1;
-    for (int k = 1; k + 1 < n; ++k)
-      for (int j = 1; j + 1 < n; ++j)
-        for (int i = 1; i + 1 < n; ++i) {
+    const int away = n / 10; // not in the walls' boundary layers (a lid's corner is singular)
+    for (int k = away; k < n - away; ++k)
+      for (int j = away; j < n - away; ++j)
+        for (int i = away; i < n - away; ++i) {
           const auto &xm = samples[index(i - 1, j, k)], &xp = samples[index(i + 1, j, k)],
                      &ym = samples[index(i, j - 1, k)], &yp = samples[index(i, j + 1, k)],
                      &zm = samples[index(i, j, k - 1)], &zp = samples[index(i, j, k + 1)];

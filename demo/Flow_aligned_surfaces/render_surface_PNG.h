@@ -19,7 +19,9 @@
 
 #include "surface_rendering.h"
 #include "virtual_display.h"
+#include "vtk_polydata_of_mesh.h"
 
+#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -118,22 +120,12 @@ inline bool write_window_PNG(vtkRenderWindow* window, const std::string& filenam
   if (encoded == nullptr || encoded->GetNumberOfValues() == 0)
     return fail("VTK's PNG writer produced nothing");
   // Written beside `filename` and renamed over it, so that a reader never sees half a picture.
-  const std::string partial = filename + ".partial";
-  {
-    std::ofstream os(partial, std::ios::binary | std::ios::trunc);
-    os.write(reinterpret_cast<const char*>(encoded->GetPointer(0)),
-             std::streamsize(encoded->GetNumberOfValues()));
-    if (!os.flush()) {
-      std::remove(partial.c_str());
-      return fail("cannot write " + partial);
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(partial, filename, ec);
-  if (ec) {
-    std::remove(partial.c_str());
-    return fail("cannot rename " + partial + ": " + ec.message());
-  }
+  std::string why;
+  if (!CGAL::Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, why, [&](std::ostream& os) {
+        os.write(reinterpret_cast<const char*>(encoded->GetPointer(0)),
+                 std::streamsize(encoded->GetNumberOfValues()));
+      }))
+    return fail("cannot write the picture: " + why);
   return true;
 }
 
@@ -197,24 +189,9 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
                                     get_const_property_map(CGAL::vertex_point, tm));
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(vtkIdType(nv));
-  for (auto v : vertices(tm)) {
-    const auto& p = get(vpm, v);
-    points->SetPoint(vtkIdType(get(vim, v)), CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                     CGAL::to_double(p.z()));
-  }
-  std::vector<std::vector<vtkIdType>> face_vertices(nf);
-  for (auto f : faces(tm))
-    for (auto v : vertices_around_face(halfedge(f, tm), tm))
-      face_vertices[get(fim, f)].push_back(vtkIdType(get(vim, v)));
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& fv : face_vertices)
-    polys->InsertNextCell(vtkIdType(fv.size()), fv.data());
-  auto surface = vtkSmartPointer<vtkPolyData>::New();
-  surface->SetPoints(points);
-  surface->SetPolys(polys);
+  const vtkSmartPointer<vtkPolyData> surface = vtk_polydata_of_mesh(tm, vpm, vim, fim);
+  vtkPoints* points = surface->GetPoints();
+  vtkCellArray* polys = surface->GetPolys();
 
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
   renderer->SetBackground(what.background[0], what.background[1], what.background[2]);

@@ -26,6 +26,8 @@
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkZLibDataCompressor.h>
+
+#include "vtk_polydata_of_mesh.h"
 #endif
 
 #include <cstddef>
@@ -118,27 +120,8 @@ bool write_mesh_VTP(const std::string& filename, const TriangleMesh& tm,
   const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
   bool ok = FAS::IO::internal::check_VTP_array_sizes(point_data, nv, cell_data, nf, reason);
   if (ok) {
-    const auto vim = get(CGAL::vertex_index, tm);
-    const auto fim = get(CGAL::face_index, tm);
-    const auto vpm = get(CGAL::vertex_point, tm);
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(vtkIdType(nv));
-    for (auto v : vertices(tm)) {
-      const auto& p = get(vpm, v);
-      points->SetPoint(vtkIdType(get(vim, v)), CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                       CGAL::to_double(p.z()));
-    }
-    std::vector<std::vector<vtkIdType>> face_vertices(nf);
-    for (auto f : faces(tm))
-      for (auto v : vertices_around_face(halfedge(f, tm), tm))
-        face_vertices[get(fim, f)].push_back(vtkIdType(get(vim, v)));
-    auto polys = vtkSmartPointer<vtkCellArray>::New();
-    for (const auto& fv : face_vertices)
-      polys->InsertNextCell(vtkIdType(fv.size()), fv.data());
-    auto polydata = vtkSmartPointer<vtkPolyData>::New();
-    polydata->SetPoints(points);
-    polydata->SetPolys(polys);
+    const vtkSmartPointer<vtkPolyData> polydata = vtk_polydata_of_mesh(
+        tm, get(CGAL::vertex_point, tm), get(CGAL::vertex_index, tm), get(CGAL::face_index, tm));
     detail::add_VTK_arrays(polydata->GetPointData(), point_data, nv, active.point_array);
     detail::add_VTK_arrays(polydata->GetCellData(), cell_data, nf, active.cell_array);
     ok = detail::write_VTK_polydata(filename, polydata, reason);
