@@ -445,6 +445,12 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   const Scene_picture picture = scene_picture(scene, initial, aligned_view, name);
   if (pictures) // the paper's Figures 4 and 5: the initial patch beside the aligned one and what it seeds
     write_scene_picture(out / (name + "_scene.png"), picture);
+  // The obstacle of the picture, for ParaView (an extra, as the pictures).
+  std::string obstacle_error;
+  const bool has_obstacle = !picture.obstacle.defined.empty() &&
+                            write_obstacle_VTP(out / (name + "_obstacle.vtp"), picture, obstacle_error);
+  if (!obstacle_error.empty())
+    std::cerr << name << ": " << obstacle_error << "\n";
 
   auto csv = open_output(out / (name + "_flux.csv"));
   if (!csv)
@@ -464,7 +470,7 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     os << iterations.size() + 1 << ',' << csv_field(summary.report.normalized_flux.value) << ','
        << summary.report.normalized_flux.sampled_area_fraction << ",,,,,,,,,\n";
   }
-  summary.paraview = Paraview_run{name, picture.camera, has_stream_surfaces, has_stream_lines};
+  summary.paraview = Paraview_run{name, picture.camera, has_stream_surfaces, has_stream_lines, has_obstacle};
   warn_unsampled(name, iterations, summary.report.normalized_flux);
   if (!summary.report.converged)
     std::cerr << "warning: " << name << " surface: not converged after " << summary.report.number_of_iterations

@@ -3,10 +3,10 @@
 //
 // The pvpython script the main job writes beside its outputs, open_in_paraview.py: it opens
 // every output (the initial and aligned surfaces, the seed curves, stream surfaces and stream
-// lines, and the collection of the iterations, NAME_iterations.pvd) in one render view per
+// lines, the obstacle, and the collection of the iterations, NAME_iterations.pvd) in one render view per
 // alignment, with the colouring and the camera of the scene pictures (render_scene_PNG.h):
 // surfaces by `normalized_flux` blue to red over [0, 1] with a colour bar, seed curves black,
-// stream surfaces translucent yellow, stream lines dark red; the initial surface and the
+// stream surfaces translucent yellow, stream lines dark red, the obstacle grey; the initial surface and the
 // iterations are opened hidden (eye icon in the Pipeline Browser; the iterations animate with
 // the time controls).  Paths are relative to the script, so the folder can be moved.
 //
@@ -34,6 +34,7 @@ struct Paraview_run {
   Render_camera camera;
   bool stream_surfaces = false; ///< NAME_stream_surfaces.vtp was written
   bool stream_lines = false;    ///< NAME_stream_lines.vtp was written
+  bool obstacle = false;        ///< NAME_obstacle.vtp was written
 };
 
 namespace detail {
@@ -71,7 +72,8 @@ runs = [
        << ", 'focal_point': " << detail::python_triple(r.camera.focal_point)
        << ", 'view_up': " << detail::python_triple(r.camera.view_up) << ", 'view_angle': " << r.camera.view_angle
        << ", 'stream_surfaces': " << (r.stream_surfaces ? "True" : "False")
-       << ", 'stream_lines': " << (r.stream_lines ? "True" : "False") << "},\n";
+       << ", 'stream_lines': " << (r.stream_lines ? "True" : "False")
+       << ", 'obstacle': " << (r.obstacle ? "True" : "False") << "},\n";
   py << R"(]
 screenshot = sys.argv[sys.argv.index('--screenshot') + 1] if '--screenshot' in sys.argv else None
 
@@ -125,6 +127,10 @@ for run in runs:
         ColorBy(lines, None)
         lines.AmbientColor = lines.DiffuseColor = [0.6, 0.05, 0.05]
         lines.LineWidth = 2.0
+    if run['obstacle']:
+        _, obstacle = open_vtp(name + '_obstacle', view)
+        obstacle.ColorArrayName = ['POINTS', '']  # (only normals: ColorBy(None) refuses it)
+        obstacle.AmbientColor = obstacle.DiffuseColor = [0.72, 0.72, 0.76]
     iterations = PVDReader(registrationName=name + '_iterations',
                            FileName=os.path.join(here, name + '_iterations.pvd'))
     colour_by_flux(Show(iterations, view), view)

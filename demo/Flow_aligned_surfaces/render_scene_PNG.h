@@ -139,8 +139,11 @@ inline vtkSmartPointer<vtkActor> make_scene_lines_actor(const Scene_lines& l)
   return actor;
 }
 
-inline vtkSmartPointer<vtkActor> make_obstacle_actor(const Flow_domain_lattice& lattice,
-                                                     const std::array<double, 3>& color)
+} // namespace detail
+
+/// The obstacle of a scene: the contour at 1/2 of where the flow is defined on `lattice`
+/// (VTK's flying edges, with normals).
+inline vtkSmartPointer<vtkPolyData> obstacle_polydata(const Flow_domain_lattice& lattice)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetOrigin(lattice.origin.data());
@@ -156,8 +159,18 @@ inline vtkSmartPointer<vtkActor> make_obstacle_actor(const Flow_domain_lattice& 
   contour->SetInputData(image);
   contour->SetValue(0, 0.5);
   contour->ComputeNormalsOn();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  return contour->GetOutput();
+}
+
+namespace detail {
+
+inline vtkSmartPointer<vtkActor> make_obstacle_actor(const Flow_domain_lattice& lattice,
+                                                     const std::array<double, 3>& color)
+{
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputConnection(contour->GetOutputPort());
+  mapper->SetInputData(obstacle_polydata(lattice));
   mapper->ScalarVisibilityOff();
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);

@@ -11,6 +11,7 @@
 #define FAS_DEMO_SCENE_ASSEMBLY_H
 
 #include "scene_rendering.h"
+#include "write_polydata_VTP.h"
 #ifdef FAS_DEMO_HAVE_RENDERING
 #include "render_scene_PNG.h"
 #endif
@@ -134,7 +135,8 @@ Flow_domain_lattice sample_flow_domain(const Flow& flow, const CGAL::Bbox_3& box
 }
 
 /// The oblique camera of the scene pictures: looking at the centre of `focus` from the left
-/// and above, from the side of y's sign `side` (direction (-0.5, side, 0.75) from it, z up),
+/// and above, from the side of y's sign `side` (direction (-1, 0.9 side, 0.75) from it, z up:
+/// upstream enough for a patch across the flow to show its face),
 /// far enough for the box to fill a view of aspect `aspect` (width / height).
 inline Render_camera oblique_camera(const CGAL::Bbox_3& focus, double aspect, double side = -1)
 {
@@ -146,7 +148,7 @@ inline Render_camera oblique_camera(const CGAL::Bbox_3& focus, double aspect, do
   const double view_angle = 30;
   const double distance = 0.5 * diagonal / std::tan(view_angle / 2 * 3.141592653589793 / 180) /
                           std::min(1.0, aspect);
-  const std::array<double, 3> dir{-0.5, side < 0 ? -1.0 : 1.0, 0.75};
+  const std::array<double, 3> dir{-1.0, side < 0 ? -0.9 : 0.9, 0.75};
   const double length = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
   Render_camera camera;
   for (int a = 0; a < 3; ++a)
@@ -172,6 +174,21 @@ inline bool write_scene_picture(const std::filesystem::path& path, const Scene_p
             << ": built without VTK rendering and X11 (the demo's target fas_demo_rendering)\n";
 #endif
   return false;
+}
+
+/// Writes the obstacle of `picture` (the contour of its lattice) to `path` as VTP, for
+/// ParaView; returns false with the reason in `error` when it cannot (a build without VTK's
+/// rendering and XML I/O: `error` says so), true without writing when there is no obstacle.
+inline bool write_obstacle_VTP(const std::filesystem::path& path, const Scene_picture& picture, std::string& error)
+{
+  if (picture.obstacle.defined.empty())
+    return true;
+#if defined(FAS_DEMO_HAVE_RENDERING) && defined(CGAL_FLOW_ALIGNED_SURFACES_USE_VTK)
+  return detail::write_VTK_polydata(path.string(), obstacle_polydata(picture.obstacle), error);
+#else
+  error = path.string() + " not written: built without VTK's rendering and XML I/O";
+  return false;
+#endif
 }
 
 } // namespace fas_demo
