@@ -41,6 +41,23 @@ class Setup:
         return vti
 
 
+def number_of_ranks():
+    """The number of MPI ranks the filters run on (1 without MPI)."""
+    return servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+
+
+def expect_spread_over_ranks(out, what):
+    """On several ranks: `out` (a filter's output) says that the filter sampled the input spread
+    over all of them.  Nothing on one rank."""
+    ranks = number_of_ranks()
+    if ranks == 1:
+        return
+    for name in ["number_of_ranks", "number_of_ranks_with_cells"]:
+        if field_value(out, name) != ranks:
+            raise AssertionError("%s: %s is %g on %d ranks" % (what, name, field_value(out, name), ranks))
+    print("%s: the input spread over %d ranks, %d exchanges" % (what, ranks, field_value(out, "number_of_exchanges")))
+
+
 def read_polydata(filename):
     reader = vtkXMLPolyDataReader()
     reader.SetFileName(filename)

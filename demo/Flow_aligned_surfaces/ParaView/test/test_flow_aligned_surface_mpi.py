@@ -12,10 +12,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fas_plugin_test as t
-from paraview import servermanager
 
 setup = t.Setup(globals())
-ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+ranks = t.number_of_ranks()
 if ranks != 2:
     raise AssertionError("run on 2 ranks (mpiexec -n 2 pvbatch --mpi), not %d" % ranks)
 
