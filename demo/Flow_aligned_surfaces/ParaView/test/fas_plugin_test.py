@@ -58,6 +58,35 @@ def expect_spread_over_ranks(out, what):
     print("%s: the input spread over %d ranks, %d exchanges" % (what, ranks, field_value(out, "number_of_exchanges")))
 
 
+# The script of a ProgrammableSource (OutputDataSetType vtkUnstructuredGrid) that puts the image
+# file %(file)r on one rank only (%(rank)r), as unstructured cells, for MPI runs: mode "all"
+# (the other rank holds no cells), "none" (no rank holds cells) or "no velocity" (the piece has no
+# velocity array).  Fill it in with flow_on_one_rank(rank, mode, file).
+FLOW_ON_ONE_RANK = """
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+from vtkmodules.vtkFiltersCore import vtkAppendFilter
+mode = %(mode)r
+rank = vtkMultiProcessController.GetGlobalController().GetLocalProcessId()
+if rank == %(rank)r and mode != "none":
+    reader = vtkXMLImageDataReader()
+    reader.SetFileName(%(file)r)
+    reader.Update()
+    grid = vtkAppendFilter()
+    grid.SetOutputPointsPrecision(1)  # double: the image's exact point coordinates
+    grid.AddInputData(reader.GetOutput())
+    grid.Update()
+    self.GetOutput().ShallowCopy(grid.GetOutput())
+    if mode == "no velocity":
+        self.GetOutput().GetPointData().RemoveArray("velocity")
+"""
+
+
+def flow_on_one_rank(rank, mode, filename):
+    """The ProgrammableSource script of FLOW_ON_ONE_RANK for `rank`, `mode` and the image `filename`."""
+    return FLOW_ON_ONE_RANK % {"rank": rank, "mode": mode, "file": filename}
+
+
 def read_polydata(filename):
     reader = vtkXMLPolyDataReader()
     reader.SetFileName(filename)
