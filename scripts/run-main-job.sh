@@ -29,7 +29,7 @@ for arg in "$@"; do
     print_help "$0"
     echo
     if [ -x "$align_patch" ]; then
-      "$align_patch" --help
+      "$align_patch" --help || true   # an old build may not know --help
     else
       echo "(align_patch is not built yet; its options are in the README's main-job section.)"
     fi

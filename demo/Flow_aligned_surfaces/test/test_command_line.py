@@ -112,11 +112,14 @@ def check_failed_run(replay_session, session):
         before = listing(out)
         # The session saves once (written), then into a sub-folder that does not exist (fails).
         bad = os.path.join(work, "half.session")
-        with open(session) as f, open(bad, "w") as g:
-            g.write(f.read() + "\nsave missing/surface.vtp\n")
+        with open(session) as f:
+            text = f.read().rstrip("\n") + "\nsave missing/surface.vtp\n"
+        with open(bad, "w") as g:
+            g.write(text)
+        line = len(text.splitlines())
         status, _, err = run([replay_session, "--output", out, "--overwrite", "--quiet", bad], work)
-        if status == 0:
-            fail("a session that cannot save succeeded")
+        if status == 0 or f"line {line}: cannot save missing/surface.vtp" not in err:
+            fail(f"a session that cannot save at line {line} did not fail there (status {status}):\n{err}")
         if listing(out) != before:
             fail(f"the failed run changed the output folder: {sorted(listing(out))}")
         if sorted(os.listdir(work)) != ["half.session", "out"]:
@@ -186,6 +189,7 @@ def fake_tools(work):
 
 
 def check_scripts(scripts_dir):
+    scripts_dir = os.path.abspath(scripts_dir)
     scripts = sorted(f for f in os.listdir(scripts_dir) if f.endswith(".sh"))
     for script in scripts:
         with tempfile.TemporaryDirectory() as work:
@@ -233,6 +237,10 @@ def check_scripts(scripts_dir):
 
 def main():
     check, args = sys.argv[1], sys.argv[2:]
+    if check != "help" and check != "garbage":  # programs and files; the texts stay as they are
+        args = [os.path.abspath(a) if os.path.exists(a) else a for a in args]
+    else:
+        args[0] = os.path.abspath(args[0])
     if check == "help":
         check_help(args[0], args[1:])
     elif check == "garbage":
