@@ -288,7 +288,8 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   std::vector<FAS::Iteration_report> iterations;
   Progress progress(name);
   FAS::Flow_aligned_deformation<Mesh, Flow> deformation(
-      tm, scene.flow, alignment, CGAL::parameters::number_of_iterations(200).visitor([&](const FAS::Iteration_report& r) {
+      tm, scene.flow, alignment,
+      CGAL::parameters::number_of_iterations(200).visitor([&](const FAS::Iteration_report& r) {
         iterations.push_back(r);
         progress(r);
       }));
@@ -342,7 +343,9 @@ bool write_summary(const std::filesystem::path& path, const nlohmann::ordered_js
                    const std::string& flow_name, const Scene& scene, const std::vector<Run_summary>& runs,
                    const std::vector<std::string>& files)
 {
-  const auto number = [](const std::optional<double>& x) { return x ? nlohmann::json(*x) : nlohmann::json(); };
+  const auto number = [](const std::optional<double>& x) {
+    return x ? nlohmann::json(*x) : nlohmann::json();
+  };
   const auto xyz = [](const auto& p) { return nlohmann::json::array({p.x(), p.y(), p.z()}); };
   nlohmann::ordered_json summary;
   summary["program"] = "align_patch";
@@ -388,33 +391,34 @@ int main(int argc, char** argv)
   Face_count faces{5000};
   Placement placement;
   Output_options output;
+  // --center, --normal and --size are optional: without them the flow's own placement is taken.
+  const auto set_center = [&](const Triple& t) { placement.center = t.value; };
+  const auto set_normal = [&](const Triple& t) { placement.normal = t.value; };
+  const auto set_size = [&](const Positive_number& x) { placement.size = x.value; };
+  const std::string flow_help =
+      std::string("a built-in analytic flow: ") + built_in_flow_names() + " (default: cylinder)";
   po::options_description options = option_group("Options (lengths and positions in the flow's units)");
+  options.add_options()("flow", po::value(&flow_name)->value_name("NAME"), flow_help.c_str());
+  options.add_options()("field", po::value(&field_file)->value_name("FILE"),
+                        "a velocity field read from a data file instead of --flow: legacy VTK, VTK XML "
+                        "(.vti, .vtu, .vts), AmiraMesh (.am), NRRD (.nrrd, .nhdr), with an optional mask "
+                        "array 'inside'");
+  options.add_options()("array", po::value(&array)->value_name("NAME"),
+                        "the velocity array of --field (default: the file's first vector array)");
   options.add_options()(
-      "flow", po::value(&flow_name)->value_name("NAME"),
-      (std::string("a built-in analytic flow: ") + built_in_flow_names() + " (default: cylinder)").c_str())(
-      "field", po::value(&field_file)->value_name("FILE"),
-      "a velocity field read from a data file instead of --flow: legacy VTK, VTK XML (.vti, .vtu, .vts), "
-      "AmiraMesh (.am), NRRD (.nrrd, .nhdr), with an optional mask array 'inside'")(
-      "array", po::value(&array)->value_name("NAME"),
-      "the velocity array of --field (default: the file's first vector array)")(
       "alignment", po::value(&alignment)->default_value(alignment)->value_name("MODE"),
-      "tangential (a stream surface), orthogonal (a seeding surface) or both (one of each)")(
-      "faces", po::value(&faces)->default_value(faces)->value_name("N"),
-      "the number of triangles of the patch (2 to 10000000)")(
-      "center", po::value<Triple>()->value_name("X,Y,Z")->notifier([&](const Triple& t) {
-        placement.center = t.value;
-      }),
-      "the centre of the patch (default: the flow's own placement; with --field, the middle of the data's "
-      "box)")("normal", po::value<Triple>()->value_name("X,Y,Z")->notifier([&](const Triple& t) {
-                placement.normal = t.value;
-              }),
-              "the normal of the patch, any length (default: the flow's own placement; with --field, "
-              "along the flow at the centre for orthogonal, across it for tangential)")(
-      "size", po::value<Positive_number>()->value_name("S")->notifier([&](const Positive_number& x) {
-        placement.size = x.value;
-      }),
-      "the side of the square patch (default: the flow's own; with --field, a quarter of the data box's "
-      "smallest side)");
+      "tangential (a stream surface), orthogonal (a seeding surface) or both (one of each)");
+  options.add_options()("faces", po::value(&faces)->default_value(faces)->value_name("N"),
+                        "the number of triangles of the patch (2 to 10000000)");
+  options.add_options()("center", po::value<Triple>()->value_name("X,Y,Z")->notifier(set_center),
+                        "the centre of the patch (default: the flow's own placement; with --field, the "
+                        "middle of the data's box)");
+  options.add_options()("normal", po::value<Triple>()->value_name("X,Y,Z")->notifier(set_normal),
+                        "the normal of the patch, any length (default: the flow's own placement; with "
+                        "--field, along the flow at the centre for orthogonal, across it for tangential)");
+  options.add_options()("size", po::value<Positive_number>()->value_name("S")->notifier(set_size),
+                        "the side of the square patch (default: the flow's own; with --field, a quarter of "
+                        "the data box's smallest side)");
   options.add(output_options(output, "flow_aligned_surfaces_output"));
   const Program_help help{
       "align_patch [options]",
@@ -443,7 +447,8 @@ int main(int argc, char** argv)
   // What was asked, for summary.json; null where the default is taken.
   const auto given = [](const auto& x) { return x ? nlohmann::json(*x) : nlohmann::json(); };
   const nlohmann::ordered_json inputs{
-      {"flow", field_file.empty() ? nlohmann::json(flow_name.empty() ? "cylinder" : flow_name) : nlohmann::json()},
+      {"flow",
+       field_file.empty() ? nlohmann::json(flow_name.empty() ? "cylinder" : flow_name) : nlohmann::json()},
       {"field", field_file.empty() ? nlohmann::json()
                                    : nlohmann::json(std::filesystem::absolute(field_file).string())},
       {"array", array.empty() ? nlohmann::json() : nlohmann::json(array)},
@@ -499,7 +504,8 @@ int main(int argc, char** argv)
     std::cerr << "error: " << e.what() << "\n";
     return 1;
   }
-  if (!write_summary(out / "summary.json", inputs, flow_name, *scene, runs, folder.files()) || !folder.commit())
+  if (!write_summary(out / "summary.json", inputs, flow_name, *scene, runs, folder.files()) ||
+      !folder.commit())
     return 1;
   std::cout << "results written to " << folder.destination().string() << "\n";
   return 0;

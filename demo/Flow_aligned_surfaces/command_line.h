@@ -183,7 +183,9 @@ inline std::optional<int> parse_command_line(int argc, char** argv, const Progra
         throw po::error("--" + o.string_key + ": expected a value, got the option '" + o.value.front() + "'");
     po::store(parsed, vm);
     if (vm.count("help")) {
-      std::cout << "Usage: " << help.synopsis << "\n\n" << help.description << "\n\n" << options << std::flush;
+      std::cout << "Usage: " << help.synopsis << "\n\n"
+                << help.description << "\n\n"
+                << options << std::flush;
       return 0;
     }
     if (vm.count("version")) {

@@ -33,7 +33,8 @@ int main(int argc, char** argv)
   Face_count faces{2000};
   Positive_number spacing{0.15}, length{1.5};
   Output_options output;
-  po::options_description options = option_group("Options (lengths in the flow's units; the source is at the origin)");
+  po::options_description options =
+      option_group("Options (lengths in the flow's units; the source is at the origin)");
   options.add_options()("faces", po::value(&faces)->default_value(faces)->value_name("N"),
                         "the number of triangles of the disk (2 to 10000000)")(
       "spacing", po::value(&spacing)->default_value(spacing)->value_name("H"),
