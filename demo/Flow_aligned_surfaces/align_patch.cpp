@@ -485,7 +485,7 @@ int main(int argc, char** argv)
   }
   // Everything goes to a staging folder, moved into place only when the whole run succeeded.
   Output_folder folder;
-  if (!folder.open(output))
+  if (!folder.open(output, {field_file}))
     return 1;
   const std::filesystem::path& out = folder.path();
 

@@ -222,7 +222,8 @@ inline po::options_description output_options(Output_options& output, const std:
                         "unless --overwrite")(
       "overwrite", po::bool_switch(&output.overwrite),
       "write into a non-empty --output folder: the files in it (an earlier run's) are replaced by this "
-      "run's, and removed when this run does not write them; a folder with sub-folders is refused")(
+      "run's, and removed when this run does not write them; refused for a folder with sub-folders, "
+      "the current folder and one that holds an input")(
       "quiet", po::bool_switch(&output.quiet),
       "print nothing but warnings and errors (no progress, no results)");
   return options;
@@ -245,8 +246,9 @@ public:
   }
 
   /// Checks `options.folder` and creates the staging folder; prints why and returns false when
-  /// the folder is refused or cannot be written.
-  bool open(const Output_options& options)
+  /// the folder is refused or cannot be written.  With --overwrite, a folder that holds the
+  /// current directory or one of the run's `inputs` (files) is refused: its files would go.
+  bool open(const Output_options& options, const std::vector<std::string>& inputs = {})
   {
     namespace fs = std::filesystem;
     std::error_code ec;
@@ -263,6 +265,7 @@ public:
     if (fs::exists(status)) {
       if (!fs::is_directory(status))
         return fail("exists and is not a folder");
+      bool empty = true;
       for (const fs::directory_entry& entry : fs::directory_iterator(destination_, ec)) {
         if (!options.overwrite)
           return fail("the folder is not empty (an earlier run?); give --overwrite to replace its files, "
@@ -270,9 +273,22 @@ public:
         if (entry.is_directory())
           return fail("the folder holds the folder " + entry.path().filename().string() +
                       "; --overwrite replaces only a folder of files (an earlier run's output)");
+        empty = false;
       }
       if (ec)
         return fail("cannot read the folder: " + ec.message());
+      // Its files will go: not those of the folder the user is in, nor the run's inputs.
+      const auto inside = [this](const fs::path& path) {
+        std::error_code ignored;
+        const fs::path file = fs::weakly_canonical(path, ignored);
+        const fs::path folder = fs::weakly_canonical(destination_, ignored);
+        return std::mismatch(folder.begin(), folder.end(), file.begin(), file.end()).first == folder.end();
+      };
+      if (!empty && inside(fs::current_path(ec)))
+        return fail("--overwrite would remove the files of the folder you are in; give a folder of its own");
+      for (const std::string& input : inputs)
+        if (!empty && !input.empty() && inside(input))
+          return fail("--overwrite would remove the input " + input + "; give a folder of its own");
     }
     fs::create_directories(destination_.parent_path(), ec);
     staging_ = destination_.parent_path() /

@@ -177,7 +177,9 @@ int main(int argc, char** argv)
     sessions.push_back(std::move(loaded));
   }
   Output_folder folder;
-  if (!folder.open(output))
+  std::vector<std::string> inputs = session_files;
+  inputs.push_back(field_file);
+  if (!folder.open(output, inputs))
     return 1;
   const fs::path& out = folder.path();
 

@@ -7,7 +7,8 @@
                                  PROGRAM OPTION TEXT ARG...: refused (exit 2), the message names
                                  OPTION and TEXT, nothing written (not even the output folder)
   overwrite ALIGN_PATCH          a non-empty output folder is refused without --overwrite (and left
-                                 as it was); with it, no file of the earlier run remains
+                                 as it was); with it, no file of the earlier run remains; the
+                                 folder the user is in is refused even with --overwrite
   failed_run REPLAY_SESSION SESSION
                                  a run that fails half-way (a `save` into a missing sub-folder)
                                  leaves the output folder as it was, and no staging folder
@@ -101,6 +102,11 @@ def check_overwrite(align_patch):
             fail(f"the run with --overwrite did not write tangential_flux.csv: {files}")
         if os.listdir(work) != ["out"]:
             fail(f"something was left beside the output folder: {os.listdir(work)}")
+        # The folder the user is in is not emptied, even with --overwrite.
+        before = listing(out)
+        status, _, err = run([align_patch, "--faces", "200", "--output", ".", "--overwrite"], out)
+        if status == 0 or "folder you are in" not in err or listing(out) != before:
+            fail(f"--output . --overwrite inside an earlier run's folder was not refused ({status}):\n{err}")
 
 
 def check_failed_run(replay_session, session):
