@@ -15,7 +15,7 @@
 #   --help      prints this help, and align_patch's own when it is built; does nothing else
 #
 # Exit status: align_patch's (0 on success, 1 when the run fails, 2 for a bad command line), or
-# the failing step's.  An up-to-date machine reaches the job in well under a second: the
+# the failing step's.  An up-to-date machine reaches the job in about a second: the
 # dependency check is one dpkg-query call, and CMake configures the build folder only the first
 # time (the build reconfigures by itself when a CMakeLists.txt changed).  FAS_BUILD_DIR chooses
 # the build folder (default: build/release in the clone).
