@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Usage: scripts/make-figures.sh       (--help: this help)
+#
 # Regenerates the user manual's figures that the demo's applications draw
 # (doc/Flow_aligned_surfaces/fig/): the LIC-like and arrow textures of a stream surface (the
 # paper's Figure 8) and the stream surface with its seed curves, from
@@ -8,6 +10,8 @@
 # come from doc/Flow_aligned_surfaces/fig/make_figures.py, the session plot from replay_session;
 # the ParaView screenshots from the plugin's tests (demo/Flow_aligned_surfaces/ParaView/test).
 set -euo pipefail
+source "$(dirname "$0")/lib/help.sh"
+exit_if_help_asked "$@"
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="$root/build/release"
 fig="$root/doc/Flow_aligned_surfaces/fig"
@@ -16,14 +20,14 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" --target flow_texture_demo align_patch -j"$(nproc)"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-"$build/demo/Flow_aligned_surfaces/flow_texture" --faces 3000 --picture-width 320 --output "$work" | tee "$work/log"
+"$build/demo/Flow_aligned_surfaces/flow_texture" --faces 3000 --picture-width 320 --output "$work/texture" | tee "$work/log"
 if ! grep -q "wrote the pictures" "$work/log"; then
   echo "make-figures: the pictures were not rendered (see above); figures unchanged" >&2
   exit 1
 fi
-cp "$work/textured.png" "$fig/fas_texture_noise.png"
-cp "$work/arrows_rendered.png" "$fig/fas_texture_arrows.png"
-cp "$work/aligned_flux.png" "$fig/fas_texture_seed_curves.png"
+cp "$work/texture/textured.png" "$fig/fas_texture_noise.png"
+cp "$work/texture/arrows_rendered.png" "$fig/fas_texture_arrows.png"
+cp "$work/texture/aligned_flux.png" "$fig/fas_texture_seed_curves.png"
 # The seeding workflow of Figures 4 and 5, from the main job.
 "$build/demo/Flow_aligned_surfaces/align_patch" --faces 3000 --output "$work/main_job" | tee "$work/main_job.log"
 if [ ! -f "$work/main_job/orthogonal_stream_surfaces.png" ]; then

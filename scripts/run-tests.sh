@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Usage: scripts/run-tests.sh          (--help: this help)
+#
 # Builds what the tests run and runs every test through ctest:
 #  1. Release: the core GoogleTest executable (no VTK), the VTK one, the examples and the demo
 #     programs (run as tests), the ParaView plugin (pvbatch scripts, the GUI under Xvfb, 2 MPI
@@ -8,6 +10,8 @@
 # Under CI=true a missing tool fails the run instead of skipping tests (FAS_REQUIRE_ALL_TOOLS).
 # FAS_SKIP_SANITIZERS=1 skips step 2.
 set -euo pipefail
+source "$(dirname "$0")/lib/help.sh"
+exit_if_help_asked "$@"
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
 

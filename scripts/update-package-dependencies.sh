@@ -5,11 +5,13 @@
 # preprocessed alone (g++ -M); the owner of an installed CGAL header is the package named
 # in its `$URL$` line (CGAL releases and Debian's libcgal-dev keep it).
 #
-#   scripts/update-package-dependencies.sh    # then review with git diff
+# Usage: scripts/update-package-dependencies.sh    # then review with git diff  (--help: this help)
 #
 # Needs the headers' own dependencies (Eigen, VTK, libpng, ...): a header that does not
 # preprocess stops the script rather than leave its packages out.
 set -euo pipefail
+source "$(dirname "$0")/lib/help.sh"
+exit_if_help_asked "$@"
 export LC_ALL=C   # the order of sort, as in CGAL's own files
 
 root="$(cd "$(dirname "$0")/.." && pwd)"

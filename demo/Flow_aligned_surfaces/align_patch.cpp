@@ -14,8 +14,9 @@
 // orthogonal surface seed points seed stream lines (VTP with velocity, IntegrationTime, SeedIds).
 //
 // Usage: align_patch [--flow NAME | --field FILE [--array NAME]]
-//                    [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]
-//                    [--center X,Y,Z] [--normal X,Y,Z] [--size S]
+//                    [--alignment tangential|orthogonal|both] [--faces N] [--center X,Y,Z]
+//                    [--normal X,Y,Z] [--size S] [--output DIR] [--overwrite] [--quiet]
+// (`align_patch --help` lists the options with their defaults.)
 // Flows: cylinder (default), point-source, sphere, helical, hill, burgers, abc, tornado.
 // A data file is any file IO::read_flow_field() reads (legacy VTK grids and cells, VTK XML
 // .vti/.vtu/.vts when built with VTK, AmiraMesh, NRRD) with a velocity array (and an optional
@@ -23,6 +24,7 @@
 // vorticity), and without --normal they are tilted 30 degrees off the flow
 // (feature_placement.h).
 
+#include "command_line.h"
 #include "demo_support.h"
 #include "distinct_stream_surfaces.h"
 #include "feature_placement.h"
@@ -39,6 +41,9 @@
 #include <CGAL/Flow_aligned_surfaces/seeds.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -94,17 +99,6 @@ std::optional<Scene> make_scene(const std::string& name)
     return Scene{
         *flow, Point(0.5, 0.3, 0.5), Point(0.5, 0.5, 0.3), Vector(0.1, 1.0, 0.1), Vector(0.1, 0.1, 1.0), 0.3};
   return std::nullopt;
-}
-
-// "x,y,z" -> three numbers.
-std::optional<std::array<double, 3>> parse_triple(const std::string& text)
-{
-  std::array<double, 3> v;
-  char comma1 = 0, comma2 = 0;
-  std::istringstream is(text);
-  if (!(is >> v[0] >> comma1 >> v[1] >> comma2 >> v[2]) || comma1 != ',' || comma2 != ',' || !is.eof())
-    return std::nullopt;
-  return v;
 }
 
 // "x,y,z", as --center and --normal take it.
@@ -292,12 +286,6 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
   return true;
 }
 
-// A number in JSON, or null for no value.
-std::string json_number(const std::optional<double>& x)
-{
-  return x ? csv_field(x) : "null";
-}
-
 // The flux speaks only for the faces where the flow was sampled.  When more than 5% of the area
 // of the surface had no flow, at the start, during the alignment or at the end, says so and what
 // to do about it.
@@ -398,13 +386,14 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   bool pictures = write_flux_picture(out / (name + "_initial.png"), tm, scene.flow);
 
   std::vector<FAS::Iteration_report> iterations;
+  Progress progress(name);
   FAS::Flow_aligned_deformation<Mesh, Flow> deformation(
       tm, scene.flow, alignment,
-      CGAL::parameters::number_of_iterations(200).visitor(
-          [&](const FAS::Iteration_report& r) {
-            iterations.push_back(r);
-            collection.add(tm, scene.flow);
-          }));
+      CGAL::parameters::number_of_iterations(200).visitor([&](const FAS::Iteration_report& r) {
+        iterations.push_back(r);
+        progress(r);
+        collection.add(tm, scene.flow);
+      }));
   Run_summary summary;
   summary.alignment = name;
   summary.faces = tm.number_of_faces();
@@ -483,52 +472,132 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   return summary;
 }
 
+// summary.json: what was asked (the command line's inputs; null where the default was taken),
+// the package's version, each alignment with the placement it used and what it achieved, and
+// every file the run wrote (summary.json too), relative to the output folder.
+bool write_summary(const std::filesystem::path& path, const nlohmann::ordered_json& inputs,
+                   const std::string& flow_name, const Scene& scene, const std::vector<Run_summary>& runs,
+                   const std::vector<std::string>& files)
+{
+  const auto number = [](const std::optional<double>& x) {
+    return x ? nlohmann::json(*x) : nlohmann::json();
+  };
+  const auto xyz = [](const auto& p) { return nlohmann::json::array({p.x(), p.y(), p.z()}); };
+  nlohmann::ordered_json summary;
+  summary["program"] = "align_patch";
+  summary["package"] = "Flow_aligned_surfaces";
+  summary["version"] = package_version();
+  summary["inputs"] = inputs;
+  summary["flow"] = flow_name;
+  summary["runs"] = nlohmann::json::array();
+  for (const Run_summary& r : runs) {
+    const bool tangential = r.alignment == "tangential";
+    summary["runs"].push_back(nlohmann::ordered_json{
+        {"alignment", r.alignment},
+        {"center", xyz(tangential ? scene.tangential_center : scene.orthogonal_center)},
+        {"normal", xyz(tangential ? scene.tangential_normal : scene.orthogonal_normal)},
+        {"size", scene.size},
+        {"faces", r.faces},
+        {"iterations", r.report.number_of_iterations},
+        {"converged", r.report.converged},
+        {"initial_normalized_flux", number(r.initial_flux.value)},
+        {"initial_sampled_area_fraction", r.initial_flux.sampled_area_fraction},
+        {"final_normalized_flux", number(r.report.normalized_flux.value)},
+        {"final_sampled_area_fraction", r.report.normalized_flux.sampled_area_fraction},
+        {"factor_ms", r.report.factor_ms},
+        {"mean_gtransf_ms", r.mean_gtransf_ms},
+        {"mean_solve_ms", r.mean_solve_ms}});
+  }
+  std::vector<std::string> written = files;
+  written.push_back(path.filename().string());
+  std::sort(written.begin(), written.end());
+  summary["files"] = written;
+  std::ofstream os(path);
+  os << summary.dump(2) << "\n";
+  if (!os.flush()) {
+    std::cerr << "error: cannot write " << path.string() << "\n";
+    return false;
+  }
+  return true;
+}
+
 int main(int argc, char** argv)
 {
-  std::string flow_name = "cylinder", alignment = "both";
-  std::size_t faces = 5000;
-  std::filesystem::path out = "flow_aligned_surfaces_output";
-  std::string field_file, array;
+  std::string flow_name, field_file, array, alignment = "both";
+  Face_count faces{5000};
   Placement placement;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (arg == "--flow" && has_value)
-      flow_name = argv[++i];
-    else if (arg == "--alignment" && has_value)
-      alignment = argv[++i];
-    else if (arg == "--faces" && has_value)
-      faces = std::strtoul(argv[++i], nullptr, 10);
-    else if (arg == "--output" && has_value)
-      out = argv[++i];
-    else if (arg == "--field" && has_value)
-      field_file = argv[++i];
-    else if (arg == "--array" && has_value)
-      array = argv[++i];
-    else if ((arg == "--center" || arg == "--normal") && has_value) {
-      const auto triple = parse_triple(argv[++i]);
-      if (!triple) {
-        std::cerr << "error: " << arg << ": expected X,Y,Z, got '" << argv[i] << "'\n";
-        return 2;
-      }
-      (arg == "--center" ? placement.center : placement.normal) = triple;
-    }
-    else if (arg == "--size" && has_value) {
-      placement.size = std::strtod(argv[++i], nullptr);
-      if (!(*placement.size > 0) || !std::isfinite(*placement.size)) {
-        std::cerr << "error: --size: expected a positive number, got '" << argv[i] << "'\n";
-        return 2;
-      }
-    }
-    else {
-      std::cerr << "usage: " << argv[0] << " [--flow " << built_in_flow_names()
-                << " | --field FILE"
-                   " [--array NAME]] [--alignment tangential|orthogonal|both] [--faces N] [--output DIR]"
-                   " [--center X,Y,Z] [--normal X,Y,Z] [--size S]\n"
-                << "error: unknown or incomplete argument '" << arg << "'\n";
-      return 2;
-    }
+  Output_options output;
+  // --center, --normal and --size are optional: without them the flow's own placement is taken.
+  const auto set_center = [&](const Triple& t) { placement.center = t.value; };
+  const auto set_normal = [&](const Triple& t) { placement.normal = t.value; };
+  const auto set_size = [&](const Positive_number& x) { placement.size = x.value; };
+  const std::string flow_help =
+      std::string("a built-in analytic flow: ") + built_in_flow_names() + " (default: cylinder)";
+  po::options_description options = option_group("Options (lengths and positions in the flow's units)");
+  options.add_options()("flow", po::value(&flow_name)->value_name("NAME"), flow_help.c_str());
+  options.add_options()("field", po::value(&field_file)->value_name("FILE"),
+                        "a velocity field read from a data file instead of --flow: legacy VTK, VTK XML "
+                        "(.vti, .vtu, .vts), AmiraMesh (.am), NRRD (.nrrd, .nhdr), with an optional mask "
+                        "array 'inside'");
+  options.add_options()("array", po::value(&array)->value_name("NAME"),
+                        "the velocity array of --field (default: the file's first vector array)");
+  options.add_options()(
+      "alignment", po::value(&alignment)->default_value(alignment)->value_name("MODE"),
+      "tangential (a stream surface), orthogonal (a seeding surface) or both (one of each)");
+  options.add_options()("faces", po::value(&faces)->default_value(faces)->value_name("N"),
+                        "the number of triangles of the patch (2 to 10000000)");
+  options.add_options()("center", po::value<Triple>()->value_name("X,Y,Z")->notifier(set_center),
+                        "the centre of the patch (default: the flow's own placement; with --field, near "
+                        "the obstacle (where the flow is not defined) or the largest vorticity)");
+  options.add_options()("normal", po::value<Triple>()->value_name("X,Y,Z")->notifier(set_normal),
+                        "the normal of the patch, any length (default: the flow's own placement; with "
+                        "--field, 30 degrees off the aligned orientation at the centre)");
+  options.add_options()("size", po::value<Positive_number>()->value_name("S")->notifier(set_size),
+                        "the side of the square patch (default: the flow's own; with --field, a quarter of "
+                        "the data box's smallest side)");
+  options.add(output_options(output, "flow_aligned_surfaces_output"));
+  const Program_help help{
+      "align_patch [options]",
+      "The package's main job: places a square patch in a flow, aligns it tangentially (a stream surface)\n"
+      "and orthogonally (a seeding surface) by the Poisson-based deformation, and writes into the output\n"
+      "folder, for each alignment: the initial and aligned surfaces (PLY, and VTP with the velocity and\n"
+      "the per-face normalized flux), the iterations (a ParaView collection, .pvd), the flux of every\n"
+      "iteration (CSV), seed curves, one stream surface per distinct seed curve and, for the orthogonal\n"
+      "one, stream lines (VTP), pictures (PNG, when built with VTK's rendering: the scene of each\n"
+      "alignment, *_scene.png), open_in_paraview.py (every output in ParaView, as the pictures show it)\n"
+      "and summary.json (the inputs, the package's version, the results, every file written).  Progress\n"
+      "lines (iteration, flux, elapsed time) go to standard output.  Exit status: 0 on success, 1 when\n"
+      "the run fails or the output folder is refused (nothing is written then), 2 for a bad command line."};
+  if (const std::optional<int> status = parse_command_line(argc, argv, help, options))
+    return *status;
+  if (!flow_name.empty() && !field_file.empty()) {
+    std::cerr << "error: --flow and --field exclude each other: give one flow\n";
+    return 2;
   }
+  if (!array.empty() && field_file.empty()) {
+    std::cerr << "error: --array names a velocity array of --field, and no --field is given\n";
+    return 2;
+  }
+  if (alignment != "tangential" && alignment != "orthogonal" && alignment != "both") {
+    std::cerr << "error: --alignment: expected tangential, orthogonal or both, got '" << alignment << "'\n";
+    return 2;
+  }
+  // What was asked, for summary.json; null where the default is taken.
+  const auto given = [](const auto& x) { return x ? nlohmann::json(*x) : nlohmann::json(); };
+  const nlohmann::ordered_json inputs{
+      {"flow",
+       field_file.empty() ? nlohmann::json(flow_name.empty() ? "cylinder" : flow_name) : nlohmann::json()},
+      {"field", field_file.empty() ? nlohmann::json()
+                                   : nlohmann::json(std::filesystem::absolute(field_file).string())},
+      {"array", array.empty() ? nlohmann::json() : nlohmann::json(array)},
+      {"center", given(placement.center)},
+      {"normal", given(placement.normal)},
+      {"size", given(placement.size)},
+      {"faces", faces.value},
+      {"alignment", alignment}};
+  if (flow_name.empty())
+    flow_name = "cylinder";
+
   std::optional<Scene> scene;
   if (!field_file.empty()) {
     scene = make_data_scene(field_file, array, placement);
@@ -539,7 +608,8 @@ int main(int argc, char** argv)
   else {
     scene = make_scene(flow_name);
     if (!scene) {
-      std::cerr << "error: --flow: unknown flow '" << flow_name << "'\n";
+      std::cerr << "error: --flow: unknown flow '" << flow_name << "' (the flows: " << built_in_flow_names()
+                << ")\n";
       return 2;
     }
     if (placement.center)
@@ -551,20 +621,11 @@ int main(int argc, char** argv)
     if (placement.size)
       scene->size = *placement.size;
   }
-  if (alignment != "tangential" && alignment != "orthogonal" && alignment != "both") {
-    std::cerr << "error: --alignment: expected tangential, orthogonal or both, got '" << alignment << "'\n";
-    return 2;
-  }
-  if (faces < 2 || faces > 10'000'000) {
-    std::cerr << "error: --faces: expected a number of faces between 2 and 1e7\n";
-    return 2;
-  }
-  std::error_code ec;
-  std::filesystem::create_directories(out, ec);
-  if (ec) {
-    std::cerr << "error: --output: cannot create " << out << ": " << ec.message() << "\n";
+  // Everything goes to a staging folder, moved into place only when the whole run succeeded.
+  Output_folder folder;
+  if (!folder.open(output, {field_file}))
     return 1;
-  }
+  const std::filesystem::path& out = folder.path();
 
   std::vector<Run_summary> runs;
   try {
@@ -572,7 +633,7 @@ int main(int argc, char** argv)
                                       std::pair{"orthogonal", FAS::Alignment::ORTHOGONAL}}) {
       if (alignment != "both" && alignment != name)
         continue;
-      const auto run = align(flow_name, *scene, value, faces, out);
+      const auto run = align(flow_name, *scene, value, faces.value, out);
       if (!run)
         return 1;
       runs.push_back(*run);
@@ -590,30 +651,9 @@ int main(int argc, char** argv)
     std::cerr << "error: " << error << "\n";
     return 1;
   }
-
-  auto json = open_output(out / "summary.json");
-  if (!json)
+  if (!write_summary(out / "summary.json", inputs, flow_name, *scene, runs, folder.files()) ||
+      !folder.commit())
     return 1;
-  {
-    std::ostream& os = *json;
-    os << "{\n  \"flow\": \"" << flow_name << "\",\n  \"runs\": [\n";
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      const Run_summary& r = runs[i];
-      os << "    {\"alignment\": \"" << r.alignment << "\", \"faces\": " << r.faces
-         << ", \"iterations\": " << r.report.number_of_iterations
-         << ", \"converged\": " << (r.report.converged ? "true" : "false")
-         << ", \"initial_normalized_flux\": " << json_number(r.initial_flux.value)
-         << ", \"initial_sampled_area_fraction\": " << r.initial_flux.sampled_area_fraction
-         << ", \"final_normalized_flux\": " << json_number(r.report.normalized_flux.value)
-         << ", \"final_sampled_area_fraction\": " << r.report.normalized_flux.sampled_area_fraction
-         << ", \"factor_ms\": " << r.report.factor_ms << ", \"mean_gtransf_ms\": " << r.mean_gtransf_ms
-         << ", \"mean_solve_ms\": " << r.mean_solve_ms << ", \"files\": [\"" << r.alignment
-         << "_initial.ply\", \"" << r.alignment << "_initial.vtp\", \"" << r.alignment << "_aligned.ply\", \""
-         << r.alignment << "_aligned.vtp\", \"" << r.alignment << "_flux.csv\"]}"
-         << (i + 1 < runs.size() ? "," : "") << "\n";
-    }
-    os << "  ]\n}\n";
-  }
-  std::cout << "results written to " << std::filesystem::absolute(out).string() << "\n";
+  std::cout << "results written to " << folder.destination().string() << "\n";
   return 0;
 }

@@ -33,7 +33,6 @@
 #include <functional>
 #include <iostream>
 #include <iterator>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -248,23 +247,6 @@ inline bool write_textured_picture(const std::filesystem::path& path, const Mesh
   for (auto f : copy.faces())
     what.face_mask.push_back(mask[f]);
   return write_picture(path, copy, what);
-}
-
-/// Reads the options `--NAME VALUE` of the command line into `options` (name -> value, which
-/// holds the defaults); prints `usage` and returns false on an unknown option or a missing value.
-inline bool parse_options(int argc, char** argv, std::map<std::string, std::string>& options,
-                          const std::string& usage)
-{
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const auto option = arg.rfind("--", 0) == 0 ? options.find(arg.substr(2)) : options.end();
-    if (option == options.end() || i + 1 >= argc) {
-      std::cerr << "usage: " << usage << "\n";
-      return false;
-    }
-    option->second = argv[++i];
-  }
-  return true;
 }
 
 /// The orthogonal surface of the seeding programs: a tilted disk of `faces` triangles beside the

@@ -5,7 +5,7 @@
 // (u, v) = (r * scale + offset, s * scale); faces where grad r leaves the flow are blended to
 // the texture's mean colour by b(gamma).  Moving the offset animates the texture along the flow.
 //
-//   flow_texture [--faces N] [--output DIR] [--picture-width W]
+//   flow_texture [--faces N] [--picture-width W] [--output DIR] [--overwrite] [--quiet]
 //
 // writes into DIR: surface.vtp (r, s, texture coordinates as TCoords, velocity; per face the
 // mask, the alignment angle and the flux), noise.obj/.mtl/.png and arrows.obj/.mtl/.png, and
@@ -16,6 +16,7 @@
 // FlowTextureWorkflow of test/Flow_aligned_surfaces/test_workflows.cpp checks that this surface
 // is a stream surface, flux <= 0.01, with less than a tenth of it masked.)
 
+#include "command_line.h"
 #include "demo_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/IO/write_textured_OBJ.h>
@@ -25,11 +26,9 @@
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <iterator>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -51,20 +50,37 @@ bool render(const std::filesystem::path& file, const Mesh& tm, Surface_rendering
 
 int main(int argc, char** argv)
 {
-  std::map<std::string, std::string> options{
-      {"faces", "3000"}, {"output", "flow_texture_output"}, {"picture-width", "640"}};
-  if (!parse_options(argc, argv, options, "flow_texture [--faces N] [--output DIR] [--picture-width W]"))
-    return 2;
-  const std::size_t faces = std::strtoul(options["faces"].c_str(), nullptr, 10);
-  const std::filesystem::path out = options["output"];
-  picture_width = std::strtoul(options["picture-width"].c_str(), nullptr, 10);
-  std::error_code ec;
-  std::filesystem::create_directories(out, ec);
+  Face_count faces{3000};
+  Whole_number<16, 8192> width{picture_width};
+  Output_options output;
+  po::options_description options = option_group("Options");
+  options.add_options()("faces", po::value(&faces)->default_value(faces)->value_name("N"),
+                        "the number of triangles of the patch (2 to 10000000)")(
+      "picture-width", po::value(&width)->default_value(width)->value_name("W"),
+      "the pictures' width in pixels, 16 to 8192 (the height is 3/4 of it)");
+  options.add(output_options(output, "flow_texture_output"));
+  const Program_help help{
+      "flow_texture [options]",
+      "LIC-like textures of a stream surface (Section 6 of the paper): a patch above the cylinder of the\n"
+      "potential flow past it is aligned tangentially, parametrized tangentially without normalization,\n"
+      "and textured with anisotropic noise and with arrows.  Writes into the output folder surface.vtp\n"
+      "(r, s, texture coordinates, velocity; per face the mask, the alignment angle and the flux),\n"
+      "noise.obj/.mtl/.png, arrows.obj/.mtl/.png and the pictures flux.png, aligned_flux.png,\n"
+      "textured.png, arrows_rendered.png and frame_0.png ... frame_3.png (skipped, with the reason, when\n"
+      "there is no display and no Xvfb).  Exit status: 0 on success, 1 when the run fails or the output\n"
+      "folder is refused (nothing is written then), 2 for a bad command line."};
+  if (const std::optional<int> status = parse_command_line(argc, argv, help, options))
+    return *status;
+  picture_width = width.value;
+  Output_folder folder;
+  if (!folder.open(output))
+    return 1;
+  const std::filesystem::path& out = folder.path();
 
   // 1. A stream surface: a tilted patch above the cylinder, aligned tangentially.
   const Flow flow = *make_built_in_flow("cylinder");
   Mesh tm;
-  FAS::make_planar_patch(tm, Point(0, 2.2, 0), Vector(0, 0.25, 1), 2.4, 2.0, faces);
+  FAS::make_planar_patch(tm, Point(0, 2.2, 0), Vector(0, 0.25, 1), 2.4, 2.0, faces.value);
   const std::vector<double> placed_flux = face_fluxes(tm, flow);
   const Mesh placed = tm;
   const FAS::Alignment_report report = FAS::align_to_flow(tm, flow, FAS::Alignment::TANGENTIAL);
@@ -121,7 +137,7 @@ int main(int argc, char** argv)
     if (!FAS::IO::write_textured_OBJ((out / (std::string(name) + ".obj")).string(), tm, uv, *texture,
                                      CGAL::parameters::default_values(), &error))
       std::cerr << "warning: " << error << "\n";
-  std::cout << "wrote " << (out / "surface.vtp").string() << ", noise.obj/.mtl/.png, arrows.obj/.mtl/.png\n";
+  std::cout << "wrote surface.vtp, noise.obj/.mtl/.png, arrows.obj/.mtl/.png\n";
 
   // 5. The pictures of every stage: the placed and aligned surfaces coloured by flux (the
   // aligned one with seed curves, iso-contours of r), the textured surface, animation frames.
@@ -153,5 +169,8 @@ int main(int argc, char** argv)
   if (pictures)
     std::cout << "wrote the pictures flux.png, aligned_flux.png, textured.png, frame_0..3.png, "
                  "arrows_rendered.png\n";
+  if (!folder.commit())
+    return 1;
+  std::cout << "results written to " << folder.destination().string() << "\n";
   return 0;
 }

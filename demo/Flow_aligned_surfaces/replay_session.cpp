@@ -2,7 +2,8 @@
 // Figure 6: the normalized flux of every iteration, with the "flux spikes" that the user's
 // translations, rotations and growing steps cause and the iterations remove.
 //
-// Usage: replay_session [--flow NAME | --field FILE [--array NAME]] [--output DIR] SESSION...
+// Usage: replay_session [--flow NAME | --field FILE [--array NAME]] [--output DIR] [--overwrite]
+//                       [--quiet] SESSION...
 //
 // Each SESSION is a text file read by IO::read_session() (one operation a line: iterate N |
 // iterate until-converged, translate dx dy dz, rotate ax ay az degrees, grow distance
@@ -15,6 +16,7 @@
 // and for all of them together flux.png, the plot of the CSV files drawn by gnuplot (when
 // gnuplot is not installed, a warning says so and everything else is still written).
 
+#include "command_line.h"
 #include "demo_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
@@ -114,34 +116,44 @@ bool plot_flux(const fs::path& png, const std::vector<fs::path>& csv_files,
 int main(int argc, char** argv)
 {
   std::string flow_name, field_file, array;
-  fs::path out = "replay_session_output";
-  std::vector<fs::path> files;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (arg == "--flow" && has_value)
-      flow_name = argv[++i];
-    else if (arg == "--field" && has_value)
-      field_file = argv[++i];
-    else if (arg == "--array" && has_value)
-      array = argv[++i];
-    else if (arg == "--output" && has_value)
-      out = argv[++i];
-    else if (!arg.empty() && arg[0] != '-')
-      files.push_back(arg);
-    else {
-      std::cerr << "usage: " << argv[0] << " [--flow " << built_in_flow_names()
-                << " | --field FILE [--array NAME]] [--output DIR] SESSION...\n"
-                << "error: unknown or incomplete argument '" << arg << "'\n";
-      return 2;
-    }
-  }
-  if (files.empty()) {
-    std::cerr << "usage: " << argv[0]
-              << " [--flow NAME | --field FILE [--array NAME]] [--output DIR] SESSION...\n"
-              << "error: no session file given\n";
+  std::vector<std::string> session_files;
+  Output_options output;
+  po::options_description options = option_group("Options");
+  options.add_options()(
+      "flow", po::value(&flow_name)->value_name("NAME"),
+      (std::string("the flow of every session instead of its own 'flow' line: a built-in flow (") +
+       built_in_flow_names() + ") or a data file")
+          .c_str())("field", po::value(&field_file)->value_name("FILE"),
+                    "the flow of every session, read from a data file (any format of --flow's files)")(
+      "array", po::value(&array)->value_name("NAME"),
+      "the velocity array of the data file (default: its first vector array)")(
+      "session", po::value(&session_files)->value_name("FILE"),
+      "a session file; the files may also be given without the option name, as SESSION...");
+  options.add(output_options(output, "replay_session_output"));
+  po::positional_options_description positional;
+  positional.add("session", -1);
+  const Program_help help{
+      "replay_session [options] SESSION...",
+      "Replays interactive deformation sessions (Section 4 of the paper) and draws the paper's Figure 6.\n"
+      "Each SESSION is a text file, one operation a line: iterate N | iterate until-converged N,\n"
+      "translate dx dy dz, rotate ax ay az degrees, grow distance [dx dy dz | across-flow], save path.\n"
+      "Every session is read and checked before anything runs.  Writes into the output folder the surface\n"
+      "at every 'save' (.vtp, .ply, .off or .obj), STEM.csv (one row per iteration: normalized flux,\n"
+      "largest rotation, ...) per session, and flux.png, the plot of all of them drawn by gnuplot.\n"
+      "Progress lines (iteration, flux, elapsed time) go to standard output.  Exit status: 0 on success,\n"
+      "1 when a session fails or the output folder is refused (nothing is written then), 2 for a bad\n"
+      "command line."};
+  if (const std::optional<int> status = parse_command_line(argc, argv, help, options, positional))
+    return *status;
+  if (session_files.empty()) {
+    std::cerr << "error: no session file given (replay_session --help lists the options)\n";
     return 2;
   }
+  if (!flow_name.empty() && !field_file.empty()) {
+    std::cerr << "error: --flow and --field exclude each other: give one flow\n";
+    return 2;
+  }
+  const std::vector<fs::path> files(session_files.begin(), session_files.end());
 
   // Read and check everything before doing anything.
   std::vector<Loaded_session> sessions;
@@ -164,12 +176,12 @@ int main(int argc, char** argv)
     }
     sessions.push_back(std::move(loaded));
   }
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) {
-    std::cerr << "error: --output: cannot create " << out << ": " << ec.message() << "\n";
+  Output_folder folder;
+  std::vector<std::string> inputs = session_files;
+  inputs.push_back(field_file);
+  if (!folder.open(output, inputs))
     return 1;
-  }
+  const fs::path& out = folder.path();
 
   // The flow of a session: the command line's, else the session's built-in name or data file.
   auto flow_of = [&](const Loaded_session& s) -> std::optional<Flow> {
@@ -210,7 +222,9 @@ int main(int argc, char** argv)
 
     const std::string stem = s.file.stem().string();
     try {
-      FAS::Flow_aligned_deformation<Mesh, Flow> deformation(tm, *flow, s.session.alignment);
+      Progress progress(stem);
+      FAS::Flow_aligned_deformation<Mesh, Flow> deformation(tm, *flow, s.session.alignment,
+                                                            CGAL::parameters::visitor(std::ref(progress)));
       const FAS::Session_replay_report replay =
           FAS::replay_session(deformation, s.session, [&](const FAS::Session_operation& op) {
             if (!save_surface(out / op.path, tm, *flow))
@@ -233,8 +247,10 @@ int main(int argc, char** argv)
 
   const fs::path png = out / "flux.png";
   if (!plot_flux(png, csv_files, titles))
-    std::cerr << "warning: gnuplot (Debian package gnuplot-nox) did not draw " << png.string()
-              << "; the CSV files and surfaces are written\n";
-  std::cout << "results written to " << fs::absolute(out).string() << "\n";
+    std::cerr << "warning: gnuplot (Debian package gnuplot-nox) did not draw flux.png; the CSV files and "
+                 "surfaces are written\n";
+  if (!folder.commit())
+    return 1;
+  std::cout << "results written to " << folder.destination().string() << "\n";
   return 0;
 }

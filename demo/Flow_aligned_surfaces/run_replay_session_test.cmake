@@ -6,7 +6,7 @@ string(REPLACE "|" ";" SESSIONS "${SESSIONS}")
 string(REPLACE "|" ";" EXPECTED_FILES "${EXPECTED_FILES}")
 foreach(run 1 2)
   execute_process(
-    COMMAND "${REPLAY}" --output "${WORK_DIR}/run${run}" ${SESSIONS}
+    COMMAND "${REPLAY}" --overwrite --output "${WORK_DIR}/run${run}" ${SESSIONS}
     RESULT_VARIABLE status)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "replay_session failed (run ${run}): ${status}")

@@ -4,7 +4,7 @@
 // seed curves come from the heat-method distance, seed points from a spaced sample.  A stream
 // surface of the Burgers vortex, parametrized tangentially, gives seed curves that cross the flow.
 //
-//   seed_curves [--faces N] [--output DIR]
+//   seed_curves [--faces N] [--output DIR] [--overwrite] [--quiet]
 //
 // writes DIR/surface.vtp (r, s and the distance per vertex), DIR/seed_curves.csv and
 // DIR/circular_seeds.csv (curve,x,y,z per point), DIR/seed_points.csv (one row per seed, its
@@ -12,6 +12,7 @@
 // SeedCurvesWorkflow.* of test/Flow_aligned_surfaces/test_workflows.cpp check that such seed
 // curves are orthogonal to the flow, and that the crossing ones cross it.)
 
+#include "command_line.h"
 #include "demo_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
@@ -23,11 +24,9 @@
 #include <CGAL/Flow_aligned_surfaces/seeds.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <iterator>
 #include <string>
 #include <vector>
@@ -51,16 +50,28 @@ bool write_polylines_csv(const std::string& filename, const std::vector<Polyline
 
 int main(int argc, char** argv)
 {
-  std::map<std::string, std::string> options{{"faces", "3000"}, {"output", "seed_curves_output"}};
-  if (!parse_options(argc, argv, options, "seed_curves [--faces N] [--output DIR]"))
-    return 2;
-  const std::size_t faces = std::strtoul(options["faces"].c_str(), nullptr, 10);
-  const std::string out = options["output"];
+  Face_count faces{3000};
+  Output_options output;
+  po::options_description options = option_group("Options");
+  options.add_options()("faces", po::value(&faces)->default_value(faces)->value_name("N"),
+                        "the number of triangles of each disk (2 to 10000000)");
+  options.add(output_options(output, "seed_curves_output"));
+  const Program_help help{
+      "seed_curves [options]",
+      "Seed structures from an orthogonal surface (Section 5 of the paper): a disk beside a point source\n"
+      "is aligned orthogonally and parametrized; seed curves are iso-contours of r, circular seeds\n"
+      "iso-contours of the geodesic distance, seed points a spaced sample; a stream surface of the\n"
+      "Burgers vortex gives seed curves across the flow.  Writes into the output folder surface.vtp (r,\n"
+      "s, distance per vertex), seed_curves.csv, circular_seeds.csv, seed_points.csv and\n"
+      "stream_surface_seed_curves.csv (curve,x,y,z per point).  Exit status: 0 on success, 1 when the\n"
+      "run fails or the output folder is refused (nothing is written then), 2 for a bad command line."};
+  if (const std::optional<int> status = parse_command_line(argc, argv, help, options))
+    return *status;
 
   // 1. An orthogonal surface: a tilted disk beside the source becomes a piece of a sphere.
   const FAS::Point_source_flow<Kernel> flow;
   Mesh tm;
-  make_orthogonal_disk(tm, flow, faces);
+  make_orthogonal_disk(tm, flow, faces.value);
 
   // 2. The orthogonal parametrization (alpha turns the contours) and the circular one.
   auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
@@ -87,13 +98,15 @@ int main(int argc, char** argv)
   // tangential parametrization's r cross the flow within the surface.
   const FAS::Burgers_vortex<Kernel> vortex;
   const Tangential_seed_curves tangential = make_tangential_seed_curves(
-      vortex, Point(1.0, 0.0, 0.5), Vector(0.0, 1.0, 0.3), 0.5, faces, 5);
+      vortex, Point(1.0, 0.0, 0.5), Vector(0.0, 1.0, 0.3), 0.5, faces.value, 5);
   const std::vector<Polyline>& crossing_curves = tangential.curves;
   std::cout << "stream surface: flux " << tangential.alignment.normalized_flux << ", "
             << crossing_curves.size() << " seed curves\n";
 
-  std::error_code ec;
-  std::filesystem::create_directories(out, ec);
+  Output_folder folder;
+  if (!folder.open(output))
+    return 1;
+  const std::string out = folder.path().string();
   std::vector<FAS::IO::Data_array> arrays = {{"r", 1, {}}, {"s", 1, {}}, {"distance", 1, {}}};
   for (auto v : tm.vertices()) {
     arrays[0].values.push_back(r[v]);
@@ -109,10 +122,12 @@ int main(int argc, char** argv)
       !write_polylines_csv(out + "/circular_seeds.csv", circular_seeds, error) ||
       !write_polylines_csv(out + "/seed_points.csv", points_as_rows, error) ||
       !write_polylines_csv(out + "/stream_surface_seed_curves.csv", crossing_curves, error)) {
-    std::cerr << error << "\n";
+    std::cerr << "error: " << error << "\n";
     return 1;
   }
-  std::cout << "wrote " << out
+  if (!folder.commit())
+    return 1;
+  std::cout << "wrote " << folder.destination().string()
             << "/surface.vtp, seed_curves.csv, circular_seeds.csv, seed_points.csv, "
                "stream_surface_seed_curves.csv\n";
   return 0;

@@ -376,6 +376,148 @@ TEST(RegularGridFlowField3, CopiesShareStorage)
   EXPECT_EQ(*copy(Point_3(0.5, 0.5, 0.5)), Vector_3(1, 1, 1));
 }
 
+// ---- Blocks of a larger grid (the pieces of a distributed image) ----
+
+// The nodes first .. first + n - 1 of the whole grid's node arrays.
+struct Block_arrays {
+  std::vector<float> values;
+  std::vector<unsigned char> mask;
+};
+
+Block_arrays block_arrays(const Grid& whole, const Dimensions& first, const Dimensions& n)
+{
+  const Dimensions& N = whole.dimensions();
+  Block_arrays b;
+  for (std::size_t k = first[2]; k < first[2] + n[2]; ++k)
+    for (std::size_t j = first[1]; j < first[1] + n[1]; ++j)
+      for (std::size_t i = first[0]; i < first[0] + n[0]; ++i) {
+        const std::size_t v = i + N[0] * (j + N[1] * k);
+        for (int d = 0; d < 3; ++d)
+          b.values.push_back(whole.values()[3 * v + std::size_t(d)]);
+        if (!whole.mask().empty())
+          b.mask.push_back(whole.mask()[v]);
+      }
+  return b;
+}
+
+bool same_bits(const std::optional<Vector_3>& a, const std::optional<Vector_3>& b)
+{
+  return a.has_value() == b.has_value() && (!a || (a->x() == b->x() && a->y() == b->y() && a->z() == b->z()));
+}
+
+// The whole non-dyadic grid with random node values and a few solid nodes, split as VTK splits
+// an image into pieces: along x at node 3 and along y at node 4, neighbours sharing a node layer.
+struct Split_grid {
+  Grid whole;
+  std::vector<Grid> blocks, shifted; // shifted: each block made as a grid of its own
+};
+
+Split_grid split_grid()
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-2.f, 2.f);
+  const std::size_t nodes = kDims[0] * kDims[1] * kDims[2];
+  std::vector<float> values(3 * nodes);
+  for (float& x : values)
+    x = u(rng);
+  std::vector<unsigned char> mask(nodes, 1);
+  for (std::size_t v : {17u, 40u, 41u, 150u, 222u})
+    mask[v] = 0;
+  Split_grid s{Grid(kOrigin, kSpacing, kDims, values, mask), {}, {}};
+  const std::array<std::array<std::size_t, 2>, 2> x_pieces = {{{0, 4}, {3, 4}}}; // first, n
+  const std::array<std::array<std::size_t, 2>, 2> y_pieces = {{{0, 5}, {4, 5}}};
+  for (const auto& x : x_pieces)
+    for (const auto& y : y_pieces) {
+      const Dimensions first = {x[0], y[0], 0}, n = {x[1], y[1], kDims[2]};
+      Block_arrays b = block_arrays(s.whole, first, n);
+      s.blocks.push_back(Grid::block(kOrigin, kSpacing, kDims, first, n, b.values, b.mask));
+      s.shifted.push_back(Grid(s.whole.node_point(first[0], first[1], first[2]), kSpacing, n, b.values, b.mask));
+    }
+  return s;
+}
+
+// Random points of the box, points on the node planes (the shared faces among them), and points
+// a few ulps on either side of them.
+std::vector<Point_3> probe_points(const Grid& whole)
+{
+  std::mt19937 rng(11);
+  std::vector<Point_3> points;
+  for (int i = 0; i < 20000; ++i)
+    points.push_back(random_point_in(whole.bbox(), rng));
+  std::uniform_real_distribution<double> u(0., 1.);
+  for (int i = 0; i < 20000; ++i) {
+    Point_3 p = random_point_in(whole.bbox(), rng);
+    const int axis = i % 3;
+    // Half of them on the faces the blocks share (x node 3, y node 4).
+    const std::size_t node = (i & 8) && axis < 2 ? std::size_t(3 + axis)
+                                                 : std::size_t(u(rng) * double(kDims[std::size_t(axis)]));
+    double c[3] = {p.x(), p.y(), p.z()};
+    c[axis] = CGAL::to_double(whole.node_point(node, node, node)[axis]);
+    for (int ulps = i % 4; ulps > 0; --ulps)
+      c[axis] = std::nextafter(c[axis], (i & 4) ? 1e300 : -1e300);
+    points.push_back(Point_3(c[0], c[1], c[2]));
+  }
+  return points;
+}
+
+TEST(RegularGridFlowField3Block, SamplesBitForBitAsTheWholeGrid)
+{
+  const Split_grid s = split_grid();
+  std::size_t answered_by_two = 0, whole_samples = 0, shifted_differs = 0;
+  for (const Point_3& p : probe_points(s.whole)) {
+    const std::optional<Vector_3> expected = s.whole(p);
+    std::size_t answers = 0;
+    for (std::size_t b = 0; b < s.blocks.size(); ++b) {
+      const std::optional<Vector_3> got = s.blocks[b](p);
+      if (got) {
+        ++answers;
+        ASSERT_TRUE(same_bits(got, expected)) << "block " << b << " at " << p;
+      }
+      const std::optional<Vector_3> naive = s.shifted[b](p);
+      if (naive && expected && !same_bits(naive, expected))
+        ++shifted_differs;
+    }
+    if (expected) {
+      ++whole_samples;
+      ASSERT_GE(answers, 1u) << "no block answers at " << p << ", where the whole grid does";
+    }
+    answered_by_two += answers >= 2 ? 1 : 0;
+  }
+  EXPECT_GT(whole_samples, 30000u);
+  EXPECT_GT(answered_by_two, 500u); // the shared faces were probed (766 points)
+  // A block made as a grid of its own (origin at its first node) rounds differently: the test
+  // would see that.
+  EXPECT_GT(shifted_differs, 100u);
+}
+
+TEST(RegularGridFlowField3Block, HasTheGeometryOfItsNodesInTheWholeGrid)
+{
+  const Split_grid s = split_grid();
+  const Grid& b = s.blocks[3]; // nodes (3.., 4.., 0..)
+  EXPECT_EQ(b.dimensions(), (Dimensions{4, 5, kDims[2]}));
+  EXPECT_EQ(b.origin(), s.whole.node_point(3, 4, 0));
+  EXPECT_EQ(b.node_point(2, 1, 3), s.whole.node_point(5, 5, 3));
+  EXPECT_EQ(b.node_value(2, 1, 3), s.whole.node_value(5, 5, 3));
+  const CGAL::Bbox_3 box = b.bbox(), all = s.whole.bbox();
+  EXPECT_EQ(box.xmin(), CGAL::to_double(s.whole.node_point(3, 0, 0).x()));
+  EXPECT_EQ(box.xmax(), all.xmax());
+  EXPECT_EQ(box.ymin(), CGAL::to_double(s.whole.node_point(0, 4, 0).y()));
+  EXPECT_EQ(box.zmin(), all.zmin());
+  // A point of the whole grid outside the block: no sample.
+  EXPECT_FALSE(b(s.whole.node_point(1, 1, 1)));
+}
+
+TEST(RegularGridFlowField3Block, ABlockThatDoesNotFitIsRefused)
+{
+  const std::vector<float> values(3 * 4 * 5 * 5, 1.f);
+  expect_invalid_argument(
+    [&] { Grid::block(kOrigin, kSpacing, kDims, {4, 0, 0}, {4, 5, 5}, values); },
+    {"Regular_grid_flow_field_3::block", "axis 0", "4..7", "7 nodes"});
+  expect_invalid_argument(
+    [&] { Grid::block(kOrigin, kSpacing, {1, 9, 5}, {0, 0, 0}, {4, 5, 5}, values); },
+    {"dimensions[0]"});
+}
+
 TEST(RegularGridFlowField3, BadInputThrowsWithTheArgumentsName)
 {
   const Point_3 o(0, 0, 0);

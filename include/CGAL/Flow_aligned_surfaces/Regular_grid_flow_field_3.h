@@ -104,8 +104,9 @@ public:
   {
     // The empty box +inf..-inf, which no point (not even a NaN) is in.
     for (int a = 0; a < 3; ++a) {
-      m_lo[a] = std::numeric_limits<double>::infinity();
-      m_hi[a] = -std::numeric_limits<double>::infinity();
+      m_lo[a] = m_grid_lo[a] = std::numeric_limits<double>::infinity();
+      m_hi[a] = m_grid_hi[a] = -std::numeric_limits<double>::infinity();
+      m_grid_last_cell[a] = m_first[a] = 0;
       m_h[a] = m_inv_h[a] = 0.;
     }
   }
@@ -142,6 +143,49 @@ public:
   {
   }
 
+  /// creates the field of a block of a larger grid, for data split into pieces (the pieces of a
+  /// VTK image spread over MPI ranks, for instance): the nodes `first_node + (i, j, k)`,
+  /// `(i, j, k) < dimensions`, of the grid of `grid_dimensions` nodes whose node `(0, 0, 0)` is at
+  /// `grid_origin`; `values` and `mask` hold the block's nodes, in the order of the constructor.
+  ///
+  /// Where the block has a sample it is, bit for bit, the sample of the whole grid's field (made
+  /// by the constructor from all the nodes), trilinearly interpolated: the block locates points in
+  /// the whole grid's cells, as that field does.  It has a sample at the points of the whole
+  /// grid's domain that lie in one of its own closed cells, so blocks sharing a face both answer
+  /// there, with the same value, and the blocks of a partition of the grid answer wherever the
+  /// whole grid does.  Elsewhere it returns `std::nullopt`.  `origin()` and `bbox()` are those of
+  /// the block; `node_point()` and `node_value()` take the block's node indices.  (Interpolated
+  /// tricubically, the stencil of a cell next to an inner face of the block is cut there.)
+  ///
+  /// \throws std::invalid_argument as the constructor, or if the block does not fit in the grid
+  ///         (`first_node[a] + dimensions[a] > grid_dimensions[a]` along an axis `a`).
+  static Regular_grid_flow_field_3 block(const Point_3& grid_origin, const Vector_3& spacing,
+                                         const Dimensions& grid_dimensions, const Dimensions& first_node,
+                                         const Dimensions& dimensions, std::vector<float> values,
+                                         std::vector<unsigned char> mask = std::vector<unsigned char>())
+  {
+    checked_number_of_nodes(grid_origin, spacing, grid_dimensions);
+    for (int a = 0; a < 3; ++a) {
+      if (first_node[a] > grid_dimensions[a] || dimensions[a] > grid_dimensions[a] - first_node[a]) {
+        std::ostringstream msg;
+        msg << "Regular_grid_flow_field_3::block: along axis " << a << " the block's nodes "
+            << first_node[a] << ".." << first_node[a] + dimensions[a] - 1 << " do not fit in the grid's "
+            << grid_dimensions[a] << " nodes";
+        throw std::invalid_argument(msg.str());
+      }
+    }
+    Regular_grid_flow_field_3 r(grid_origin, spacing, dimensions, std::move(values), std::move(mask), false);
+    for (int a = 0; a < 3; ++a) {
+      r.m_first[a] = first_node[a];
+      r.m_grid_last_cell[a] = grid_dimensions[a] - 2;
+      r.m_lo[a] = node_coordinate(r.m_grid_lo[a], r.m_h[a], first_node[a]);
+      r.m_hi[a] = node_coordinate(r.m_grid_lo[a], r.m_h[a], first_node[a] + dimensions[a] - 1);
+      r.m_grid_hi[a] = node_coordinate(r.m_grid_lo[a], r.m_h[a], grid_dimensions[a] - 1);
+    }
+    r.m_origin = Point_3(FT(r.m_lo[0]), FT(r.m_lo[1]), FT(r.m_lo[2]));
+    return r;
+  }
+
   /// \cond SKIP_IN_MANUAL
   // For the package's readers, which checked the values while decoding them (see
   // `internal::Node_values_checked`): the sizes and the geometry are still checked.
@@ -176,10 +220,12 @@ private:
     const double h[3] = {CGAL::to_double(spacing.x()), CGAL::to_double(spacing.y()),
                          CGAL::to_double(spacing.z())};
     for (int a = 0; a < 3; ++a) {
-      m_lo[a] = o[a];
+      m_lo[a] = m_grid_lo[a] = o[a];
       m_h[a] = h[a];
-      m_hi[a] = node_coordinate(o[a], h[a], m_dimensions[a] - 1);
+      m_hi[a] = m_grid_hi[a] = node_coordinate(o[a], h[a], m_dimensions[a] - 1);
       m_inv_h[a] = 1. / h[a];
+      m_first[a] = 0;
+      m_grid_last_cell[a] = m_dimensions[a] - 2;
     }
     m_stride_y = m_dimensions[0];
     m_stride_z = m_dimensions[0] * m_dimensions[1];
@@ -196,19 +242,29 @@ public:
   {
     const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     // Written so that NaN coordinates fail too.  The box test is done in world coordinates so
-    // that it agrees exactly with `bbox()`.
-    if (!(x[0] >= m_lo[0] && x[0] <= m_hi[0] && x[1] >= m_lo[1] && x[1] <= m_hi[1] && x[2] >= m_lo[2] &&
-          x[2] <= m_hi[2]))
+    // that it agrees exactly with `bbox()` (of the whole grid, for a block).
+    if (!(x[0] >= m_grid_lo[0] && x[0] <= m_grid_hi[0] && x[1] >= m_grid_lo[1] && x[1] <= m_grid_hi[1] &&
+          x[2] >= m_grid_lo[2] && x[2] <= m_grid_hi[2]))
       return std::nullopt;
 
     std::size_t c[3];
     double f[3], g[3];
     for (int a = 0; a < 3; ++a) {
-      const double t = (x[a] - m_lo[a]) * m_inv_h[a]; // >= 0, so truncation is floor
+      const double t = (x[a] - m_grid_lo[a]) * m_inv_h[a]; // >= 0, so truncation is floor
       // The upper boundary belongs to the last cell; rounding in t can only overshoot by ulps,
       // which the clamp on f absorbs.
-      c[a] = (std::min)(static_cast<std::size_t>(t), m_dimensions[a] - 2);
-      f[a] = (std::min)(t - static_cast<double>(c[a]), 1.);
+      std::size_t cell = (std::min)(static_cast<std::size_t>(t), m_grid_last_cell[a]);
+      f[a] = (std::min)(t - static_cast<double>(cell), 1.);
+      // A block has the whole grid's cells first .. first + n - 2, and the node after them:
+      // there (f = 0 in the next cell) it blends its last cell with f = 1, the same value.
+      if (cell < m_first[a] || cell > m_first[a] + m_dimensions[a] - 1 ||
+          (cell == m_first[a] + m_dimensions[a] - 1 && f[a] != 0.))
+        return std::nullopt;
+      if (cell == m_first[a] + m_dimensions[a] - 1) {
+        --cell;
+        f[a] = 1.;
+      }
+      c[a] = cell - m_first[a];
       g[a] = 1. - f[a];
     }
     if (m_interpolation == Grid_interpolation::TRICUBIC) {
@@ -263,8 +319,9 @@ public:
   Point_3 node_point(std::size_t i, std::size_t j, std::size_t k) const
   {
     CGAL_precondition(i < m_dimensions[0] && j < m_dimensions[1] && k < m_dimensions[2]);
-    return Point_3(FT(node_coordinate(m_lo[0], m_h[0], i)), FT(node_coordinate(m_lo[1], m_h[1], j)),
-                   FT(node_coordinate(m_lo[2], m_h[2], k)));
+    return Point_3(FT(node_coordinate(m_grid_lo[0], m_h[0], m_first[0] + i)),
+                   FT(node_coordinate(m_grid_lo[1], m_h[1], m_first[1] + j)),
+                   FT(node_coordinate(m_grid_lo[2], m_h[2], m_first[2] + k)));
   }
 
   /// the velocity stored at node `(i, j, k)` (zero at a solid node whose given value was not
@@ -405,6 +462,10 @@ private:
   // The hot path reads only these: doubles and raw pointers into the shared arrays (which the
   // shared pointers keep alive in every copy).
   double m_lo[3], m_hi[3], m_h[3], m_inv_h[3];
+  // The whole grid of which this field is a block (itself unless made by `block()`): its box,
+  // its last cell and the index of this field's node (0, 0, 0) in it.
+  double m_grid_lo[3], m_grid_hi[3];
+  std::size_t m_grid_last_cell[3], m_first[3];
   std::size_t m_stride_y = 0, m_stride_z = 0;
   Grid_interpolation m_interpolation = Grid_interpolation::TRILINEAR;
   const float* m_value_data = nullptr;

@@ -10,12 +10,14 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/bin"
 
-# dpkg-query: nothing is installed except what FAKE_INSTALLED lists.
+# dpkg-query -W -f='${Package} ${Status}\n' PACKAGE...: nothing is installed except what
+# FAKE_INSTALLED lists.
 cat > "$work/bin/dpkg-query" <<'EOF'
 #!/usr/bin/env bash
-package=${!#}
-for p in $FAKE_INSTALLED; do
-  if [ "$p" = "$package" ]; then echo "install ok installed"; exit 0; fi
+for package in "$@"; do
+  for p in $FAKE_INSTALLED; do
+    if [ "$p" = "$package" ]; then echo "$p install ok installed"; fi
+  done
 done
 exit 1
 EOF

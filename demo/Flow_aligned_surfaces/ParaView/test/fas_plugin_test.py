@@ -41,6 +41,52 @@ class Setup:
         return vti
 
 
+def number_of_ranks():
+    """The number of MPI ranks the filters run on (1 without MPI)."""
+    return servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+
+
+def expect_spread_over_ranks(out, what):
+    """On several ranks: `out` (a filter's output) says that the filter sampled the input spread
+    over all of them.  Nothing on one rank."""
+    ranks = number_of_ranks()
+    if ranks == 1:
+        return
+    for name in ["number_of_ranks", "number_of_ranks_with_cells"]:
+        if field_value(out, name) != ranks:
+            raise AssertionError("%s: %s is %g on %d ranks" % (what, name, field_value(out, name), ranks))
+    print("%s: the input spread over %d ranks, %d exchanges" % (what, ranks, field_value(out, "number_of_exchanges")))
+
+
+# The script of a ProgrammableSource (OutputDataSetType vtkUnstructuredGrid) that puts the image
+# file %(file)r on one rank only (%(rank)r), as unstructured cells, for MPI runs: mode "all"
+# (the other rank holds no cells), "none" (no rank holds cells) or "no velocity" (the piece has no
+# velocity array).  Fill it in with flow_on_one_rank(rank, mode, file).
+FLOW_ON_ONE_RANK = """
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+from vtkmodules.vtkFiltersCore import vtkAppendFilter
+mode = %(mode)r
+rank = vtkMultiProcessController.GetGlobalController().GetLocalProcessId()
+if rank == %(rank)r and mode != "none":
+    reader = vtkXMLImageDataReader()
+    reader.SetFileName(%(file)r)
+    reader.Update()
+    grid = vtkAppendFilter()
+    grid.SetOutputPointsPrecision(1)  # double: the image's exact point coordinates
+    grid.AddInputData(reader.GetOutput())
+    grid.Update()
+    self.GetOutput().ShallowCopy(grid.GetOutput())
+    if mode == "no velocity":
+        self.GetOutput().GetPointData().RemoveArray("velocity")
+"""
+
+
+def flow_on_one_rank(rank, mode, filename):
+    """The ProgrammableSource script of FLOW_ON_ONE_RANK for `rank`, `mode` and the image `filename`."""
+    return FLOW_ON_ONE_RANK % {"rank": rank, "mode": mode, "file": filename}
+
+
 def read_polydata(filename):
     reader = vtkXMLPolyDataReader()
     reader.SetFileName(filename)

@@ -12,10 +12,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fas_plugin_test as t
-from paraview import servermanager
 
 setup = t.Setup(globals())
-ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+ranks = t.number_of_ranks()
 if ranks != 2:
     raise AssertionError("run on 2 ranks (mpiexec -n 2 pvbatch --mpi), not %d" % ranks)
 
@@ -85,25 +84,7 @@ Delete(surface)
 # 3. Bad input: a rank holds no cells.  Rank 0 (which holds the surface) has none and rank 1
 # the whole image: every sample comes from rank 1, and the result is still the library's.
 pieces = ProgrammableSource(OutputDataSetType="vtkUnstructuredGrid")
-PIECES_SCRIPT = """
-from vtkmodules.vtkParallelCore import vtkMultiProcessController
-from vtkmodules.vtkIOXML import vtkXMLImageDataReader
-from vtkmodules.vtkFiltersCore import vtkAppendFilter
-mode = %r
-rank = vtkMultiProcessController.GetGlobalController().GetLocalProcessId()
-if rank == 1 and mode != "none":
-    reader = vtkXMLImageDataReader()
-    reader.SetFileName(%r)
-    reader.Update()
-    grid = vtkAppendFilter()
-    grid.SetOutputPointsPrecision(1)  # double: the image's exact point coordinates
-    grid.AddInputData(reader.GetOutput())
-    grid.Update()
-    self.GetOutput().ShallowCopy(grid.GetOutput())
-    if mode == "no velocity":
-        self.GetOutput().GetPointData().RemoveArray("velocity")
-"""
-pieces.Script = PIECES_SCRIPT % ("all on rank 1", setup.field())
+pieces.Script = t.flow_on_one_rank(1, "all", setup.field())
 surface = surface_of(pieces, "Tangential (stream surface)")
 out = t.fetch(surface, ITERATIONS)
 t.expect_same_surface(out, tangential, "rank 0 holds no cells")
@@ -114,13 +95,13 @@ expect_field_value(out, "number_of_sampling_ranks", 1, "rank 0 holds no cells")
 # that says so, and the previous output kept.
 for mode, expected_message in [("none", "the input has no cells on any of the 2 ranks"),
                                ("no velocity", "rank 1: ")]:
-    pieces.Script = PIECES_SCRIPT % (mode, setup.field())
+    pieces.Script = t.flow_on_one_rank(1, mode, setup.field())
     with t.Messages() as messages:
         kept = t.fetch(surface, ITERATIONS)
     t.expect_message(messages, [expected_message, "the previous output is kept"], mode)
     t.expect_same_surface(kept, tangential, "%s: the previous output" % mode)
 
 # And the data back on rank 1: the surface again.
-pieces.Script = PIECES_SCRIPT % ("all on rank 1", setup.field())
+pieces.Script = t.flow_on_one_rank(1, "all", setup.field())
 t.expect_same_surface(t.fetch(surface, ITERATIONS), tangential, "data back on rank 1")
 print("Flow-Aligned Surface on 2 ranks: all checks passed")

@@ -31,6 +31,7 @@ def expect_same_as_library(filter, name, patch, p):
                         p["texture"], p["width"], p["height"], p["filter"], p["seed"], p["along"], p["across"])
     expected = t.read_polydata(prefix + "_surface.vtp")
     out = t.fetch_port(filter, 0)
+    t.expect_spread_over_ranks(out, name)
     for array in ["r", "s", "texture_coordinates"]:
         t.expect_same_array(out, expected, array)
     t.expect_same_array(out, expected, "texture_mask", cells=True)
@@ -113,18 +114,20 @@ if not sum(mask) / len(mask) > 0.9:
 print("orthogonal surface: mean mask %.3g" % (sum(mask) / len(mask)))
 
 # 5. The texture saved as PNG (to be loaded as the representation's Texture): the same texels.
-png = setup.path("texture.png")
-SaveData(png, proxy=OutputPort(texture, 1))
-from vtkmodules.vtkIOImage import vtkPNGReader
-reader = vtkPNGReader()
-reader.SetFileName(png)
-reader.Update()
-saved, image = reader.GetOutput(), t.fetch_port(texture, 1)
-if saved.GetDimensions() != image.GetDimensions() or any(
-        saved.GetPointData().GetScalars().GetTuple3(i) != image.GetPointData().GetScalars().GetTuple3(i)
-        for i in range(image.GetNumberOfPoints())):
-    raise AssertionError("the texture saved as PNG is not the texture")
-print("the texture saved as PNG has the same texels")
+# (ParaView has no PNG writer for data on several ranks: there, the MPI run skips this.)
+if t.number_of_ranks() == 1:
+    png = setup.path("texture.png")
+    SaveData(png, proxy=OutputPort(texture, 1))
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    reader = vtkPNGReader()
+    reader.SetFileName(png)
+    reader.Update()
+    saved, image = reader.GetOutput(), t.fetch_port(texture, 1)
+    if saved.GetDimensions() != image.GetDimensions() or any(
+            saved.GetPointData().GetScalars().GetTuple3(i) != image.GetPointData().GetScalars().GetTuple3(i)
+            for i in range(image.GetNumberOfPoints())):
+        raise AssertionError("the texture saved as PNG is not the texture")
+    print("the texture saved as PNG has the same texels")
 
 # 6. A surface outside the data: a message naming the fault, no crash, the previous outputs kept.
 before = t.output_sizes(texture, range(2))

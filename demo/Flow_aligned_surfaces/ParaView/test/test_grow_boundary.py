@@ -38,6 +38,7 @@ def check(grow, name, distance, mode, steps, iterations):
     surface_in, expected, report = reference(name, distance, mode, steps, iterations)
     grow.Surface = XMLPolyDataReader(FileName=[surface_in])
     out = t.fetch(grow)
+    t.expect_spread_over_ranks(out, name)
     t.expect_same_surface(out, expected, name)
     for key, value in report.items():
         got = t.field_value(out, key)

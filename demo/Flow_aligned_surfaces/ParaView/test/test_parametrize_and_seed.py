@@ -30,6 +30,7 @@ def reference(name, patch, method, normalization="default", alpha=0.0, source="c
 def expect_same_as_library(filter, expected, arrays, what):
     surface, curves, seeds = expected
     out = t.fetch_port(filter, 0)
+    t.expect_spread_over_ranks(out, what)
     for name in arrays:
         t.expect_same_array(out, surface, name)
     got_curves = t.fetch_port(filter, 1)

@@ -122,6 +122,7 @@ def check(surface, seeds_proxy, name, case):
     ref, terminations = reference(name, case, seeds)
     if out.GetNumberOfCells() == 0:
         raise AssertionError("%s: empty surface" % name)
+    t.expect_spread_over_ranks(out, name)
     t.expect_same_surface(out, ref, name)
     expect_same_arrays(out, ref, name)
     expect_same_terminations(out, terminations, name)

@@ -1,15 +1,17 @@
 // The velocity of an input distributed over MPI ranks, as a FlowField_3 for an algorithm that runs
 // on rank 0 only (pvbatch --mpi, pvserver with several processes).  Private to the plugin.
 //
-// Rank 0 holds the surface; before the library samples the field (an iteration, a measure), rank
-// 0 probes the points it will ask for in one collective exchange: it broadcasts the points, every
-// rank samples its own piece with the serial filter's sampler (make_velocity_field: the same
-// trilinear or cell interpolation, masks and "outside" as on one process), and a sum-reduction
-// brings rank 0 each point's sample (the mean where pieces share the point, as on the shared
-// faces of image pieces) or "no sample" where no piece holds it: the semantics of
-// ResampleWithDataset.  The other ranks answer probes until rank 0 says it has finished, so they
-// take part in exactly as many exchanges as rank 0 needs; a rank that fails sends its reason
-// instead of hanging the others.
+// Rank 0 holds the surface; it samples the field in collective exchanges: it broadcasts points,
+// every rank samples its own piece with the serial filter's sampler (make_velocity_field: the
+// same trilinear or cell interpolation, masks and "outside" as on one process), and a
+// sum-reduction brings rank 0 each point's sample (the mean where pieces share the point, as on
+// the shared faces of image pieces) or "no sample" where no piece holds it: the semantics of
+// ResampleWithDataset.  Where rank 0 knows the points beforehand (an iteration's face
+// centroids, the vertices of a surface to parametrize) they go in one exchange (`probe()`,
+// `probe_points_of()`); a point it did not announce (a particle of a stream surface, a boundary
+// edge to grow) is exchanged alone when the algorithm asks for it.  The other ranks answer until
+// rank 0 says it has finished (`serve()`), so they take part in exactly as many exchanges as
+// rank 0 needs; a rank that fails sends its reason instead of hanging the others.
 //
 // With one process (or no controller) nothing is exchanged: the field is the input's own.
 #ifndef FAS_DISTRIBUTED_FIELD_H
@@ -17,9 +19,13 @@
 
 #include "fas_paraview_support.h"
 
+#include <vtkAppendPolyData.h>
+#include <vtkCleanPolyData.h>
 #include <vtkCommunicator.h>
 #include <vtkMultiProcessController.h>
 #include <vtkMultiProcessStream.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkStripper.h>
 
 #include <algorithm>
 #include <array>
@@ -30,7 +36,9 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace fas_paraview {
@@ -42,35 +50,221 @@ struct Distributed_input {
   bool changed = false;        ///< some rank's piece or array changed since the last update
   std::array<double, 6> bounds{ { 1, -1, 1, -1, 1, -1 } }; ///< of the pieces with cells
   std::string errors;          ///< "rank r: reason" for each rank that cannot sample its piece
+
+  /// \throws std::invalid_argument when a piece cannot be sampled or no rank holds cells.
+  void require_samples() const
+  {
+    if (!errors.empty())
+      throw std::invalid_argument(ranks > 1 ? "cannot sample the input's pieces (" + errors + ")" : errors);
+    if (ranks_with_cells == 0)
+      throw std::invalid_argument("the input has no cells on any of the " + std::to_string(ranks) + " ranks");
+  }
 };
 
-/// A `FlowField_3` over a data set whose pieces live on the ranks of a controller.  On one process
-/// it is the input's own field.  On several, only rank 0 samples it, at points given to
-/// `probe()` (collective) beforehand; `operator()` looks the samples up by the exact point.
-/// Copies share their samples.
+/// A `FlowField_3` over a data set whose pieces live on the ranks of the global controller.  On
+/// one process it is the input's own field.  On several, only rank 0 samples it: at the points
+/// given to `probe()` beforehand (looked up by the exact point), and any other point in an
+/// exchange of its own.  Copies share their state.
 class Distributed_velocity_field {
 public:
   using Sample = std::optional<Vector>;
 
   Distributed_velocity_field() : m_state(std::make_shared<State>()) {}
 
-  /// Sets this rank's piece of the input when it changed: its field, or nothing when the piece
-  /// has no cells; `error` says why it cannot be sampled (then `local` is empty).
-  void set_piece(std::optional<Velocity_field> local, const std::string& error)
+  /// Called by every rank at the start of every update, collective when distributed: samples
+  /// this rank's piece of the input data set of `input_information` (none when the piece has no
+  /// cells) with the array `array_name` (empty: the active vectors), anew when either changed
+  /// since the last update, and gathers on rank 0 the state of every rank's piece.  The calling
+  /// thread is the one that may exchange.  Never throws: a piece that cannot be sampled is
+  /// reported in `errors`.
+  Distributed_input update(vtkInformation* input_information, const std::string& array_name)
   {
-    m_state->local = std::move(local);
-    m_state->local_error = error;
+    State& s = *m_state;
+    vtkDataSet* input = input_information != nullptr ? vtkDataSet::GetData(input_information) : nullptr;
+    const int* whole_extent =
+      input_information != nullptr && input_information->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())
+      ? input_information->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())
+      : nullptr;
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    const bool several = controller != nullptr && controller->GetNumberOfProcesses() > 1;
+    const bool changed =
+      !s.have_field || input == nullptr || input->GetMTime() != s.input_time || array_name != s.array_name;
+    if (changed)
+    {
+      s.local.reset();
+      s.local_error.clear();
+      try
+      {
+        if (!several || (input != nullptr && input->GetNumberOfCells() > 0))
+          s.local = make_velocity_field(input, array_name, whole_extent);
+      }
+      catch (const std::exception& e)
+      {
+        s.local_error = e.what();
+      }
+      s.input_time = input != nullptr ? input->GetMTime() : 0;
+      s.array_name = array_name;
+      s.have_field = s.local_error.empty();
+    }
+    std::array<double, 6> local_bounds{ { 1, -1, 1, -1, 1, -1 } };
+    if (input != nullptr && input->GetNumberOfCells() > 0)
+      input->GetBounds(local_bounds.data());
+    return start(several ? controller : nullptr, local_bounds, changed);
   }
 
-  /// Called by every rank at the start of every update, collective when distributed: gathers
-  /// on rank 0 the state of every rank's piece (`changed`: since the last update).
+  /// Whether the samples come from other ranks (more than one process).
+  bool distributed() const { return m_state->controller != nullptr; }
+  /// Whether this process runs the algorithm (rank 0, or the only process).
+  bool is_root() const { return !distributed() || m_state->controller->GetLocalProcessId() == 0; }
+
+  /// Rank 0: samples the distributed field at `points` in one exchange (collective: the other
+  /// ranks are in `serve()`); afterwards `operator()` answers at these points without an
+  /// exchange (until the next `probe()`).  Nothing on one process.
+  void probe(const std::vector<Point>& points) const
+  {
+    State& s = *m_state;
+    if (!distributed())
+      return;
+    std::vector<Sample> samples = exchange(points);
+    s.samples.clear();
+    s.samples.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+      s.samples[key(points[i])] = samples[i];
+  }
+
+  /// Rank 0: calls `evaluate()` once to learn the points it samples (the field answers a
+  /// placeholder velocity meanwhile, so that it runs through; `evaluate` must have no other
+  /// effect; what it throws is ignored), then probes them in one exchange.  Nothing on one
+  /// process.
+  template <class Evaluate>
+  void probe_points_of(const Evaluate& evaluate) const
+  {
+    State& s = *m_state;
+    if (!distributed())
+      return;
+    s.recorded.clear();
+    s.recording = true;
+    try
+    {
+      evaluate();
+    }
+    catch (...)
+    {
+      // The placeholder may make it fail early: the points not recorded are exchanged when
+      // asked for, and a real failure comes back when the algorithm runs on the samples.
+    }
+    s.recording = false;
+    probe(s.recorded);
+    s.recorded = std::vector<Point>();
+  }
+private:
+  // Rank 0: the samples at `points`, from every rank (collective: the other ranks are in
+  // `serve()`).  Throws std::runtime_error when a rank failed to sample its piece.
+  std::vector<Sample> exchange(const std::vector<Point>& points) const
+  {
+    State& s = *m_state;
+    const int ranks = s.controller->GetNumberOfProcesses();
+    int header[2] = { PROBE, int(points.size()) };
+    s.controller->Broadcast(header, 2, 0);
+    std::vector<double> coordinates(3 * points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+      for (int d = 0; d < 3; ++d)
+        coordinates[3 * i + std::size_t(d)] = points[i][d];
+    s.controller->Broadcast(coordinates.data(), vtkIdType(coordinates.size()), 0);
+    const std::vector<double> mine = sample_local(coordinates, ranks, 0);
+    std::vector<double> total(mine.size());
+    s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
+
+    ++s.exchanges;
+    const std::size_t n = points.size();
+    std::vector<Sample> samples(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const double* t = &total[4 * i];
+      if (t[3] > 0)
+        samples[i] = Vector(t[0] / t[3], t[1] / t[3], t[2] / t[3]);
+    }
+    s.failed_ranks = int(total[4 * n]);
+    s.supplying_ranks = 0;
+    for (int r = 0; r < ranks; ++r)
+      s.supplying_ranks += total[4 * n + 1 + std::size_t(r)] > 0 ? 1 : 0;
+    if (s.failed_ranks > 0)
+      throw std::runtime_error(std::to_string(s.failed_ranks) + " rank(s) failed to sample their piece of the input");
+    return samples;
+  }
+
+public:
+
+  /// Rank 0: tells the other ranks that no more probes come (ends their `serve()`).
+  void finish() const
+  {
+    if (!distributed())
+      return;
+    int header[2] = { FINISH, 0 };
+    m_state->controller->Broadcast(header, 2, 0);
+  }
+
+  /// Ranks other than 0: answer rank 0's probes until it calls `finish()`.  Never throws.
+  void serve() const
+  {
+    State& s = *m_state;
+    if (!distributed())
+      return;
+    const int ranks = s.controller->GetNumberOfProcesses();
+    const int rank = s.controller->GetLocalProcessId();
+    for (;;)
+    {
+      int header[2] = { FINISH, 0 };
+      s.controller->Broadcast(header, 2, 0);
+      if (header[0] != PROBE)
+        return;
+      std::vector<double> coordinates(3 * std::size_t(header[1]));
+      s.controller->Broadcast(coordinates.data(), vtkIdType(coordinates.size()), 0);
+      const std::vector<double> mine = sample_local(coordinates, ranks, rank);
+      std::vector<double> total(mine.size());
+      s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
+    }
+  }
+
+  /// The velocity at `p`: the input's own field on one process; on rank 0 of several, the sample
+  /// probed at exactly `p`, or else one exchanged for `p` alone.  \throws std::logic_error when
+  /// such an exchange is asked for by another thread than the one that called `update()` (the
+  /// algorithms' parallel loops sample probed points only).
+  Sample operator()(const Point& p) const
+  {
+    State& s = *m_state;
+    if (!distributed())
+      return s.local ? (*s.local)(p) : Sample();
+    if (s.recording)
+    {
+      std::lock_guard<std::mutex> lock(s.record_mutex);
+      s.recorded.push_back(p);
+      return Vector(1, 0, 0);
+    }
+    const auto found = s.samples.find(key(p));
+    if (found != s.samples.end())
+      return found->second;
+    if (std::this_thread::get_id() != s.owner)
+      throw std::logic_error("the field was asked in a parallel loop for a point that was not probed from the ranks");
+    return exchange({ p }).front();
+  }
+
+  /// Ranks whose piece supplied at least one sample in the last exchange.
+  int number_of_supplying_ranks() const { return m_state->supplying_ranks; }
+  /// Exchanges since the start of the update (batches and single points).
+  std::size_t number_of_exchanges() const { return m_state->exchanges; }
+
+private:
+  // Gathers on rank 0 the state of every rank's piece (collective; `controller` null: one process).
   Distributed_input start(vtkMultiProcessController* controller, const std::array<double, 6>& local_bounds,
     bool changed)
   {
     State& s = *m_state;
-    s.controller = controller != nullptr && controller->GetNumberOfProcesses() > 1 ? controller : nullptr;
+    s.controller = controller;
+    s.owner = std::this_thread::get_id();
     s.samples.clear();
     s.supplying_ranks = 0;
+    s.exchanges = 0;
     const std::string& error = s.local_error;
     Distributed_input input;
     if (s.controller == nullptr)
@@ -114,126 +308,7 @@ public:
     return input;
   }
 
-  /// Whether the samples come from other ranks (more than one process).
-  bool distributed() const { return m_state->controller != nullptr; }
-  /// Whether this process runs the algorithm (rank 0, or the only process).
-  bool is_root() const { return !distributed() || m_state->controller->GetLocalProcessId() == 0; }
 
-  /// Rank 0: samples the distributed field at `points` (collective: the other ranks are in
-  /// `serve()`); afterwards `operator()` answers at exactly these points.  Nothing on one process.
-  void probe(const std::vector<Point>& points)
-  {
-    State& s = *m_state;
-    if (!distributed())
-      return;
-    const int ranks = s.controller->GetNumberOfProcesses();
-    int header[2] = { PROBE, int(points.size()) };
-    s.controller->Broadcast(header, 2, 0);
-    std::vector<double> coordinates(3 * points.size());
-    for (std::size_t i = 0; i < points.size(); ++i)
-      for (int d = 0; d < 3; ++d)
-        coordinates[3 * i + std::size_t(d)] = points[i][d];
-    s.controller->Broadcast(coordinates.data(), vtkIdType(coordinates.size()), 0);
-    const std::vector<double> mine = sample_local(coordinates, ranks, 0);
-    std::vector<double> total(mine.size());
-    s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
-
-    const std::size_t n = points.size();
-    s.samples.clear();
-    s.samples.reserve(n);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      const double* t = &total[4 * i];
-      Sample sample;
-      if (t[3] > 0)
-        sample = Vector(t[0] / t[3], t[1] / t[3], t[2] / t[3]);
-      s.samples[key(points[i])] = sample;
-    }
-    s.failed_ranks = int(total[4 * n]);
-    s.supplying_ranks = 0;
-    for (int r = 0; r < ranks; ++r)
-      s.supplying_ranks += total[4 * n + 1 + std::size_t(r)] > 0 ? 1 : 0;
-    if (s.failed_ranks > 0)
-      throw std::runtime_error(std::to_string(s.failed_ranks) + " rank(s) failed to sample their piece of the input");
-  }
-
-  /// Rank 0: calls `evaluate()` once to learn the points it samples (it must sample the same
-  /// points when called again and have no other effect), then probes them.  Nothing on one process.
-  template <class Evaluate>
-  void probe_points_of(const Evaluate& evaluate)
-  {
-    State& s = *m_state;
-    if (!distributed())
-      return;
-    s.recorded.clear();
-    s.recording = true;
-    try
-    {
-      evaluate();
-    }
-    catch (...)
-    {
-      s.recording = false;
-      throw;
-    }
-    s.recording = false;
-    probe(s.recorded);
-  }
-
-  /// Rank 0: tells the other ranks that no more probes come (ends their `serve()`).
-  void finish()
-  {
-    if (!distributed())
-      return;
-    int header[2] = { FINISH, 0 };
-    m_state->controller->Broadcast(header, 2, 0);
-  }
-
-  /// Ranks other than 0: answer rank 0's probes until it calls `finish()`.  Never throws.
-  void serve()
-  {
-    State& s = *m_state;
-    if (!distributed())
-      return;
-    const int ranks = s.controller->GetNumberOfProcesses();
-    const int rank = s.controller->GetLocalProcessId();
-    for (;;)
-    {
-      int header[2] = { FINISH, 0 };
-      s.controller->Broadcast(header, 2, 0);
-      if (header[0] != PROBE)
-        return;
-      std::vector<double> coordinates(3 * std::size_t(header[1]));
-      s.controller->Broadcast(coordinates.data(), vtkIdType(coordinates.size()), 0);
-      const std::vector<double> mine = sample_local(coordinates, ranks, rank);
-      std::vector<double> total(mine.size());
-      s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
-    }
-  }
-
-  /// The velocity at `p`: the input's own field on one process; on rank 0 of several, the sample
-  /// probed at exactly `p`.  \throws std::logic_error for a point that was not probed.
-  Sample operator()(const Point& p) const
-  {
-    const State& s = *m_state;
-    if (!distributed())
-      return s.local ? (*s.local)(p) : Sample();
-    if (s.recording)
-    {
-      std::lock_guard<std::mutex> lock(s.record_mutex);
-      s.recorded.push_back(p);
-      return Sample();
-    }
-    const auto found = s.samples.find(key(p));
-    if (found == s.samples.end())
-      throw std::logic_error("the field was asked for a point that was not probed from the ranks");
-    return found->second;
-  }
-
-  /// Ranks whose piece supplied at least one sample in the last exchange.
-  int number_of_supplying_ranks() const { return m_state->supplying_ranks; }
-
-private:
   enum Command
   {
     FINISH = 0,
@@ -307,9 +382,119 @@ private:
     mutable std::mutex record_mutex;
     mutable std::vector<Point> recorded;
     int failed_ranks = 0, supplying_ranks = 0;
+    std::size_t exchanges = 0;
+    std::thread::id owner;                           // the thread that may exchange
+    vtkMTimeType input_time = 0;                     // of the input sampled in `local`
+    std::string array_name;
+    bool have_field = false;
   };
   std::shared_ptr<State> m_state;
 };
+
+/// Ends the other ranks' `serve()` when rank 0 leaves an update, whatever the way out.
+class Finish_probes {
+public:
+  explicit Finish_probes(const Distributed_velocity_field& field) : m_field(field) {}
+  Finish_probes(const Finish_probes&) = delete;
+  Finish_probes& operator=(const Finish_probes&) = delete;
+  ~Finish_probes() { m_field.finish(); }
+
+private:
+  const Distributed_velocity_field& m_field;
+};
+
+/// Ranks other than 0: answers rank 0's probes until it has finished the update; the outputs of
+/// this rank stay empty (the results live on rank 0).
+inline void serve_rank_0(const Distributed_velocity_field& field, vtkInformationVector* outputVector)
+{
+  field.serve();
+  for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
+    if (vtkDataObject* output = vtkDataObject::GetData(outputVector, port))
+      output->Initialize();
+}
+
+/// Rank 0 of several: how the input was spread and what sampling it cost, as field data of
+/// `output` (number_of_ranks, number_of_ranks_with_cells, number_of_sampling_ranks: ranks that
+/// supplied samples in the last exchange, number_of_exchanges).  Nothing on one process.
+inline void add_distribution_values(vtkDataObject* output, const Distributed_input& pieces,
+                                    const Distributed_velocity_field& field)
+{
+  if (!field.distributed())
+    return;
+  add_field_value(output, "number_of_ranks", double(pieces.ranks));
+  add_field_value(output, "number_of_ranks_with_cells", double(pieces.ranks_with_cells));
+  add_field_value(output, "number_of_sampling_ranks", double(field.number_of_supplying_ranks()));
+  add_field_value(output, "number_of_exchanges", double(field.number_of_exchanges()));
+}
+
+/// Rank 0: `tm` as polygonal data with the arrays of `add_alignment_arrays()` (on several ranks
+/// their samples are exchanged first, in one go), and its normalized flux.
+inline std::pair<vtkSmartPointer<vtkPolyData>, FAS::Normalized_flux> aligned_surface_output(
+  Mesh& tm, const Distributed_velocity_field& field)
+{
+  const auto with_arrays = [&tm, &field] {
+    vtkSmartPointer<vtkPolyData> polydata = to_polydata(tm);
+    const FAS::Normalized_flux measured = add_alignment_arrays(polydata, tm, field);
+    return std::make_pair(polydata, measured);
+  };
+  field.probe_points_of(with_arrays);
+  return with_arrays();
+}
+
+/// Every rank (collective when distributed): the pieces of a polygonal input brought together on
+/// rank 0, where the algorithm runs: points that pieces share are merged, and line pieces are
+/// joined into polylines where they meet.  A single non-empty piece is returned as it is (the
+/// serial filter's point order).  On the other ranks, and on one process, `piece` itself (may be
+/// null).
+inline vtkSmartPointer<vtkPolyData> gather_on_root(vtkPolyData* piece)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  vtkSmartPointer<vtkPolyData> own = piece;
+  if (controller == nullptr || controller->GetNumberOfProcesses() < 2)
+    return own;
+  auto sent = vtkSmartPointer<vtkPolyData>::New();
+  if (piece != nullptr)
+    sent->ShallowCopy(piece);
+  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+  controller->Gather(sent, pieces, 0);
+  if (controller->GetLocalProcessId() != 0)
+    return own;
+  auto append = vtkSmartPointer<vtkAppendPolyData>::New();
+  vtkSmartPointer<vtkPolyData> last;
+  int non_empty = 0;
+  bool polygons = false;
+  for (const vtkSmartPointer<vtkDataObject>& object : pieces)
+    if (vtkPolyData* p = vtkPolyData::SafeDownCast(object); p != nullptr && p->GetNumberOfPoints() > 0)
+    {
+      append->AddInputData(p);
+      last = p;
+      ++non_empty;
+      polygons = polygons || p->GetNumberOfPolys() > 0 || p->GetNumberOfStrips() > 0;
+    }
+  if (non_empty == 0)
+    return vtkSmartPointer<vtkPolyData>::New();
+  if (non_empty == 1)
+    return last;
+  auto merge = vtkSmartPointer<vtkCleanPolyData>::New();
+  merge->SetInputConnection(append->GetOutputPort());
+  merge->PointMergingOn();
+  merge->ToleranceIsAbsoluteOn();
+  merge->SetAbsoluteTolerance(0.);
+  merge->ConvertLinesToPointsOff();
+  merge->ConvertPolysToLinesOff();
+  merge->ConvertStripsToPolysOff();
+  vtkAlgorithm* last_stage = merge;
+  auto join = vtkSmartPointer<vtkStripper>::New();
+  if (!polygons)
+  {
+    join->SetInputConnection(merge->GetOutputPort());
+    join->JoinContiguousSegmentsOn();
+    last_stage = join;
+  }
+  last_stage->Update();
+  vtkSmartPointer<vtkPolyData> whole = vtkPolyData::SafeDownCast(last_stage->GetOutputDataObject(0));
+  return whole;
+}
 
 } // namespace fas_paraview
 

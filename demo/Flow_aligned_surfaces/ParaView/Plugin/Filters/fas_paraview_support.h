@@ -76,8 +76,12 @@ inline std::string selected_array_name(vtkAlgorithm* filter)
 }
 
 /// The velocity field of `data_set`'s array `array_name` (the first 3-component array when the
-/// name is empty).  \throws std::invalid_argument naming the data set and the array.
-inline Velocity_field make_velocity_field(vtkDataSet* data_set, const std::string& array_name)
+/// name is empty).  An image that is a piece of a larger one (`whole_extent`, from the pipeline;
+/// null: the image is whole) samples bit for bit as the whole image would, so that its pieces on
+/// several ranks give the serial samples.  \throws std::invalid_argument naming the data set and
+/// the array.
+inline Velocity_field make_velocity_field(vtkDataSet* data_set, const std::string& array_name,
+                                          const int* whole_extent = nullptr)
 {
   if (data_set == nullptr)
     throw std::invalid_argument("the input is not a data set (vtkDataSet)");
@@ -91,9 +95,20 @@ inline Velocity_field make_velocity_field(vtkDataSet* data_set, const std::strin
     const double* direction = image->GetDirectionMatrix()->GetData();
     const bool axis_aligned = direction[0] == 1 && direction[4] == 1 && direction[8] == 1;
     if (axis_aligned && dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2) {
-      // The first point, not the origin: a piece of an image (MPI, a subset) starts at its extent.
+      // Node (0, 0, 0) of the whole image, at its extent's first index; this piece is the block
+      // of the whole image's nodes from its own extent's first index on.
+      int extent[6];
+      image->GetExtent(extent);
+      const int* whole = whole_extent != nullptr ? whole_extent : extent;
+      const double* image_origin = image->GetOrigin();
       double origin[3];
-      image->GetPoint(0, origin);
+      FAS::Regular_grid_flow_field_3<Kernel>::Dimensions grid_dimensions, first, dimensions;
+      for (int d = 0; d < 3; ++d) {
+        origin[d] = image_origin[d] + whole[2 * d] * spacing[d];
+        grid_dimensions[std::size_t(d)] = std::size_t(whole[2 * d + 1] - whole[2 * d] + 1);
+        first[std::size_t(d)] = std::size_t(extent[2 * d] - whole[2 * d]);
+        dimensions[std::size_t(d)] = std::size_t(dims[d]);
+      }
       const vtkIdType n = points_array->GetNumberOfTuples();
       std::vector<float> values(std::size_t(3 * n));
       for (vtkIdType i = 0; i < n; ++i)
@@ -106,10 +121,9 @@ inline Velocity_field make_velocity_field(vtkDataSet* data_set, const std::strin
         for (vtkIdType i = 0; i < n; ++i)
           mask[std::size_t(i)] = inside->GetComponent(i, 0) != 0. ? 1 : 0;
       }
-      return Velocity_field(FAS::Regular_grid_flow_field_3<Kernel>(
+      return Velocity_field(FAS::Regular_grid_flow_field_3<Kernel>::block(
           Point(origin[0], origin[1], origin[2]), Vector(spacing[0], spacing[1], spacing[2]),
-          {{std::size_t(dims[0]), std::size_t(dims[1]), std::size_t(dims[2])}}, std::move(values),
-          std::move(mask)));
+          grid_dimensions, first, dimensions, std::move(values), std::move(mask)));
     }
   }
   if (array_name.empty())
@@ -237,14 +251,6 @@ inline std::string bounds_text(const double b[6])
   std::ostringstream os;
   os << "x " << b[0] << ".." << b[1] << ", y " << b[2] << ".." << b[3] << ", z " << b[4] << ".." << b[5];
   return os.str();
-}
-
-/// The bounds of `data_set` in words, for messages.
-inline std::string bounds_text(vtkDataSet* data_set)
-{
-  double b[6];
-  data_set->GetBounds(b);
-  return bounds_text(b);
 }
 
 /// The arrays of an aligned surface `tm` shown as `polydata` (its points in vertex index order,

@@ -1,7 +1,7 @@
 // What the filters that work on a given surface share (Parametrize and Seed, Flow Texture):
 // input port 0 the data set with the velocity, input port 1 a triangulated surface; the surface
-// as a mesh whose vertex i is the surface's point i; vertex and face values as point and cell
-// arrays.  Private to the plugin.
+// as a mesh whose vertex i is the surface's point i; vertex values as point arrays.  Private to
+// the plugin.
 #ifndef FAS_PARAVIEW_SURFACE_INPUT_H
 #define FAS_PARAVIEW_SURFACE_INPUT_H
 
@@ -23,31 +23,20 @@ inline int fill_surface_filter_input_port(int port, vtkInformation* info)
   return 1;
 }
 
-/// The velocity of input port 0 and the surface of input port 1.
-struct Surface_input {
-  vtkDataSet* data = nullptr;
-  vtkPolyData* surface = nullptr;
-  Velocity_field field;
-  Mesh tm;
-};
-
-/// Reads both inputs of `filter`.  \throws std::invalid_argument naming the input and the fault
-/// (no 3-component array, no triangles on the surface).
-inline Surface_input read_surface_input(vtkAlgorithm* filter, vtkInformationVector** inputVector)
+/// The surface of input port 1 as a mesh whose vertex i is the surface's point i.
+/// \throws std::invalid_argument naming the input and the fault (not polygonal data, no
+/// triangles, a point of no triangle).
+inline Mesh surface_mesh(vtkPolyData* surface)
 {
-  Surface_input in;
-  in.data = vtkDataSet::GetData(inputVector[0], 0);
-  in.surface = vtkPolyData::GetData(inputVector[1], 0);
-  if (in.surface == nullptr)
+  if (surface == nullptr)
     throw std::invalid_argument("the Surface input (port 1) is not polygonal data");
-  in.field = make_velocity_field(in.data, selected_array_name(filter));
-  in.tm = mesh_from_polydata(in.surface, "the Surface input (port 1)");
+  Mesh tm = mesh_from_polydata(surface, "the Surface input (port 1)");
   // Point i is vertex i of the mesh, so a point of no triangle cannot be dropped silently.
-  for (Mesh::Vertex_index v : in.tm.vertices())
-    if (in.tm.is_isolated(v))
+  for (Mesh::Vertex_index v : tm.vertices())
+    if (tm.is_isolated(v))
       throw std::invalid_argument("the Surface input (port 1): point " + std::to_string(v.idx()) +
                                   " belongs to no triangle; remove such points first (Filters > Clean)");
-  return in;
+  return tm;
 }
 
 /// Adds the values of a vertex property map of `tm` (vertex i = point i) to `polydata`'s point

@@ -1,5 +1,6 @@
 #include "vtkFlowAlignedParametrize.h"
 
+#include "fas_distributed_field.h"
 #include "fas_paraview_surface_input.h"
 
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
@@ -13,6 +14,8 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 using namespace fas_paraview;
 
@@ -117,6 +120,7 @@ vtkSmartPointer<vtkPolyData> point_cloud(const std::vector<Point>& seeds)
 } // namespace
 
 struct vtkFlowAlignedParametrize::Internals {
+  Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
   Kept_outputs kept;
 };
 
@@ -151,12 +155,23 @@ int vtkFlowAlignedParametrize::FillInputPortInformation(int port, vtkInformation
 int vtkFlowAlignedParametrize::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  Internals& in = *this->Internal;
+  // Every rank: the surface's pieces go to rank 0, and every rank samples its piece of the
+  // flow for rank 0 (one process: the input's own field).
+  const vtkSmartPointer<vtkPolyData> input_surface = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
+  const Distributed_input pieces =
+    in.field.update(inputVector[0]->GetInformationObject(0), selected_array_name(this));
+  if (!in.field.is_root())
+  {
+    serve_rank_0(in.field, outputVector);
+    return 1;
+  }
   try
   {
-    Surface_input in = read_surface_input(this, inputVector);
-    Mesh& tm = in.tm;
+    Finish_probes finish_probes(in.field);
+    Mesh tm = surface_mesh(input_surface);
     auto surface = vtkSmartPointer<vtkPolyData>::New();
-    surface->ShallowCopy(in.surface);
+    surface->ShallowCopy(input_surface);
     const char* contoured = "r";
     Scalar_map f;
     if (this->Parametrization == CIRCULAR)
@@ -174,19 +189,32 @@ int vtkFlowAlignedParametrize::RequestData(
     }
     else
     {
-      f = tm.add_property_map<Vertex, double>("v:r", 0.).first;
-      Scalar_map s = tm.add_property_map<Vertex, double>("v:s", 0.).first;
-      if (this->Parametrization == ORTHOGONAL)
-        with_normalization(this->Normalization, [&](const auto& np) {
-          FAS::parametrize_orthogonal(tm, in.field, f, s, FAS::parameters::angle(this->Angle, np));
-        });
-      else
-        with_normalization(this->Normalization,
-          [&](const auto& np) { FAS::parametrize_tangential(tm, in.field, f, s, np); });
+      pieces.require_samples();
+      // The parameters along and across the flow (on several ranks their samples are
+      // exchanged first, in one go).
+      const auto parametrize = [&](Mesh& m) {
+        Scalar_map r = m.add_property_map<Vertex, double>("v:r", 0.).first;
+        Scalar_map s = m.add_property_map<Vertex, double>("v:s", 0.).first;
+        if (this->Parametrization == ORTHOGONAL)
+          with_normalization(this->Normalization, [&](const auto& np) {
+            FAS::parametrize_orthogonal(m, in.field, r, s, FAS::parameters::angle(this->Angle, np));
+          });
+        else
+          with_normalization(this->Normalization,
+            [&](const auto& np) { FAS::parametrize_tangential(m, in.field, r, s, np); });
+        return std::make_pair(r, s);
+      };
+      in.field.probe_points_of([&] {
+        Mesh copy = tm;
+        parametrize(copy);
+      });
+      Scalar_map s;
+      std::tie(f, s) = parametrize(tm);
       add_vertex_array(surface, tm, "r", 1, [&](Vertex v) { return f[v]; });
       add_vertex_array(surface, tm, "s", 1, [&](Vertex v) { return s[v]; });
     }
     surface->GetPointData()->SetActiveScalars(contoured);
+    add_distribution_values(surface, pieces, in.field);
 
     vtkSmartPointer<vtkPolyData> curves =
       iso_contours(tm, f, std::size_t(this->NumberOfSeedCurves), contoured);
@@ -198,12 +226,12 @@ int vtkFlowAlignedParametrize::RequestData(
     vtkPolyData::GetData(outputVector, 0)->ShallowCopy(surface);
     vtkPolyData::GetData(outputVector, 1)->ShallowCopy(curves);
     vtkPolyData::GetData(outputVector, 2)->ShallowCopy(point_cloud(seeds));
-    this->Internal->kept.keep(outputVector);
+    in.kept.keep(outputVector);
     return 1;
   }
   catch (const std::exception& e)
   {
-    const bool kept = this->Internal->kept.restore(outputVector);
+    const bool kept = in.kept.restore(outputVector);
     vtkErrorMacro(<< "Parametrize and Seed: " << e.what()
                   << (kept ? "; the previous output is kept" : ""));
     return 1;

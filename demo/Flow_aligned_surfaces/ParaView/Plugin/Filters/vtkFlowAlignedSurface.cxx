@@ -11,7 +11,6 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMath.h>
-#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 
@@ -56,12 +55,6 @@ void make_patch(Mesh& tm, int shape, const double center[3], const double normal
     FAS::make_planar_patch(tm, c, n, size, size, std::size_t(faces));
 }
 
-// Ends the other ranks' serve() when rank 0 leaves RequestData, whatever the way out.
-struct Finish_probes {
-  Distributed_velocity_field& field;
-  ~Finish_probes() { field.finish(); }
-};
-
 double milliseconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -80,9 +73,6 @@ struct vtkFlowAlignedSurface::Internals {
   // The input's velocity (on several ranks: its samples probed from every rank's piece); the
   // deformation holds a reference to it: never replaced.
   Distributed_velocity_field field;
-  vtkMTimeType input_time = 0;
-  std::string array_name;
-  bool have_field = false;
 
   Mesh tm;                    // the surface the deformation writes
   std::unique_ptr<Deformation> deformation;
@@ -164,7 +154,6 @@ int vtkFlowAlignedSurface::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   Internals& in = *this->Internal;
-  vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
 
@@ -181,46 +170,14 @@ int vtkFlowAlignedSurface::RequestData(
     // factorization (it depends on the patch only).  On several ranks every rank builds the
     // field of its own piece (none for a piece without cells) and rank 0 learns the pieces'
     // state; then the other ranks only answer rank 0's probes.
-    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-    const bool distributed = controller != nullptr && controller->GetNumberOfProcesses() > 1;
-    const std::string array_name = selected_array_name(this);
-    const bool changed = !in.have_field || input == nullptr || input->GetMTime() != in.input_time ||
-      array_name != in.array_name;
-    if (changed)
-    {
-      std::optional<Velocity_field> local;
-      std::string error;
-      try
-      {
-        if (!distributed || (input != nullptr && input->GetNumberOfCells() > 0))
-          local = make_velocity_field(input, array_name);
-      }
-      catch (const std::exception& e)
-      {
-        error = e.what();
-      }
-      in.field.set_piece(std::move(local), error);
-      in.input_time = input != nullptr ? input->GetMTime() : 0;
-      in.array_name = array_name;
-      in.have_field = error.empty();
-    }
-    std::array<double, 6> local_bounds{ { 1, -1, 1, -1, 1, -1 } };
-    if (input != nullptr && input->GetNumberOfCells() > 0)
-      input->GetBounds(local_bounds.data());
-    const Distributed_input pieces = in.field.start(controller, local_bounds, changed);
+    const Distributed_input pieces = in.field.update(inputVector[0]->GetInformationObject(0), selected_array_name(this));
     if (!in.field.is_root())
     {
-      in.field.serve();
-      output->Initialize(); // the surface lives on rank 0
+      serve_rank_0(in.field, outputVector);
       return 1;
     }
-    Finish_probes finish_probes{ in.field };
-    if (!pieces.errors.empty())
-      throw std::invalid_argument(distributed ? "cannot sample the input's pieces (" + pieces.errors + ")"
-                                              : pieces.errors);
-    if (pieces.ranks_with_cells == 0)
-      throw std::invalid_argument("the input has no cells on any of the " + std::to_string(pieces.ranks) +
-                                  " ranks");
+    Finish_probes finish_probes(in.field);
+    pieces.require_samples();
     if (pieces.changed)
       in.restart = true;
 
@@ -323,15 +280,7 @@ int vtkFlowAlignedSurface::RequestData(
       for (Mesh::Vertex_index v : shown.vertices())
         shown.point(v) = in.positions[k][i++];
     }
-    // The surface with its arrays (evaluated twice on several ranks: once to learn the points
-    // it samples, which are then probed).
-    const auto with_arrays = [&in, &shown] {
-      vtkSmartPointer<vtkPolyData> polydata = to_polydata(shown);
-      const FAS::Normalized_flux measured = add_alignment_arrays(polydata, shown, in.field);
-      return std::make_pair(polydata, measured);
-    };
-    in.field.probe_points_of(with_arrays);
-    const auto [result, flux] = with_arrays();
+    const auto [result, flux] = aligned_surface_output(shown, in.field);
     add_field_value(result, "iteration", double(k));
     add_field_value(result, "converged", in.converged && k + 1 >= in.positions.size() ? 1. : 0.);
     add_field_value(result, "max_rotation_angle", k == 0 ? 0. : in.reports[k - 1].max_rotation_angle);
@@ -339,9 +288,7 @@ int vtkFlowAlignedSurface::RequestData(
     if (in.field.distributed())
     {
       // How the input was spread and what the exchanges cost (for the benchmark and the tests).
-      add_field_value(result, "number_of_ranks", double(pieces.ranks));
-      add_field_value(result, "number_of_ranks_with_cells", double(pieces.ranks_with_cells));
-      add_field_value(result, "number_of_sampling_ranks", double(in.field.number_of_supplying_ranks()));
+      add_distribution_values(result, pieces, in.field);
       add_field_value(result, "iterations_computed", double(iterations_now));
       if (iterations_now > 0)
       {

@@ -1,5 +1,6 @@
 #include "vtkFlowTexture.h"
 
+#include "fas_distributed_field.h"
 #include "fas_paraview_surface_input.h"
 
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 
 using namespace fas_paraview;
 
@@ -42,9 +44,20 @@ vtkSmartPointer<vtkImageData> to_image(const FAS::Texture_image& texture)
   return image;
 }
 
+// The texture chosen by the filter's properties.
+FAS::Texture_image make_texture(vtkFlowTexture* filter)
+{
+  const auto width = std::size_t(filter->GetTextureWidth()), height = std::size_t(filter->GetTextureHeight());
+  return filter->GetTexture() == vtkFlowTexture::ARROWS
+    ? FAS::make_arrow_texture(width, height, std::size_t(filter->GetArrowsAlong()),
+        std::size_t(filter->GetArrowsAcross()))
+    : FAS::make_noise_texture(width, height, filter->GetFilterLength(), std::uint32_t(filter->GetNoiseSeed()));
+}
+
 } // namespace
 
 struct vtkFlowTexture::Internals {
+  Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
   Kept_outputs kept;
 };
 
@@ -96,26 +109,61 @@ int vtkFlowTexture::RequestInformation(
 int vtkFlowTexture::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  Internals& in = *this->Internal;
+  // Every rank: the surface's pieces go to rank 0, and every rank samples its piece of the
+  // flow for rank 0 (one process: the input's own field).
+  const vtkSmartPointer<vtkPolyData> input_surface = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
+  const Distributed_input pieces =
+    in.field.update(inputVector[0]->GetInformationObject(0), selected_array_name(this));
+  // The texture does not depend on the flow: every rank gives the part of it that it is asked
+  // for (ParaView asks each rank for a piece of an image output).
+  const auto texture_piece = [this, outputVector] {
+    vtkSmartPointer<vtkImageData> image = to_image(make_texture(this));
+    vtkInformation* info = outputVector->GetInformationObject(1);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+      image->Crop(info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()));
+    return image;
+  };
+  if (!in.field.is_root())
+  {
+    serve_rank_0(in.field, outputVector);
+    try
+    {
+      vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture_piece());
+    }
+    catch (const std::exception&)
+    {
+      // rank 0 reports what is wrong with the properties
+    }
+    return 1;
+  }
   try
   {
-    Surface_input in = read_surface_input(this, inputVector);
-    Mesh& tm = in.tm;
-    auto r = tm.add_property_map<Vertex, double>("v:r", 0.).first;
-    auto s = tm.add_property_map<Vertex, double>("v:s", 0.).first;
+    Finish_probes finish_probes(in.field);
+    pieces.require_samples();
+    Mesh tm = surface_mesh(input_surface);
+    // The parameter r along the flow and the mask b(gamma) (on several ranks their samples are
+    // exchanged first, in one go).
+    const auto parametrize_and_mask = [&](Mesh& m) {
+      auto r = m.add_property_map<Vertex, double>("v:r", 0.).first;
+      auto s = m.add_property_map<Vertex, double>("v:s", 0.).first;
+      auto mask = m.add_property_map<Face, double>("f:mask", 1.).first;
+      FAS::parametrize_tangential(m, in.field, r, s, FAS::parameters::normalized(false));
+      FAS::compute_flow_texture_mask(
+        m, in.field, r, mask, FAS::parameters::min_relative_speed(this->MinRelativeSpeed));
+      return std::make_tuple(r, s, mask);
+    };
+    in.field.probe_points_of([&] {
+      Mesh copy = tm;
+      parametrize_and_mask(copy);
+    });
+    const auto [r, s, mask] = parametrize_and_mask(tm);
     auto uv = tm.add_property_map<Vertex, std::array<double, 2>>("v:uv").first;
-    auto mask = tm.add_property_map<Face, double>("f:mask", 1.).first;
-    FAS::parametrize_tangential(tm, in.field, r, s, FAS::parameters::normalized(false));
     FAS::compute_flow_texture_coordinates(tm, r, s, uv, this->Scale, this->Offset);
-    FAS::compute_flow_texture_mask(
-      tm, in.field, r, mask, FAS::parameters::min_relative_speed(this->MinRelativeSpeed));
-    const FAS::Texture_image texture = this->Texture == ARROWS
-      ? FAS::make_arrow_texture(std::size_t(this->TextureWidth), std::size_t(this->TextureHeight),
-          std::size_t(this->ArrowsAlong), std::size_t(this->ArrowsAcross))
-      : FAS::make_noise_texture(std::size_t(this->TextureWidth), std::size_t(this->TextureHeight),
-          this->FilterLength, std::uint32_t(this->NoiseSeed));
+    const vtkSmartPointer<vtkImageData> texture = texture_piece();
 
     auto surface = vtkSmartPointer<vtkPolyData>::New();
-    surface->ShallowCopy(in.surface);
+    surface->ShallowCopy(input_surface);
     add_vertex_array(surface, tm, "r", 1, [&](Vertex v) { return r[v]; });
     add_vertex_array(surface, tm, "s", 1, [&](Vertex v) { return s[v]; });
     add_vertex_array(surface, tm, "texture_coordinates", 2, [&](Vertex v) { return uv[v]; });
@@ -125,15 +173,16 @@ int vtkFlowTexture::RequestData(
       face_mask->SetValue(vtkIdType(f.idx()), mask[f]);
     surface->GetCellData()->AddArray(face_mask);
     surface->GetCellData()->SetActiveScalars("texture_mask");
+    add_distribution_values(surface, pieces, in.field);
 
     vtkPolyData::GetData(outputVector, 0)->ShallowCopy(surface);
-    vtkImageData::GetData(outputVector, 1)->ShallowCopy(to_image(texture));
-    this->Internal->kept.keep(outputVector);
+    vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture);
+    in.kept.keep(outputVector);
     return 1;
   }
   catch (const std::exception& e)
   {
-    const bool kept = this->Internal->kept.restore(outputVector);
+    const bool kept = in.kept.restore(outputVector);
     vtkErrorMacro(<< "Flow Texture: " << e.what() << (kept ? "; the previous output is kept" : ""));
     return 1;
   }

@@ -1,5 +1,6 @@
 #include "vtkGrowBoundary.h"
 
+#include "fas_distributed_field.h"
 #include "fas_paraview_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
@@ -9,13 +10,47 @@
 #include <vtkMath.h>
 #include <vtkObjectFactory.h>
 
+#include <iterator>
 #include <string>
+#include <vector>
 
 using namespace fas_paraview;
 
 vtkStandardNewMacro(vtkGrowBoundary);
 
+namespace {
+
+using Deformation = FAS::Flow_aligned_deformation<Mesh, Distributed_velocity_field>;
+
+// Iterates until an iteration converges or `max_iterations` were made, as
+// Flow_aligned_deformation::run() does; on several ranks each iteration's samples are exchanged
+// first, in one go.  Returns the number of iterations, whether the last converged and its
+// largest rotation.
+FAS::Alignment_report iterate(Deformation& deformation, const Distributed_velocity_field& field,
+                              std::size_t max_iterations)
+{
+  FAS::Alignment_report result;
+  std::vector<Point> points;
+  for (std::size_t k = 0; k < max_iterations && !result.converged; ++k)
+  {
+    if (field.distributed())
+    {
+      points.clear();
+      deformation.next_sample_points(std::back_inserter(points));
+      field.probe(points);
+    }
+    const FAS::Iteration_report r = deformation.step();
+    ++result.number_of_iterations;
+    result.max_rotation_angle = r.max_rotation_angle;
+    result.converged = r.converged;
+  }
+  return result;
+}
+
+} // namespace
+
 struct vtkGrowBoundary::Internals {
+  Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
   Kept_outputs kept; // the outputs of the last successful run
 };
 
@@ -51,23 +86,32 @@ int vtkGrowBoundary::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   Internals& in = *this->Internal;
-  vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
-  vtkPolyData* surface = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-
+  // Every rank: the surface's pieces go to rank 0, and every rank samples its piece of the flow
+  // for rank 0 (one process: the input's own field).
+  const vtkSmartPointer<vtkPolyData> surface = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
+  const Distributed_input pieces =
+    in.field.update(inputVector[0]->GetInformationObject(0), selected_array_name(this));
+  if (!in.field.is_root())
+  {
+    serve_rank_0(in.field, outputVector);
+    return 1;
+  }
   try
   {
-    // Both outlive the deformation, which holds them by reference.
-    const Velocity_field field = make_velocity_field(input, selected_array_name(this));
+    Finish_probes finish_probes(in.field);
+    pieces.require_samples();
+    const Distributed_velocity_field& field = in.field; // outlives the deformation, as tm does
     Mesh tm = mesh_from_polydata(surface, "the surface (input 1)");
     const std::size_t input_vertices = tm.number_of_vertices();
+    field.probe_points_of([&] { FAS::normalized_flux(tm, field); });
     if (!FAS::normalized_flux(tm, field).value)
       throw std::invalid_argument("the surface (input 1) has no flow sample: it lies outside the input "
-                                  "data set (bounds " + bounds_text(input) + "); move it into the data");
+                                  "data set (bounds " + bounds_text(pieces.bounds.data()) + "); move it into the data");
 
     const FAS::Alignment alignment =
       this->Alignment == ORTHOGONAL ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL;
-    FAS::Flow_aligned_deformation<Mesh, Velocity_field> deformation(tm, field, alignment,
+    Deformation deformation(tm, field, alignment,
       FAS::parameters::max_rotation_angle(this->MaxRotationAngle,
         FAS::parameters::max_dihedral_angle(this->MaxDihedralAngle,
           FAS::parameters::convergence_angle(
@@ -94,12 +138,11 @@ int vtkGrowBoundary::RequestData(
       grown.grown_boundary_length += r.grown_boundary_length;
       grown.added_area += r.added_area;
       growth_step.resize(tm.number_of_vertices(), double(step));
-      aligned = deformation.run(std::size_t(this->NumberOfIterations));
+      aligned = iterate(deformation, field, std::size_t(this->NumberOfIterations));
       iterations += aligned.number_of_iterations;
     }
 
-    vtkSmartPointer<vtkPolyData> result = to_polydata(tm);
-    const FAS::Normalized_flux flux = add_alignment_arrays(result, tm, field);
+    const auto [result, flux] = aligned_surface_output(tm, field);
     auto step_array = make_array("growth_step", 1, vtkIdType(growth_step.size()));
     for (std::size_t i = 0; i < growth_step.size(); ++i)
       step_array->SetValue(vtkIdType(i), growth_step[i]);
@@ -113,6 +156,7 @@ int vtkGrowBoundary::RequestData(
     add_field_value(result, "number_of_grown_edges", double(grown.number_of_grown_edges));
     add_field_value(result, "grown_boundary_length", grown.grown_boundary_length);
     add_field_value(result, "added_area", grown.added_area);
+    add_distribution_values(result, pieces, field);
     if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
       vtkWarningMacro(<< "Grow Boundary: " << warning);
     output->ShallowCopy(result);

@@ -1,5 +1,6 @@
 #include "vtkStreamSurfaceFromCurve.h"
 
+#include "fas_distributed_field.h"
 #include "fas_paraview_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
@@ -47,6 +48,7 @@ bool surface_is_empty(const FAS::Stream_surface_report& r)
 } // namespace
 
 struct vtkStreamSurfaceFromCurve::Internals {
+  Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
   Kept_outputs kept; // the outputs of the last successful run
 };
 
@@ -85,13 +87,23 @@ int vtkStreamSurfaceFromCurve::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   Internals& in = *this->Internal;
-  vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
-  vtkPolyData* seeds = vtkPolyData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-
+  // Every rank: the seed curves' pieces go to rank 0, and every rank samples its piece of the
+  // flow for rank 0 (one process: the input's own field).  The particles' positions depend on
+  // the samples before them: on several ranks every sample is an exchange of its own.
+  const vtkSmartPointer<vtkPolyData> seeds = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
+  const Distributed_input pieces =
+    in.field.update(inputVector[0]->GetInformationObject(0), selected_array_name(this));
+  if (!in.field.is_root())
+  {
+    serve_rank_0(in.field, outputVector);
+    return 1;
+  }
   try
   {
-    const Velocity_field field = make_velocity_field(input, selected_array_name(this));
+    Finish_probes finish_probes(in.field);
+    pieces.require_samples();
+    const Distributed_velocity_field& field = in.field;
     const std::vector<Polyline> curves = polylines_from_polydata(seeds);
     if (curves.empty())
       throw std::invalid_argument(
@@ -171,7 +183,7 @@ int vtkStreamSurfaceFromCurve::RequestData(
           FAS::to_string(reports[c].termination) + " (" + reports[c].message + ")";
     if (tm.number_of_faces() == 0)
       throw std::invalid_argument("no seed curve gives a surface (" + empty +
-        "); the seed curves must lie in the data set (bounds " + bounds_text(input) +
+        "); the seed curves must lie in the data set (bounds " + bounds_text(pieces.bounds.data()) +
         ") where the flow is not zero");
     if (!empty.empty())
       vtkWarningMacro(<< "Stream Surface From Curve: some seed curves give no surface: " << empty);
@@ -193,6 +205,7 @@ int vtkStreamSurfaceFromCurve::RequestData(
     for (vtkDoubleArray* a : { u.Get(), t.Get(), integration_time.Get(), seed_curve.Get() })
       result->GetPointData()->AddArray(a);
     result->GetPointData()->SetActiveScalars("u");
+    add_distribution_values(result, pieces, in.field);
 
     const auto per_curve = [&](const char* name, auto value) {
       std::vector<decltype(value(reports.front()))> values;

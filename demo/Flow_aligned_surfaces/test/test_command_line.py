@@ -1,0 +1,272 @@
+#!/usr/bin/env python3
+"""The command line of the demo's programs and scripts, as a user meets it.  One check a call:
+
+  help PROGRAM EXPECTED...       PROGRAM --help: exit 0, "Usage:", every EXPECTED text (options
+                                 with their defaults), nothing on standard error, nothing written
+  garbage PROGRAM OPTION TEXT [ARG...]
+                                 PROGRAM OPTION TEXT ARG...: refused (exit 2), the message names
+                                 OPTION and TEXT, nothing written (not even the output folder)
+  overwrite ALIGN_PATCH          a non-empty output folder is refused without --overwrite (and left
+                                 as it was); with it, no file of the earlier run remains; the
+                                 folder the user is in is refused even with --overwrite
+  failed_run REPLAY_SESSION SESSION
+                                 a run that fails half-way (a `save` into a missing sub-folder)
+                                 leaves the output folder as it was, and no staging folder
+  progress ALIGN_PATCH           progress lines (iteration, flux, elapsed time) on standard output,
+                                 and nothing there with --quiet
+  summary ALIGN_PATCH VERSION    summary.json parsed back: the inputs, the version, the runs, and
+                                 exactly the files of the folder
+  scripts SCRIPTS_DIR            every user script with --help: exit 0, its usage, nothing run
+                                 (cmake, apt-get, dpkg-query are fakes that log), nothing written;
+                                 run-main-job.sh never takes an option for the output folder
+Each check works in a fresh temporary folder and exits non-zero with the reason when it fails.
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+
+def fail(message):
+    print("FAIL: " + message, file=sys.stderr)
+    sys.exit(1)
+
+
+def run(args, cwd, env=None):
+    p = subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True, timeout=600)
+    return p.returncode, p.stdout, p.stderr
+
+
+def listing(folder):
+    """Every entry under `folder`, relative, with its modification time and size for files."""
+    entries = {}
+    for root, dirs, files in os.walk(folder):
+        for name in dirs + files:
+            path = os.path.join(root, name)
+            st = os.stat(path)
+            entries[os.path.relpath(path, folder)] = (st.st_mtime_ns, st.st_size) if name in files else None
+    return entries
+
+
+def check_help(program, expected):
+    with tempfile.TemporaryDirectory() as work:
+        status, out, err = run([program, "--help"], work)
+        if status != 0:
+            fail(f"{program} --help exited with {status}:\n{err}")
+        if not out.startswith("Usage: "):
+            fail(f"{program} --help does not start with 'Usage: ':\n{out}")
+        for text in expected + ["--help", "--version"]:
+            if text not in out:
+                fail(f"{program} --help does not mention '{text}':\n{out}")
+        if err:
+            fail(f"{program} --help wrote to standard error:\n{err}")
+        if os.listdir(work):
+            fail(f"{program} --help wrote {os.listdir(work)}")
+
+
+def check_garbage(program, option, text, extra):
+    with tempfile.TemporaryDirectory() as work:
+        status, out, err = run([program, option, text, "--output", "out"] + extra, work)
+        if status != 2:
+            fail(f"{program} {option} {text}: exit status {status}, expected 2 (a bad command line)\n{out}{err}")
+        if option not in err or f"'{text}'" not in err:
+            fail(f"{program} {option} {text}: the message does not name the option and the text:\n{err}")
+        if os.listdir(work):
+            fail(f"{program} {option} {text} wrote {os.listdir(work)}")
+
+
+def check_overwrite(align_patch):
+    with tempfile.TemporaryDirectory() as work:
+        out = os.path.join(work, "out")
+        common = [align_patch, "--faces", "200", "--output", out, "--quiet"]
+        status, _, err = run(common + ["--alignment", "orthogonal"], work)
+        if status != 0 or not os.path.exists(os.path.join(out, "orthogonal_flux.csv")):
+            fail(f"the first run failed ({status}):\n{err}")
+        before = listing(out)
+        status, _, err = run(common + ["--alignment", "tangential"], work)
+        if status == 0:
+            fail("a non-empty output folder was accepted without --overwrite")
+        if "--overwrite" not in err or "not empty" not in err:
+            fail(f"the refusal does not say the folder is not empty and what to do (--overwrite):\n{err}")
+        if listing(out) != before:
+            fail("the refused run changed the output folder")
+        status, _, err = run(common + ["--alignment", "tangential", "--overwrite"], work)
+        if status != 0:
+            fail(f"--overwrite was refused ({status}):\n{err}")
+        files = sorted(os.listdir(out))
+        stale = [f for f in files if f.startswith("orthogonal_")]
+        if stale:
+            fail(f"files of the earlier run remain after --overwrite: {stale}")
+        if "tangential_flux.csv" not in files:
+            fail(f"the run with --overwrite did not write tangential_flux.csv: {files}")
+        if os.listdir(work) != ["out"]:
+            fail(f"something was left beside the output folder: {os.listdir(work)}")
+        # The folder the user is in is not emptied, even with --overwrite.
+        before = listing(out)
+        status, _, err = run([align_patch, "--faces", "200", "--output", ".", "--overwrite"], out)
+        if status == 0 or "folder you are in" not in err or listing(out) != before:
+            fail(f"--output . --overwrite inside an earlier run's folder was not refused ({status}):\n{err}")
+
+
+def check_failed_run(replay_session, session):
+    with tempfile.TemporaryDirectory() as work:
+        out = os.path.join(work, "out")
+        os.mkdir(out)
+        with open(os.path.join(out, "earlier.csv"), "w") as f:
+            f.write("an earlier run's file\n")
+        before = listing(out)
+        # The session saves once (written), then into a sub-folder that does not exist (fails).
+        bad = os.path.join(work, "half.session")
+        with open(session) as f:
+            text = f.read().rstrip("\n") + "\nsave missing/surface.vtp\n"
+        with open(bad, "w") as g:
+            g.write(text)
+        line = len(text.splitlines())
+        status, _, err = run([replay_session, "--output", out, "--overwrite", "--quiet", bad], work)
+        if status == 0 or f"line {line}: cannot save missing/surface.vtp" not in err:
+            fail(f"a session that cannot save at line {line} did not fail there (status {status}):\n{err}")
+        if listing(out) != before:
+            fail(f"the failed run changed the output folder: {sorted(listing(out))}")
+        if sorted(os.listdir(work)) != ["half.session", "out"]:
+            fail(f"the failed run left {sorted(os.listdir(work))}")
+
+
+def check_progress(align_patch):
+    with tempfile.TemporaryDirectory() as work:
+        command = [align_patch, "--faces", "200", "--alignment", "orthogonal"]
+        status, out, err = run(command + ["--output", "loud"], work)
+        if status != 0 or "orthogonal: iteration 1, flux " not in out or " s elapsed" not in out:
+            fail(f"no progress line (status {status}):\n{out}{err}")
+        status, out, err = run(command + ["--output", "quiet", "--quiet"], work)
+        if status != 0 or out:
+            fail(f"--quiet printed (status {status}):\n{out}{err}")
+
+
+def check_summary(align_patch, version):
+    with tempfile.TemporaryDirectory() as work:
+        out = os.path.join(work, "out")
+        status, _, err = run([align_patch, "--faces", "200", "--size", "1", "--normal", "1,0.4,0.2",
+                              "--output", out, "--quiet"], work)
+        if status != 0:
+            fail(f"align_patch failed ({status}):\n{err}")
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+        if summary.get("version") != version:
+            fail(f"version {summary.get('version')!r}, expected {version!r}")
+        expected_inputs = {"flow": "cylinder", "field": None, "array": None, "center": None,
+                           "normal": [1, 0.4, 0.2], "size": 1, "faces": 200, "alignment": "both"}
+        if summary.get("inputs") != expected_inputs:
+            fail(f"inputs {summary.get('inputs')}, expected {expected_inputs}")
+        runs = summary.get("runs", [])
+        if [r.get("alignment") for r in runs] != ["tangential", "orthogonal"]:
+            fail(f"runs {[r.get('alignment') for r in runs]}, expected tangential and orthogonal")
+        for r in runs:
+            if r.get("normal") != [1, 0.4, 0.2] or r.get("size") != 1:
+                fail(f"the {r.get('alignment')} run does not record the placement it used: {r}")
+        files = summary.get("files", [])
+        missing = [f for f in files if not os.path.isfile(os.path.join(out, f))]
+        if missing:
+            fail(f"summary.json lists files that do not exist: {missing}")
+        # Every file, those of subfolders (the main job's iterations) as relative paths.
+        written = sorted(os.path.relpath(os.path.join(d, f), out).replace(os.sep, "/")
+                         for d, _, names in os.walk(out) for f in names)
+        if sorted(files) != written:
+            fail(f"summary.json lists {sorted(files)}, the folder holds {written}")
+        for name in ["summary.json", "tangential_aligned.vtp", "orthogonal_flux.csv"]:
+            if name not in files:
+                fail(f"summary.json does not list {name}")
+
+
+def fake_tools(work):
+    """A bin folder of fakes that log their calls: cmake, apt-get, sudo, and dpkg-query (which
+    reports every package installed), for scripts that must not build or install."""
+    bin_dir = os.path.join(work, "bin")
+    os.mkdir(bin_dir)
+    log = os.path.join(work, "calls.log")
+    for tool in ["cmake", "apt-get", "sudo", "ctest", "g++"]:
+        with open(os.path.join(bin_dir, tool), "w") as f:
+            f.write(f'#!/bin/sh\necho "{tool} $*" >> "{log}"\n')
+    with open(os.path.join(bin_dir, "dpkg-query"), "w") as f:
+        f.write(f'#!/bin/sh\necho "dpkg-query $*" >> "{log}"\n'
+                'for p in "$@"; do case $p in -*) ;; *) echo "$p install ok installed";; esac; done\n')
+    for name in os.listdir(bin_dir):
+        os.chmod(os.path.join(bin_dir, name), 0o755)
+    env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ["PATH"])
+    return env, log
+
+
+def check_scripts(scripts_dir):
+    scripts_dir = os.path.abspath(scripts_dir)
+    scripts = sorted(f for f in os.listdir(scripts_dir) if f.endswith(".sh"))
+    for script in scripts:
+        with tempfile.TemporaryDirectory() as work:
+            env, log = fake_tools(work)
+            cwd = os.path.join(work, "cwd")
+            os.mkdir(cwd)
+            status, out, err = run(["bash", os.path.join(scripts_dir, script), "--help"], cwd, env)
+            if status != 0:
+                fail(f"{script} --help exited with {status}:\n{out}{err}")
+            if "Usage" not in out and "usage" not in out:
+                fail(f"{script} --help prints no usage:\n{out}")
+            if os.path.exists(log):
+                with open(log) as f:
+                    fail(f"{script} --help ran programs:\n{f.read()}")
+            if os.listdir(cwd):
+                fail(f"{script} --help wrote {os.listdir(cwd)}")
+    # run-main-job.sh: the first argument is the output folder only when it is not an option.
+    main_job = os.path.join(scripts_dir, "run-main-job.sh")
+    for args, expected in [(["--flow", "sphere"], ["--output", "@CWD@/flow_aligned_surfaces_output", "--flow", "sphere"]),
+                           (["results", "--faces", "10"], ["--output", "results", "--faces", "10"]),
+                           (["--faces", "10", "--output", "mine"], ["--faces", "10", "--output", "mine"])]:
+        with tempfile.TemporaryDirectory() as work:
+            env, log = fake_tools(work)
+            cwd = os.path.join(work, "cwd")
+            os.mkdir(cwd)
+            build = os.path.join(work, "build")
+            program = os.path.join(build, "demo", "Flow_aligned_surfaces", "align_patch")
+            os.makedirs(os.path.dirname(program))
+            open(os.path.join(build, "CMakeCache.txt"), "w").close()
+            with open(program, "w") as f:
+                f.write(f'#!/bin/sh\nfor a in "$@"; do echo "$a"; done > "{work}/align_patch.args"\n')
+            os.chmod(program, 0o755)
+            env["FAS_BUILD_DIR"] = build
+            status, out, err = run(["bash", main_job] + args, cwd, env)
+            if status != 0:
+                fail(f"run-main-job.sh {' '.join(args)} exited with {status}:\n{out}{err}")
+            with open(os.path.join(work, "align_patch.args")) as f:
+                got = f.read().split("\n")[:-1]
+            want = [a.replace("@CWD@", cwd) for a in expected]
+            if got != want:
+                fail(f"run-main-job.sh {' '.join(args)} ran align_patch {got}, expected {want}")
+            if os.listdir(cwd):
+                fail(f"run-main-job.sh {' '.join(args)} created {os.listdir(cwd)} (the program is a fake)")
+
+
+def main():
+    check, args = sys.argv[1], sys.argv[2:]
+    if check != "help" and check != "garbage":  # programs and files; the texts stay as they are
+        args = [os.path.abspath(a) if os.path.exists(a) else a for a in args]
+    else:
+        args[0] = os.path.abspath(args[0])
+    if check == "help":
+        check_help(args[0], args[1:])
+    elif check == "garbage":
+        check_garbage(args[0], args[1], args[2], args[3:])
+    elif check == "overwrite":
+        check_overwrite(args[0])
+    elif check == "failed_run":
+        check_failed_run(args[0], args[1])
+    elif check == "progress":
+        check_progress(args[0])
+    elif check == "summary":
+        check_summary(args[0], args[1])
+    elif check == "scripts":
+        check_scripts(args[0])
+    else:
+        fail("unknown check " + check)
+    print("passed: " + " ".join(sys.argv[1:2] + [os.path.basename(a) for a in sys.argv[2:3]]))
+
+
+if __name__ == "__main__":
+    main()
