@@ -37,6 +37,18 @@ fi
 cp "$work/main_job/orthogonal_seed_curves.png" "$fig/fas_seeding_seed_curves.png"
 cp "$work/main_job/orthogonal_stream_surfaces.png" "$fig/fas_seeding_stream_surfaces.png"
 cp "$work/main_job/orthogonal_stream_lines.png" "$fig/fas_seeding_stream_lines.png"
+# The main job's scene pictures (the initial patch beside the aligned one with what it seeds), on
+# the built-in flow and, when the shared data is there, on the CFD cylinder without --center.
+cp "$work/main_job/tangential_scene.png" "$fig/fas_main_job_tangential_scene.png"
+cp "$work/main_job/orthogonal_scene.png" "$fig/fas_main_job_orthogonal_scene.png"
+cylinder="$root/../shared/data/CYLINDER_grid.vtk"
+if [ -f "$cylinder" ]; then
+  "$build/demo/Flow_aligned_surfaces/align_patch" --field "$cylinder" --faces 3000 --output "$work/cfd" | tee "$work/cfd.log"
+  cp "$work/cfd/tangential_scene.png" "$fig/fas_main_job_cfd_tangential_scene.png"
+  cp "$work/cfd/orthogonal_scene.png" "$fig/fas_main_job_cfd_orthogonal_scene.png"
+else
+  echo "make-figures: $cylinder not found; fas_main_job_cfd_*.png unchanged" >&2
+fi
 # The ParaView pictures, from the plugin's tests (the GUI with the plane widget, the example script).
 if [ -d "$build/demo/Flow_aligned_surfaces/ParaView" ]; then
   cmake --build "$build" --target FlowAlignedSurfaces paraview_reference -j"$(nproc)"
@@ -48,4 +60,5 @@ else
 fi
 echo "make-figures: wrote $fig/fas_texture_noise.png, fas_texture_arrows.png, fas_texture_seed_curves.png,"
 echo "  fas_seeding_seed_curves.png, fas_seeding_stream_surfaces.png, fas_seeding_stream_lines.png,"
+echo "  fas_main_job_{tangential,orthogonal}_scene.png, fas_main_job_cfd_{tangential,orthogonal}_scene.png,"
 echo "  fas_paraview_gui.png, fas_paraview_main_job.png (with ParaView)"

@@ -1,14 +1,17 @@
 // The package's main job: place a planar patch in a built-in flow, align it
 // tangentially (a stream surface) or orthogonally (a seeding surface), and write
 // what a user opens afterwards: the initial and aligned surfaces as PLY and VTP
-// (ParaView), the normalized flux of every iteration as CSV, and a JSON summary; and, when built
-// with VTK rendering and a display (or Xvfb) is there, pictures of the initial and aligned
-// surfaces coloured by flux and of the tangential one with its LIC-like texture (PNG).
-// Then the seeding workflow of the paper's Figures 4 and 5 on each aligned surface: its
-// parametrization (with the deformation's own factorization) gives seed curves (iso-contours of
-// r, VTP), each seeds a stream surface integrated forward and backward (VTP with the seed
-// parameter u and the time t), and on the orthogonal surface seed points seed stream lines (VTP);
-// pictures of the seed curves on the surface and of the stream surfaces.
+// (ParaView), the iterations as a ParaView collection (.pvd), the normalized flux of every
+// iteration as CSV, a JSON summary and open_in_paraview.py (every output with the colouring and
+// camera of the pictures); and, when built with VTK rendering and a display (or Xvfb) is there,
+// pictures (PNG): the scene of each alignment (the initial patch beside the aligned one with
+// what it seeds, the obstacle and the domain, as the paper's Figures 4 and 5), the surfaces
+// coloured by flux, and the tangential one with its LIC-like texture.
+// The seeding workflow of the paper's Figures 4 and 5 on each aligned surface: the tangential
+// one grown across the flow first; its parametrization (with the deformation's own
+// factorization) gives seed curves (iso-contours of r, VTP), one stream surface per distinct
+// seed curve, integrated forward and backward as one mesh (VTP with u, t, SeedIds), and on the
+// orthogonal surface seed points seed stream lines (VTP with velocity, IntegrationTime, SeedIds).
 //
 // Usage: align_patch [--flow NAME | --field FILE [--array NAME]]
 //                    [--alignment tangential|orthogonal|both] [--faces N] [--center X,Y,Z]
@@ -17,11 +20,19 @@
 // Flows: cylinder (default), point-source, sphere, helical, hill, burgers, abc, tornado.
 // A data file is any file IO::read_flow_field() reads (legacy VTK grids and cells, VTK XML
 // .vti/.vtu/.vts when built with VTK, AmiraMesh, NRRD) with a velocity array (and an optional
-// mask array "inside"); without --center the patch is placed at the middle of the data's box,
-// and without --normal it faces the flow there (orthogonal) or contains it (tangential).
+// mask array "inside"); without --center the patches are placed near the obstacle (or the largest
+// vorticity), and without --normal they are tilted 30 degrees off the flow
+// (feature_placement.h).
 
 #include "command_line.h"
 #include "demo_support.h"
+#include "distinct_stream_surfaces.h"
+#include "feature_placement.h"
+#include "grow_across_flow.h"
+#include "iteration_collection.h"
+#include "paraview_script.h"
+#include "scene_assembly.h"
+#include "stream_lines_with_arrays.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
@@ -54,6 +65,7 @@ struct Scene {
   Point tangential_center, orthogonal_center;
   Vector tangential_normal, orthogonal_normal;
   double size;
+  std::optional<CGAL::Bbox_3> domain = std::nullopt; // the data's box (analytic flows: none)
 };
 
 // A built-in flow with a tangential and an orthogonal placement of the patch in it.
@@ -89,6 +101,16 @@ std::optional<Scene> make_scene(const std::string& name)
   return std::nullopt;
 }
 
+// "x,y,z", as --center and --normal take it.
+template <class T>
+std::string triple_text(const T& p)
+{
+  std::ostringstream os;
+  os.precision(4);
+  os << p.x() << ',' << p.y() << ',' << p.z();
+  return os.str();
+}
+
 struct Placement {
   std::optional<std::array<double, 3>> center, normal;
   std::optional<double> size;
@@ -102,27 +124,39 @@ std::optional<Scene> make_data_scene(const std::string& file, const std::string&
   if (!field)
     return std::nullopt;
   const CGAL::Bbox_3 box = field->bbox();
-  const Point center = placement.center
-                           ? Point((*placement.center)[0], (*placement.center)[1], (*placement.center)[2])
-                           : Point((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
-                                   (box.zmin() + box.zmax()) / 2);
-  const auto v = (*field)(center);
-  if (!v || v->squared_length() == 0) {
-    std::cerr << "error: --center: the flow of " << file << " is not defined (or zero) at " << center
-              << "; place the patch in the fluid with --center X,Y,Z\n";
-    return std::nullopt;
-  }
   const double size =
       placement.size
           ? *placement.size
           : 0.25 * (std::min)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
-  Vector orthogonal_normal = *v, tangential_normal = CGAL::cross_product(*v, Vector(0, 0, 1));
-  if (tangential_normal.squared_length() < 1e-12 * v->squared_length())
-    tangential_normal = CGAL::cross_product(*v, Vector(1, 0, 0));
+  const std::optional<Point> given_center =
+      placement.center ? std::optional<Point>(Point((*placement.center)[0], (*placement.center)[1],
+                                                    (*placement.center)[2]))
+                       : std::nullopt;
+  if (given_center) {
+    const auto v = (*field)(*given_center);
+    if (!v || v->squared_length() == 0) {
+      std::cerr << "error: --center: the flow of " << file << " is not defined (or zero) at " << *given_center
+                << "; place the patch in the fluid with --center X,Y,Z\n";
+      return std::nullopt;
+    }
+  }
+  // Without --normal: near the main feature (or at --center), tilted 30 degrees off the flow.
+  const auto placed = place_near_feature<Point, Vector>(*field, box, size, CGAL_PI / 6, given_center);
+  if (!placed) {
+    std::cerr << "error: --field: " << file << " has no flow (no finite non-zero velocity) anywhere\n";
+    return std::nullopt;
+  }
+  Scene scene{Flow(*field), placed->tangential_center, placed->orthogonal_center, placed->tangential_normal,
+              placed->orthogonal_normal, size, box};
   if (placement.normal)
-    orthogonal_normal = tangential_normal =
+    scene.orthogonal_normal = scene.tangential_normal =
         Vector((*placement.normal)[0], (*placement.normal)[1], (*placement.normal)[2]);
-  return Scene{Flow(*field), center, center, tangential_normal, orthogonal_normal, size};
+  else
+    std::cout << "patches placed " << placed->description << ": tangential at --center "
+              << triple_text(scene.tangential_center) << " --normal " << triple_text(scene.tangential_normal)
+              << ", orthogonal at --center " << triple_text(scene.orthogonal_center) << " --normal "
+              << triple_text(scene.orthogonal_normal) << "\n";
+  return scene;
 }
 
 // Opens `path` for writing, or says why not.
@@ -140,12 +174,14 @@ std::optional<std::ofstream> open_output(const std::filesystem::path& path)
 using Polyline = std::vector<Point>;
 
 // The seeding workflow on the aligned surface `tm` of `deformation`: seed curves from its
-// parametrization, a stream surface from each (forward and backward, arc-length time lines up to
-// twice the patch size), and stream lines from seed points on an orthogonal surface; all written
-// as VTP, with pictures when `pictures`.  Returns false when a file cannot be written.
+// parametrization (iso-contours of r, each with its value), one stream surface per distinct seed
+// curve (distinct_stream_surfaces.h: forward and backward in one mesh, arc-length time lines up
+// to twice the patch size), and stream lines from seed points on an orthogonal surface; all
+// written as VTP, with pictures when `pictures`, and added to `view` (the scene picture's).
+// Returns false when a file cannot be written.
 bool seed_and_integrate(const std::string& name, Mesh& tm,
                         const FAS::Flow_aligned_deformation<Mesh, Flow>& deformation, const Scene& scene,
-                        const std::filesystem::path& out, bool pictures)
+                        const std::filesystem::path& out, bool pictures, Scene_view& view)
 {
   const bool tangential = deformation.alignment() == FAS::Alignment::TANGENTIAL;
   auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
@@ -155,67 +191,76 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
   else
     deformation.parametrize_orthogonal(r, s);
   std::vector<Polyline> seed_curves;
-  FAS::extract_iso_contours(tm, r, FAS::evenly_spaced_iso_values(tm, r, 3), std::back_inserter(seed_curves));
-
-  Mesh surfaces;
-  auto u = surfaces.add_property_map<Mesh::Vertex_index, double>("v:u", 0).first;
-  auto t = surfaces.add_property_map<Mesh::Vertex_index, double>("v:t", 0).first;
-  // Forward and backward in one surface per seed curve (t < 0 on the backward half).
-  const auto np = FAS::parameters::front_spacing(
-      scene.size / 30,
-      FAS::parameters::arc_length_time_lines(
-          true, FAS::parameters::max_length(
-                    2 * scene.size, FAS::parameters::integration_direction(
-                                        FAS::Integration_direction::BOTH,
-                                        FAS::parameters::seed_parameter_map(
-                                            u, FAS::parameters::integration_time_map(t))))));
-  for (const Polyline& seed : seed_curves) {
-    if (seed.size() < 2)
-      continue;
-    try {
-      FAS::integrate_stream_surface(scene.flow, seed, surfaces, np);
-    } catch (const std::exception& e) { // a degenerate contour: skip it, say why
-      std::cerr << name << ": seed curve skipped: " << e.what() << "\n";
+  std::vector<double> curve_values, point_values; // r of each curve and of each of its points
+  for (double value : FAS::evenly_spaced_iso_values(tm, r, 3)) {
+    const std::size_t before = seed_curves.size();
+    FAS::extract_iso_contours(tm, r, std::vector<double>{value}, std::back_inserter(seed_curves));
+    for (std::size_t i = before; i < seed_curves.size(); ++i) {
+      curve_values.push_back(value);
+      point_values.insert(point_values.end(), seed_curves[i].size(), value);
     }
   }
-  std::vector<double> us, ts;
+
+  const auto integrated = integrate_distinct_stream_surfaces<Mesh>(scene.flow, seed_curves, scene.size / 30,
+                                                                   2 * scene.size);
+  for (const std::string& reason : integrated.skipped_reasons)
+    std::cerr << name << ": " << reason << "\n";
+  const Mesh& surfaces = integrated.mesh;
+  const auto u = surfaces.property_map<Mesh::Vertex_index, double>("v:u").first;
+  const auto t = surfaces.property_map<Mesh::Vertex_index, double>("v:t").first;
+  const auto seed_id = surfaces.property_map<Mesh::Vertex_index, double>("v:seed").first;
+  std::vector<double> us, ts, ids;
   for (Mesh::Vertex_index v : surfaces.vertices()) {
     us.push_back(u[v]);
     ts.push_back(t[v]);
+    ids.push_back(seed_id[v]);
   }
   std::string error;
-  bool ok =
-      FAS::IO::write_VTP_polylines((out / (name + "_seed_curves.vtp")).string(), seed_curves, {}, {}, &error);
-  ok = ok && (surfaces.is_empty() || write_surface_VTP(out / (name + "_stream_surfaces.vtp"), surfaces,
-                                                       scene.flow, {{"u", 1, us}, {"t", 1, ts}}));
+  bool ok = write_polylines_VTP((out / (name + "_seed_curves.vtp")).string(), seed_curves,
+                                {{"r", 1, point_values}}, {{"r", 1, curve_values}}, Active_scalars{"r", "r"},
+                                &error);
+  // The flux of the stream surfaces, a check of the integration; a surface whose front tore and
+  // met itself at a vertex (non-manifold there) has none, and the rest is written all the same.
+  std::optional<FAS::Normalized_flux> surfaces_flux;
+  std::vector<FAS::IO::Data_array> surfaces_cell_data;
+  if (!surfaces.is_empty()) {
+    try {
+      surfaces_cell_data.push_back({"normalized_flux", 1, face_fluxes(surfaces, scene.flow)});
+      surfaces_flux = FAS::normalized_flux(surfaces, scene.flow);
+    } catch (const std::exception& e) {
+      std::cerr << name << ": the stream surfaces' flux is not measured: " << e.what() << "\n";
+      surfaces_cell_data.clear();
+    }
+  }
+  if (ok && !surfaces.is_empty()) {
+    std::vector<FAS::IO::Data_array> arrays{
+        {"velocity", 3, vertex_velocities(surfaces, scene.flow)}, {"u", 1, us}, {"t", 1, ts}, {"SeedIds", 1, ids}};
+    ok = write_mesh_VTP((out / (name + "_stream_surfaces.vtp")).string(), surfaces, arrays, surfaces_cell_data,
+                        Active_scalars{"t", ""}, &error);
+  }
   std::size_t number_of_lines = 0;
   if (ok && !tangential) { // seed points on the orthogonal surface seed stream lines (Figure 5)
     std::vector<Point> seed_points;
     FAS::sample_seed_points(tm, scene.size / 6, std::back_inserter(seed_points));
-    std::vector<Polyline> lines;
-    for (const Point& seed : seed_points) {
-      Polyline line;
-      FAS::integrate_streamline(
-          scene.flow, seed, std::back_inserter(line),
-          FAS::parameters::max_length(
-              2 * scene.size, FAS::parameters::integration_direction(FAS::Integration_direction::BOTH)));
-      if (line.size() > 1)
-        lines.push_back(std::move(line));
-    }
-    number_of_lines = lines.size();
-    ok = FAS::IO::write_VTP_polylines((out / (name + "_stream_lines.vtp")).string(), lines, {}, {}, &error);
+    const Stream_lines<Point> lines = integrate_stream_lines(scene.flow, seed_points, 2 * scene.size);
+    number_of_lines = lines.lines.size();
+    view.lines.push_back(to_scene_lines(lines.lines, {0.6, 0.05, 0.05}, 2));
+    ok = write_polylines_VTP((out / (name + "_stream_lines.vtp")).string(), lines.lines, lines.point_data(),
+                             lines.cell_data(), Active_scalars{"IntegrationTime", ""}, &error);
     if (ok && pictures) { // the stream lines through the seeding surface (Figure 5)
-      write_picture(out / (name + "_stream_lines.png"), tm, flux_with_polylines(tm, scene.flow, lines));
+      write_picture(out / (name + "_stream_lines.png"), tm, flux_with_polylines(tm, scene.flow, lines.lines));
     }
   }
   if (!ok) {
     std::cerr << "error: " << error << "\n";
     return false;
   }
-  std::cout << name << ": " << seed_curves.size() << " seed curves, stream surfaces of "
-            << surfaces.number_of_faces() << " triangles (flux "
-            << (surfaces.is_empty() ? FAS::Normalized_flux() : FAS::normalized_flux(surfaces, scene.flow))
-            << ")" << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
+  view.lines.push_back(to_scene_lines(seed_curves, {0.02, 0.02, 0.02}, 4));
+  if (!surfaces.is_empty()) // the stream surfaces, translucent, beyond the aligned patch
+    view.surfaces.push_back(to_scene_surface(surfaces, {}, {0.98, 0.8, 0.3}, 0.6));
+  std::cout << name << ": " << seed_curves.size() << " seed curves, " << integrated.number_of_surfaces()
+            << " distinct stream surfaces of " << surfaces.number_of_faces() << " triangles (flux "
+            << (surfaces_flux ? *surfaces_flux : FAS::Normalized_flux()) << ")" << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
             << "\n";
   if (pictures) {
     if (write_picture(out / (name + "_seed_curves.png"), tm,
@@ -232,6 +277,7 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
         largest = std::max(largest, mean);
       }
       by_time.scalar_range = {0, largest > 0 ? largest : 1};
+      by_time.scalar_bar_title = "|t| (arc length from the seed curve)";
       write_picture(out / (name + "_stream_surfaces.png"), surfaces, by_time);
     }
   }
@@ -263,12 +309,62 @@ void warn_unsampled(const std::string& name, const std::vector<FAS::Iteration_re
                "a data file, check its domain, mask array and velocity array (--array).\n";
 }
 
+// The scene picture of one alignment: the initial patch (left) beside the aligned one with its
+// seed curves, stream surfaces and stream lines (`aligned`, right), both coloured by the
+// normalized flux, with the obstacle and the outline of the domain (analytic flows: of the
+// scene), seen by the oblique camera.
+Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view aligned, const std::string& kind)
+{
+  CGAL::Bbox_3 focus = CGAL::bbox_3(initial.points().begin(), initial.points().end());
+  for (const Scene_view* view : {&aligned})
+    for (const Scene_surface& s : view->surfaces)
+      for (const auto& p : s.points)
+        focus += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+  focus = expanded(focus, 0.1);
+  // The obstacle near the scene, whole when it is not too large: where the flow is not defined.
+  // In data, inside its box (just inside: outside it the flow is not defined either, and its
+  // faces are no obstacle).
+  CGAL::Bbox_3 around = expanded(focus, 0.5);
+  if (scene.domain)
+    around = box_intersection(around, expanded(*scene.domain, -0.04));
+  Flow_domain_lattice obstacle = sample_flow_domain<Point>(scene.flow, around, 100);
+  double obstacle_y = 0, obstacle_points = 0;
+  for (std::size_t i = 0; i < obstacle.defined.size(); ++i)
+    if (obstacle.defined[i] == 0) {
+      const std::size_t nx = std::size_t(obstacle.dimensions[0]), ny = std::size_t(obstacle.dimensions[1]);
+      const double x = obstacle.origin[0] + double(i % nx) * obstacle.spacing[0],
+                   y = obstacle.origin[1] + double((i / nx) % ny) * obstacle.spacing[1],
+                   z = obstacle.origin[2] + double(i / (nx * ny)) * obstacle.spacing[2];
+      focus += CGAL::Bbox_3(x, y, z, x, y, z);
+      obstacle_y += y;
+      ++obstacle_points;
+    }
+  // Seen from the side of the initial patch, so that the obstacle does not hide it.
+  const CGAL::Bbox_3 patch = CGAL::bbox_3(initial.points().begin(), initial.points().end());
+  const double side =
+      obstacle_points > 0 && (patch.ymin() + patch.ymax()) / 2 > obstacle_y / obstacle_points ? 1 : -1;
+  if (scene.domain) // no farther than the data
+    focus = box_intersection(focus, *scene.domain);
+  const Scene_lines outline = box_outline(scene.domain ? *scene.domain : focus);
+  Scene_picture picture;
+  picture.views.push_back(
+      {{to_scene_surface(initial, face_fluxes(initial, scene.flow), {0.8, 0.8, 0.8})}, {outline}, "initial " + kind + " patch"});
+  aligned.lines.push_back(outline);
+  aligned.title = std::string(kind == "tangential" ? "grown, " : "") + "aligned, seeded";
+  picture.views.push_back(std::move(aligned));
+  picture.scalar_name = "normalized_flux";
+  picture.obstacle = std::move(obstacle);
+  picture.camera = oblique_camera(focus, 0.5 * double(picture.width) / double(picture.height), side);
+  return picture;
+}
+
 struct Run_summary {
   std::string alignment;
   std::size_t faces = 0;
   FAS::Alignment_report report;
   FAS::Normalized_flux initial_flux;
   double mean_gtransf_ms = 0, mean_solve_ms = 0;
+  Paraview_run paraview; // what open_in_paraview.py opens of this run, and its camera
 };
 
 std::optional<Run_summary> align(const std::string& flow_name, const Scene& scene, FAS::Alignment alignment,
@@ -282,6 +378,10 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
                          scene.size, faces);
   if (!write_surface(out / (name + "_initial"), tm, scene.flow))
     return std::nullopt;
+  const Mesh initial = tm;
+  // The iterations as time steps of a ParaView collection, from the initial patch on.
+  Iteration_collection collection(out, name);
+  collection.add(tm, scene.flow);
   // Pictures (PNG, through VTK) are extras: without a display the job goes on without them.
   bool pictures = write_flux_picture(out / (name + "_initial.png"), tm, scene.flow);
 
@@ -292,6 +392,7 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
       CGAL::parameters::number_of_iterations(200).visitor([&](const FAS::Iteration_report& r) {
         iterations.push_back(r);
         progress(r);
+        collection.add(tm, scene.flow);
       }));
   Run_summary summary;
   summary.alignment = name;
@@ -299,17 +400,46 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   summary.report = deformation.run();
   // The first iteration reports the flux of the surface it started from: the initial patch.
   summary.initial_flux = iterations.front().normalized_flux;
+  if (tangential) { // grown across the flow before its seed curves are taken (Figure 4, top)
+    const Growth_across_flow growth = grow_across_flow(deformation, scene.size / 2, 2);
+    if (!growth.stopped_because.empty())
+      std::cerr << name << ": not grown further across the flow: " << growth.stopped_because << "\n";
+    std::cout << name << ": grown across the flow in " << growth.number_of_steps << " steps by "
+              << growth.number_of_new_faces << " faces, realigned in " << growth.alignment.number_of_iterations
+              << " iterations\n";
+    if (growth.number_of_steps > 0) {
+      summary.report.number_of_iterations += growth.alignment.number_of_iterations;
+      summary.report.converged = growth.alignment.converged;
+      summary.report.normalized_flux = growth.alignment.normalized_flux;
+      summary.report.factor_ms += growth.alignment.factor_ms;
+    }
+  }
   for (const auto& r : iterations) {
     summary.mean_gtransf_ms += r.gradient_transformation_ms / iterations.size();
     summary.mean_solve_ms += r.solve_ms / iterations.size();
+  }
+  if (!collection.write_pvd()) {
+    std::cerr << "error: " << collection.error() << "\n";
+    return std::nullopt;
   }
   if (!write_surface(out / (name + "_aligned"), tm, scene.flow))
     return std::nullopt;
   pictures = pictures && write_flux_picture(out / (name + "_aligned.png"), tm, scene.flow);
   if (pictures && tangential) // the LIC-like texture of the stream surface (Section 6)
     write_textured_picture(out / (name + "_textured.png"), tm, scene.flow, 2 / scene.size);
-  if (!seed_and_integrate(name, tm, deformation, scene, out, pictures))
+  Scene_view aligned_view{{to_scene_surface(tm, face_fluxes(tm, scene.flow), {0.8, 0.8, 0.8})}, {}, "aligned"};
+  if (!seed_and_integrate(name, tm, deformation, scene, out, pictures, aligned_view))
     return std::nullopt;
+  const bool has_stream_surfaces = aligned_view.surfaces.size() > 1, has_stream_lines = !tangential;
+  const Scene_picture picture = scene_picture(scene, initial, aligned_view, name);
+  if (pictures) // the paper's Figures 4 and 5: the initial patch beside the aligned one and what it seeds
+    write_scene_picture(out / (name + "_scene.png"), picture);
+  // The obstacle of the picture, for ParaView (an extra, as the pictures).
+  std::string obstacle_error;
+  const bool has_obstacle = !picture.obstacle.defined.empty() &&
+                            write_obstacle_VTP(out / (name + "_obstacle.vtp"), picture, obstacle_error);
+  if (!obstacle_error.empty())
+    std::cerr << name << ": " << obstacle_error << "\n";
 
   auto csv = open_output(out / (name + "_flux.csv"));
   if (!csv)
@@ -329,7 +459,13 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     os << iterations.size() + 1 << ',' << csv_field(summary.report.normalized_flux.value) << ','
        << summary.report.normalized_flux.sampled_area_fraction << ",,,,,,,,,\n";
   }
+  summary.paraview = Paraview_run{name, picture.camera, has_stream_surfaces, has_stream_lines, has_obstacle};
   warn_unsampled(name, iterations, summary.report.normalized_flux);
+  if (!summary.report.converged)
+    std::cerr << "warning: " << name << " surface: not converged after " << summary.report.number_of_iterations
+              << " iterations (flux " << summary.report.normalized_flux
+              << "): it may still be moving or folding.  Try a smaller patch (--size), a finer one (--faces), "
+                 "or another place (--center, --normal).\n";
   std::cout << flow_name << ", " << name << ": " << summary.faces << " faces, flux " << summary.initial_flux
             << " -> " << summary.report.normalized_flux << " in " << summary.report.number_of_iterations
             << " iterations (" << (summary.report.converged ? "converged" : "not converged") << ")\n";
@@ -411,11 +547,11 @@ int main(int argc, char** argv)
   options.add_options()("faces", po::value(&faces)->default_value(faces)->value_name("N"),
                         "the number of triangles of the patch (2 to 10000000)");
   options.add_options()("center", po::value<Triple>()->value_name("X,Y,Z")->notifier(set_center),
-                        "the centre of the patch (default: the flow's own placement; with --field, the "
-                        "middle of the data's box)");
+                        "the centre of the patch (default: the flow's own placement; with --field, near "
+                        "the obstacle (where the flow is not defined) or the largest vorticity)");
   options.add_options()("normal", po::value<Triple>()->value_name("X,Y,Z")->notifier(set_normal),
                         "the normal of the patch, any length (default: the flow's own placement; with "
-                        "--field, along the flow at the centre for orthogonal, across it for tangential)");
+                        "--field, 30 degrees off the aligned orientation at the centre)");
   options.add_options()("size", po::value<Positive_number>()->value_name("S")->notifier(set_size),
                         "the side of the square patch (default: the flow's own; with --field, a quarter of "
                         "the data box's smallest side)");
@@ -425,9 +561,11 @@ int main(int argc, char** argv)
       "The package's main job: places a square patch in a flow, aligns it tangentially (a stream surface)\n"
       "and orthogonally (a seeding surface) by the Poisson-based deformation, and writes into the output\n"
       "folder, for each alignment: the initial and aligned surfaces (PLY, and VTP with the velocity and\n"
-      "the per-face normalized flux), the flux of every iteration (CSV), seed curves, stream surfaces and,\n"
-      "for the orthogonal one, stream lines (VTP), pictures (PNG, when built with VTK's rendering), and\n"
-      "summary.json (the inputs, the package's version, the results, every file written).  Progress\n"
+      "the per-face normalized flux), the iterations (a ParaView collection, .pvd), the flux of every\n"
+      "iteration (CSV), seed curves, one stream surface per distinct seed curve and, for the orthogonal\n"
+      "one, stream lines (VTP), pictures (PNG, when built with VTK's rendering: the scene of each\n"
+      "alignment, *_scene.png), open_in_paraview.py (every output in ParaView, as the pictures show it)\n"
+      "and summary.json (the inputs, the package's version, the results, every file written).  Progress\n"
       "lines (iteration, flux, elapsed time) go to standard output.  Exit status: 0 on success, 1 when\n"
       "the run fails or the output folder is refused (nothing is written then), 2 for a bad command line."};
   if (const std::optional<int> status = parse_command_line(argc, argv, help, options))
@@ -502,6 +640,15 @@ int main(int argc, char** argv)
     }
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+
+  // A pvpython script that opens every output as the pictures show it.
+  std::vector<Paraview_run> paraview_runs;
+  for (const Run_summary& r : runs)
+    paraview_runs.push_back(r.paraview);
+  if (std::string error; !write_paraview_script(out, paraview_runs, error)) {
+    std::cerr << "error: " << error << "\n";
     return 1;
   }
   if (!write_summary(out / "summary.json", inputs, flow_name, *scene, runs, folder.files()) ||

@@ -270,9 +270,12 @@ public:
         if (!options.overwrite)
           return fail("the folder is not empty (an earlier run?); give --overwrite to replace its files, "
                       "or choose another folder");
-        if (entry.is_directory())
-          return fail("the folder holds the folder " + entry.path().filename().string() +
-                      "; --overwrite replaces only a folder of files (an earlier run's output)");
+        if (entry.is_directory()) // an earlier run's folder of files (the main job's iterations)
+          for (const fs::directory_entry& inner : fs::directory_iterator(entry.path(), ec))
+            if (inner.is_directory())
+              return fail("the folder holds the folder " + inner.path().string() +
+                          "; --overwrite replaces only a folder of files and of folders of files (an "
+                          "earlier run's output)");
         empty = false;
       }
       if (ec)
@@ -331,6 +334,8 @@ public:
       for (const fs::directory_entry& entry : fs::directory_iterator(destination_, ec))
         if (!entry.is_directory())
           fs::remove(entry.path(), ec);
+        else // a folder of files (checked by open())
+          fs::remove_all(entry.path(), ec);
       for (const fs::directory_entry& entry : fs::directory_iterator(staging_, ec))
         if (!ec)
           fs::rename(entry.path(), destination_ / entry.path().filename(), ec);

@@ -20,6 +20,7 @@
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
 
 #include "surface_rendering.h"
+#include "write_polydata_VTP.h"
 #ifdef FAS_DEMO_HAVE_RENDERING
 #include "render_surface_PNG.h"
 #endif
@@ -124,16 +125,15 @@ inline std::vector<double> vertex_velocities(const Mesh& tm, const Flow& flow)
   return values;
 }
 
-/// Writes `tm` to `path` as VTP, with the velocity at the vertices, the per-face flux and the
-/// `extra` vertex arrays.
+/// Writes `tm` to `path` as VTP (binary when built with VTK, write_polydata_VTP.h), with the
+/// velocity at the vertices, the per-face flux (the active scalars) and the `extra` vertex arrays.
 inline bool write_surface_VTP(const std::filesystem::path& path, const Mesh& tm, const Flow& flow,
                               std::vector<FAS::IO::Data_array> extra = {})
 {
   std::string error;
   extra.insert(extra.begin(), {"velocity", 3, vertex_velocities(tm, flow)});
-  const bool vtp =
-      FAS::IO::write_VTP(path.string(), tm, extra, {{"normalized_flux", 1, face_fluxes(tm, flow)}},
-                         CGAL::parameters::default_values(), &error);
+  const bool vtp = write_mesh_VTP(path.string(), tm, extra, {{"normalized_flux", 1, face_fluxes(tm, flow)}},
+                                  Active_scalars{"", "normalized_flux"}, &error);
   if (!vtp)
     std::cerr << "error: " << error << "\n";
   return vtp;
@@ -149,8 +149,8 @@ inline bool write_surface(const std::filesystem::path& stem, const Mesh& tm, con
   return write_surface_VTP(stem.string() + ".vtp", tm, flow);
 }
 
-/// Renders `what` of `tm` into the PNG `path`, seen along the surface's mean normal unless `what`
-/// has a camera; prints why and returns false when it cannot (no
+/// Renders `what` of `tm` into the PNG `path`, seen obliquely (50 degrees off the surface's mean
+/// normal) unless `what` has a camera; prints why and returns false when it cannot (no
 /// VTK rendering in the build, no display): the other files of a program do not depend on it.
 inline bool write_picture(const std::filesystem::path& path, const Mesh& tm, const Surface_rendering& what)
 {
@@ -178,8 +178,15 @@ inline bool write_picture(const std::filesystem::path& path, const Mesh& tm, con
     const double length = std::sqrt(normal.squared_length());
     if (area > 0 && length > 1e-3 * area) { // a surface that faces some way (not a closed one)
       const Point center = CGAL::ORIGIN + sum / area;
-      const Point eye = center + (2 * diagonal / length) * normal;
       const Vector up = std::abs(normal.z()) < 0.9 * length ? Vector(0, 0, 1) : Vector(0, 1, 0);
+      // Oblique: 50 degrees off the normal, about the picture's vertical and towards the top, so
+      // that a bent surface shows its bending instead of its face.
+      const Vector n = normal / length;
+      Vector side = CGAL::cross_product(up, n);
+      side = side / std::sqrt(side.squared_length());
+      const double off = 50 * CGAL_PI / 180;
+      const Vector direction = std::cos(off) * n + std::sin(off) * (0.8 * side + 0.6 * up);
+      const Point eye = center + 2 * diagonal * direction / std::sqrt(direction.squared_length());
       facing.camera = Render_camera{
           {eye.x(), eye.y(), eye.z()}, {center.x(), center.y(), center.z()}, {up.x(), up.y(), up.z()}, 0, 30};
     }
@@ -203,6 +210,7 @@ inline Surface_rendering flux_with_polylines(const Mesh& tm, const Flow& flow,
 {
   Surface_rendering what;
   what.face_scalars = face_fluxes(tm, flow);
+  what.scalar_bar_title = "normalized_flux";
   for (const std::vector<Point>& line : lines) {
     what.polylines.emplace_back();
     for (const Point& p : line)

@@ -19,7 +19,9 @@
 
 #include "surface_rendering.h"
 #include "virtual_display.h"
+#include "vtk_polydata_of_mesh.h"
 
+#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -44,6 +46,8 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextProperty.h>
 #include <vtkSmartPointer.h>
 #include <vtkTexture.h>
 #include <vtkUnsignedCharArray.h>
@@ -61,6 +65,7 @@
 #include <vector>
 
 VTK_MODULE_INIT(vtkRenderingOpenGL2)
+VTK_MODULE_INIT(vtkRenderingFreeType)
 
 namespace fas_demo {
 
@@ -93,6 +98,35 @@ inline vtkSmartPointer<vtkImageData> make_vtk_image(const CGAL::Flow_aligned_sur
   for (std::size_t i = 0; i < t.pixels.size(); ++i) // VTK's rows run bottom up too
     bytes[i] = (unsigned char)std::lround(255 * std::clamp(std::isnan(t.pixels[i]) ? 0.0f : t.pixels[i], 0.0f, 1.0f));
   return image;
+}
+
+// Writes what `window` shows to `filename` as PNG, beside it first and renamed over it when
+// complete, so that a reader never sees half a picture; `reason` says why not.
+inline bool write_window_PNG(vtkRenderWindow* window, const std::string& filename, std::string& reason)
+{
+  const auto fail = [&](const std::string& why) {
+    reason = why;
+    return false;
+  };
+  auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto png = vtkSmartPointer<vtkPNGWriter>::New();
+  png->SetInputConnection(grab->GetOutputPort());
+  png->WriteToMemoryOn();
+  png->Write();
+  vtkUnsignedCharArray* encoded = png->GetResult();
+  if (encoded == nullptr || encoded->GetNumberOfValues() == 0)
+    return fail("VTK's PNG writer produced nothing");
+  // Written beside `filename` and renamed over it, so that a reader never sees half a picture.
+  std::string why;
+  if (!CGAL::Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, why, [&](std::ostream& os) {
+        os.write(reinterpret_cast<const char*>(encoded->GetPointer(0)),
+                 std::streamsize(encoded->GetNumberOfValues()));
+      }))
+    return fail("cannot write the picture: " + why);
+  return true;
 }
 
 } // namespace detail
@@ -155,24 +189,9 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
                                     get_const_property_map(CGAL::vertex_point, tm));
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(vtkIdType(nv));
-  for (auto v : vertices(tm)) {
-    const auto& p = get(vpm, v);
-    points->SetPoint(vtkIdType(get(vim, v)), CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                     CGAL::to_double(p.z()));
-  }
-  std::vector<std::vector<vtkIdType>> face_vertices(nf);
-  for (auto f : faces(tm))
-    for (auto v : vertices_around_face(halfedge(f, tm), tm))
-      face_vertices[get(fim, f)].push_back(vtkIdType(get(vim, v)));
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& fv : face_vertices)
-    polys->InsertNextCell(vtkIdType(fv.size()), fv.data());
-  auto surface = vtkSmartPointer<vtkPolyData>::New();
-  surface->SetPoints(points);
-  surface->SetPolys(polys);
+  const vtkSmartPointer<vtkPolyData> surface = vtk_polydata_of_mesh(tm, vpm, vim, fim);
+  vtkPoints* points = surface->GetPoints();
+  vtkCellArray* polys = surface->GetPolys();
 
   auto renderer = vtkSmartPointer<vtkRenderer>::New();
   renderer->SetBackground(what.background[0], what.background[1], what.background[2]);
@@ -243,6 +262,23 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
     mapper->UseLookupTableScalarRangeOn();
     mapper->SetScalarModeToUseCellData();
     mapper->ScalarVisibilityOn();
+    if (!what.scalar_bar_title.empty()) {
+      auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
+      bar->SetLookupTable(table);
+      bar->SetTitle(what.scalar_bar_title.c_str());
+      bar->SetNumberOfLabels(5);
+      bar->SetOrientationToHorizontal();
+      bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+      bar->GetPositionCoordinate()->SetValue(0.5, 0.02);
+      bar->SetWidth(0.46);
+      bar->SetHeight(0.13);
+      for (vtkTextProperty* text : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
+        text->SetColor(0.1, 0.1, 0.1);
+        text->ShadowOff();
+        text->ItalicOff();
+      }
+      renderer->AddActor2D(bar);
+    }
   }
   else
     actor->GetProperty()->SetColor(0.85, 0.85, 0.85);
@@ -295,34 +331,8 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
   window->AddRenderer(renderer);
   window->SetSize(int(what.width), int(what.height));
   window->Render();
-  auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  auto png = vtkSmartPointer<vtkPNGWriter>::New();
-  png->SetInputConnection(grab->GetOutputPort());
-  png->WriteToMemoryOn();
-  png->Write();
-  vtkUnsignedCharArray* encoded = png->GetResult();
-  if (encoded == nullptr || encoded->GetNumberOfValues() == 0)
-    return fail("VTK's PNG writer produced nothing");
-  // Written beside `filename` and renamed over it, so that a reader never sees half a picture.
-  const std::string partial = filename + ".partial";
-  {
-    std::ofstream os(partial, std::ios::binary | std::ios::trunc);
-    os.write(reinterpret_cast<const char*>(encoded->GetPointer(0)),
-             std::streamsize(encoded->GetNumberOfValues()));
-    if (!os.flush()) {
-      std::remove(partial.c_str());
-      return fail("cannot write " + partial);
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(partial, filename, ec);
-  if (ec) {
-    std::remove(partial.c_str());
-    return fail("cannot rename " + partial + ": " + ec.message());
-  }
+  if (!detail::write_window_PNG(window, filename, reason))
+    return fail(reason);
   return true;
 }
 

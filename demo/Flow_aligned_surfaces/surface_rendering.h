@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace fas_demo {
@@ -38,6 +39,8 @@ struct Surface_rendering {
   /// -1 of `compute_face_normalized_flux()`).  Ignored when `texture` is set.
   std::vector<double> face_scalars;
   std::array<double, 2> scalar_range{0, 1}; ///< the values of the two ends of the colour map
+  /// The name of what `face_scalars` holds: a colour bar with this title is drawn (empty: none).
+  std::string scalar_bar_title;
   /// The texture, with one (u, v) per vertex in `texture_coordinates` (order of the
   /// vertex index map; non-finite ones are drawn as (0, 0) and should be masked).
   const CGAL::Flow_aligned_surfaces::Texture_image* texture = nullptr;

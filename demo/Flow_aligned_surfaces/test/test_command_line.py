@@ -168,7 +168,9 @@ def check_summary(align_patch, version):
         missing = [f for f in files if not os.path.isfile(os.path.join(out, f))]
         if missing:
             fail(f"summary.json lists files that do not exist: {missing}")
-        written = sorted(os.listdir(out))
+        # Every file, those of subfolders (the main job's iterations) as relative paths.
+        written = sorted(os.path.relpath(os.path.join(d, f), out).replace(os.sep, "/")
+                         for d, _, names in os.walk(out) for f in names)
         if sorted(files) != written:
             fail(f"summary.json lists {sorted(files)}, the folder holds {written}")
         for name in ["summary.json", "tangential_aligned.vtp", "orthogonal_flux.csv"]:

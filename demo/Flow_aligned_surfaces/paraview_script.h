@@ -1,0 +1,170 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The pvpython script the main job writes beside its outputs, open_in_paraview.py: it opens
+// every output (the initial and aligned surfaces, the seed curves, stream surfaces and stream
+// lines, the obstacle, and the collection of the iterations, NAME_iterations.pvd) in one render view per
+// alignment, with the colouring and the camera of the scene pictures (render_scene_PNG.h):
+// surfaces by `normalized_flux` blue to red over [0, 1] with a colour bar, seed curves black,
+// stream surfaces translucent yellow, stream lines dark red, the obstacle grey; the initial surface and the
+// iterations are opened hidden (eye icon in the Pipeline Browser; the iterations animate with
+// the time controls).  Paths are relative to the script, so the folder can be moved.
+//
+//   paraview --script=open_in_paraview.py            (the GUI)
+//   pvbatch open_in_paraview.py --screenshot PREFIX  (PREFIX_NAME.png per view, then exits)
+
+#ifndef FAS_DEMO_PARAVIEW_SCRIPT_H
+#define FAS_DEMO_PARAVIEW_SCRIPT_H
+
+#include "surface_rendering.h"
+
+#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fas_demo {
+
+/// One alignment's outputs for the script: NAME_initial.vtp, NAME_aligned.vtp,
+/// NAME_seed_curves.vtp, NAME_iterations.pvd, and the optional ones.
+struct Paraview_run {
+  std::string name; ///< "tangential" or "orthogonal"
+  Render_camera camera;
+  bool stream_surfaces = false; ///< NAME_stream_surfaces.vtp was written
+  bool stream_lines = false;    ///< NAME_stream_lines.vtp was written
+  bool obstacle = false;        ///< NAME_obstacle.vtp was written
+};
+
+namespace detail {
+
+inline std::string python_triple(const std::array<double, 3>& v)
+{
+  std::ostringstream os;
+  os.precision(17);
+  os << '[' << v[0] << ", " << v[1] << ", " << v[2] << ']';
+  return os.str();
+}
+
+} // namespace detail
+
+/// Writes `out`/open_in_paraview.py for `runs` (beside it first, then renamed); `error` says
+/// why not.
+inline bool write_paraview_script(const std::filesystem::path& out, const std::vector<Paraview_run>& runs,
+                                  std::string& error)
+{
+  std::ostringstream py;
+  py << R"(# Opens the outputs of the Flow_aligned_surfaces main job in ParaView with the colouring and
+# the camera of its pictures (*_scene.png), one render view per alignment.  Written by align_patch.
+#   paraview --script=open_in_paraview.py
+#   pvbatch open_in_paraview.py --screenshot PREFIX    (writes PREFIX_<alignment>.png and exits)
+import os
+import sys
+
+from paraview.simple import *
+
+here = os.path.dirname(os.path.abspath(__file__))
+runs = [
+)";
+  for (const Paraview_run& r : runs)
+    py << "    {'name': '" << r.name << "', 'position': " << detail::python_triple(r.camera.position)
+       << ", 'focal_point': " << detail::python_triple(r.camera.focal_point)
+       << ", 'view_up': " << detail::python_triple(r.camera.view_up) << ", 'view_angle': " << r.camera.view_angle
+       << ", 'stream_surfaces': " << (r.stream_surfaces ? "True" : "False")
+       << ", 'stream_lines': " << (r.stream_lines ? "True" : "False")
+       << ", 'obstacle': " << (r.obstacle ? "True" : "False") << "},\n";
+  py << R"(]
+screenshot = sys.argv[sys.argv.index('--screenshot') + 1] if '--screenshot' in sys.argv else None
+
+flux = GetColorTransferFunction('normalized_flux')
+flux.ApplyPreset('Blue to Red Rainbow', True)
+flux.RescaleTransferFunction(0.0, 1.0)
+flux.AutomaticRescaleRangeMode = 'Never'
+flux.NanColor = [0.6, 0.6, 0.6]
+
+
+def open_vtp(name, view, visible=True):
+    source = XMLPolyDataReader(registrationName=name, FileName=[os.path.join(here, name + '.vtp')])
+    display = Show(source, view)
+    if not visible:
+        Hide(source, view)
+    return source, display
+
+
+def colour_by_flux(display, view):
+    ColorBy(display, ('CELLS', 'normalized_flux'))
+    display.LookupTable = flux
+    display.SetScalarBarVisibility(view, True)
+
+
+views = []
+for run in runs:
+    name = run['name']
+    view = CreateView('RenderView')
+    view.ViewSize = [1200, 800]
+    view.OrientationAxesVisibility = 1
+    view.UseColorPaletteForBackground = 0
+    view.Background = [1.0, 1.0, 1.0]
+    AssignViewToLayout(view)
+    views.append(view)
+
+    _, initial = open_vtp(name + '_initial', view, visible=False)
+    colour_by_flux(initial, view)
+    _, aligned = open_vtp(name + '_aligned', view)
+    colour_by_flux(aligned, view)
+    _, curves = open_vtp(name + '_seed_curves', view)
+    ColorBy(curves, None)
+    curves.AmbientColor = curves.DiffuseColor = [0.02, 0.02, 0.02]
+    curves.LineWidth = 4.0
+    if run['stream_surfaces']:
+        _, surfaces = open_vtp(name + '_stream_surfaces', view)
+        ColorBy(surfaces, None)
+        surfaces.AmbientColor = surfaces.DiffuseColor = [0.98, 0.8, 0.3]
+        surfaces.Opacity = 0.6
+    if run['stream_lines']:
+        _, lines = open_vtp(name + '_stream_lines', view)
+        ColorBy(lines, None)
+        lines.AmbientColor = lines.DiffuseColor = [0.6, 0.05, 0.05]
+        lines.LineWidth = 2.0
+    if run['obstacle']:
+        _, obstacle = open_vtp(name + '_obstacle', view)
+        obstacle.ColorArrayName = ['POINTS', '']  # (only normals: ColorBy(None) refuses it)
+        obstacle.AmbientColor = obstacle.DiffuseColor = [0.72, 0.72, 0.76]
+    iterations = PVDReader(registrationName=name + '_iterations',
+                           FileName=os.path.join(here, name + '_iterations.pvd'))
+    colour_by_flux(Show(iterations, view), view)
+    Hide(iterations, view)
+
+    bar = GetScalarBar(flux, view)
+    bar.Title = 'normalized_flux'
+    bar.ComponentTitle = ''
+    bar.TitleColor = bar.LabelColor = [0.1, 0.1, 0.1]
+
+    flux.RescaleTransferFunction(0.0, 1.0)  # Show rescaled it to the data
+    Render(view)  # the first render resets the camera: set it afterwards
+    view.CameraPosition = run['position']
+    view.CameraFocalPoint = run['focal_point']
+    view.CameraViewUp = run['view_up']
+    view.CameraViewAngle = run['view_angle']
+    view.CameraParallelProjection = 0
+    Render(view)
+    if screenshot:
+        SaveScreenshot(screenshot + '_' + name + '.png', view, ImageResolution=[1200, 800])
+
+if screenshot:  # pvbatch: a live view at exit ends in GLXBadContext
+    for view in views:
+        Delete(view)
+)";
+  const std::string path = (out / "open_in_paraview.py").string();
+  std::string reason;
+  if (CGAL::Flow_aligned_surfaces::IO::internal::write_file_atomically(
+          path, reason, [&](std::ostream& os) { os << py.str(); }))
+    return true;
+  error = "cannot write " + path + ": " + reason;
+  return false;
+}
+
+} // namespace fas_demo
+
+#endif // FAS_DEMO_PARAVIEW_SCRIPT_H

@@ -1,0 +1,272 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The demo's scene pictures (scene_rendering.h) through VTK's OpenGL renderer, off screen, as
+// PNG: each view in its own viewport side by side under the same camera, lit by a light kit
+// (key, fill and back lights, as ParaView's default), with specular highlights; the surfaces with
+// face scalars coloured blue to red with a colour bar titled by the array's name; the obstacle
+// as VTK's flying-edges contour of where the flow is defined.  Needs the demo's CMake target
+// fas_demo_rendering; the display and the PNG writing are those of render_surface_PNG.h.
+
+#ifndef FAS_DEMO_RENDER_SCENE_PNG_H
+#define FAS_DEMO_RENDER_SCENE_PNG_H
+
+#include "render_surface_PNG.h"
+#include "scene_rendering.h"
+
+#include <vtkActor.h>
+#include <vtkAutoInit.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFlyingEdges3D.h>
+#include <vtkImageData.h>
+#include <vtkLightKit.h>
+#include <vtkLookupTable.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <cmath>
+#include <string>
+
+
+namespace fas_demo {
+
+namespace detail {
+
+inline vtkSmartPointer<vtkLookupTable> make_blue_to_red(const std::array<double, 2>& range)
+{
+  auto table = vtkSmartPointer<vtkLookupTable>::New();
+  table->SetHueRange(0.667, 0.0);
+  table->SetTableRange(range[0], range[1]);
+  table->SetBelowRangeColor(0.6, 0.6, 0.6, 1);
+  table->UseBelowRangeColorOn();
+  table->Build();
+  return table;
+}
+
+inline vtkSmartPointer<vtkActor> make_scene_surface_actor(const Scene_surface& s, vtkLookupTable* table)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  for (const auto& p : s.points)
+    points->InsertNextPoint(p.data());
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& t : s.triangles) {
+    const vtkIdType ids[3] = {vtkIdType(t[0]), vtkIdType(t[1]), vtkIdType(t[2])};
+    polys->InsertNextCell(3, ids);
+  }
+  auto polydata = vtkSmartPointer<vtkPolyData>::New();
+  polydata->SetPoints(points);
+  polydata->SetPolys(polys);
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->ScalarVisibilityOff();
+  if (s.face_scalars.size() == s.triangles.size() && !s.face_scalars.empty()) {
+    auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
+    scalars->SetNumberOfTuples(vtkIdType(s.face_scalars.size()));
+    for (std::size_t j = 0; j < s.face_scalars.size(); ++j)
+      scalars->SetValue(vtkIdType(j), std::isfinite(s.face_scalars[j]) && s.face_scalars[j] >= 0
+                                          ? s.face_scalars[j]
+                                          : -1e300);
+    polydata->GetCellData()->SetScalars(scalars);
+    mapper->SetLookupTable(table);
+    mapper->UseLookupTableScalarRangeOn();
+    mapper->SetScalarModeToUseCellData();
+    mapper->ScalarVisibilityOn();
+  }
+  // Smooth shading: point normals (flat faces, unconnected sides, consistent orientation).
+  auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
+  normals->SetInputData(polydata);
+  normals->SplittingOff();
+  normals->ConsistencyOn();
+  normals->Update();
+  mapper->SetInputConnection(normals->GetOutputPort());
+  if (s.opacity < 1) { // behind an opaque surface it coincides with (a stream surface through its seeding surface)
+    mapper->SetResolveCoincidentTopologyToPolygonOffset();
+    mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(2, 2);
+  }
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  vtkProperty* property = actor->GetProperty();
+  property->SetColor(s.color[0], s.color[1], s.color[2]);
+  property->SetOpacity(s.opacity);
+  property->SetAmbient(0.2);
+  property->SetDiffuse(0.8);
+  property->SetSpecular(0.25);
+  property->SetSpecularPower(30);
+  if (s.edges) {
+    property->EdgeVisibilityOn();
+    property->SetEdgeColor(0.3, 0.3, 0.3);
+  }
+  return actor;
+}
+
+inline vtkSmartPointer<vtkActor> make_scene_lines_actor(const Scene_lines& l)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& polyline : l.polylines) {
+    std::vector<vtkIdType> ids;
+    for (const auto& p : polyline)
+      ids.push_back(points->InsertNextPoint(p.data()));
+    if (ids.size() >= 2)
+      lines->InsertNextCell(vtkIdType(ids.size()), ids.data());
+  }
+  auto polydata = vtkSmartPointer<vtkPolyData>::New();
+  polydata->SetPoints(points);
+  polydata->SetLines(lines);
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(polydata);
+  mapper->ScalarVisibilityOff();
+  mapper->SetResolveCoincidentTopologyToPolygonOffset();
+  mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-4, -4);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(l.color[0], l.color[1], l.color[2]);
+  actor->GetProperty()->SetLineWidth(float(l.width));
+  actor->GetProperty()->LightingOff();
+  return actor;
+}
+
+} // namespace detail
+
+/// The obstacle of a scene: the contour at 1/2 of where the flow is defined on `lattice`
+/// (VTK's flying edges, with normals).
+inline vtkSmartPointer<vtkPolyData> obstacle_polydata(const Flow_domain_lattice& lattice)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetOrigin(lattice.origin.data());
+  image->SetSpacing(lattice.spacing.data());
+  image->SetDimensions(lattice.dimensions[0], lattice.dimensions[1], lattice.dimensions[2]);
+  auto values = vtkSmartPointer<vtkDoubleArray>::New();
+  values->SetName("defined");
+  values->SetNumberOfTuples(vtkIdType(lattice.defined.size()));
+  for (std::size_t i = 0; i < lattice.defined.size(); ++i)
+    values->SetValue(vtkIdType(i), lattice.defined[i]);
+  image->GetPointData()->SetScalars(values);
+  auto contour = vtkSmartPointer<vtkFlyingEdges3D>::New();
+  contour->SetInputData(image);
+  contour->SetValue(0, 0.5);
+  contour->ComputeNormalsOn();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  return contour->GetOutput();
+}
+
+namespace detail {
+
+inline vtkSmartPointer<vtkActor> make_obstacle_actor(const Flow_domain_lattice& lattice,
+                                                     const std::array<double, 3>& color)
+{
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(obstacle_polydata(lattice));
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+  actor->GetProperty()->SetSpecular(0.3);
+  actor->GetProperty()->SetSpecularPower(20);
+  return actor;
+}
+
+} // namespace detail
+
+/// Renders `picture` (scene_rendering.h) off screen and writes it to `filename` as PNG; returns
+/// false with the reason in `error` (no display, sizes out of range, a write failure).
+inline bool render_scene_PNG(const std::string& filename, const Scene_picture& picture, std::string* error)
+{
+  const auto fail = [&](const std::string& reason) {
+    if (error)
+      *error = "render_scene_PNG: " + filename + ": " + reason;
+    return false;
+  };
+  if (picture.views.empty() || picture.width == 0 || picture.height == 0 || picture.width > 16384 ||
+      picture.height > 16384)
+    return fail("no view, or a size outside [1, 16384]");
+  const auto& lattice = picture.obstacle;
+  if (std::size_t(std::max(0, lattice.dimensions[0])) * std::size_t(std::max(0, lattice.dimensions[1])) *
+          std::size_t(std::max(0, lattice.dimensions[2])) !=
+      lattice.defined.size())
+    return fail("the obstacle's lattice has " + std::to_string(lattice.defined.size()) +
+                " values for its dimensions");
+  std::string reason;
+  if (!ensure_display(reason))
+    return fail(reason);
+
+  const auto table = detail::make_blue_to_red(picture.scalar_range);
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0); // depth peeling (translucent surfaces) needs it off; FXAA smooths the edges
+  window->SetSize(int(picture.width), int(picture.height));
+  const double n = double(picture.views.size());
+  for (std::size_t i = 0; i < picture.views.size(); ++i) {
+    const Scene_view& view = picture.views[i];
+    auto renderer = vtkSmartPointer<vtkRenderer>::New();
+    renderer->SetViewport(i / n, 0, (i + 1) / n, 1);
+    renderer->SetBackground(picture.background[0], picture.background[1], picture.background[2]);
+    renderer->SetUseDepthPeeling(1);
+    renderer->SetMaximumNumberOfPeels(8);
+    renderer->UseFXAAOn();
+    for (const Scene_surface& s : view.surfaces)
+      renderer->AddActor(detail::make_scene_surface_actor(s, table));
+    for (const Scene_lines& l : view.lines)
+      renderer->AddActor(detail::make_scene_lines_actor(l));
+    if (!lattice.defined.empty())
+      renderer->AddActor(detail::make_obstacle_actor(lattice, picture.obstacle_color));
+    if (!view.title.empty()) {
+      auto title = vtkSmartPointer<vtkTextActor>::New();
+      title->SetInput(view.title.c_str());
+      title->GetTextProperty()->SetFontSize(int(picture.height / 32));
+      title->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+      title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+      title->GetPositionCoordinate()->SetValue(0.03, 0.93);
+      renderer->AddActor2D(title);
+    }
+    if (!picture.scalar_name.empty() && i + 1 == picture.views.size()) {
+      auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
+      bar->SetLookupTable(table);
+      bar->SetTitle(picture.scalar_name.c_str());
+      bar->SetNumberOfLabels(5);
+      bar->SetOrientationToHorizontal();
+      bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+      bar->GetPositionCoordinate()->SetValue(0.55, 0.02);
+      bar->SetWidth(0.42);
+      bar->SetHeight(0.12);
+      for (vtkTextProperty* text : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
+        text->SetColor(0.1, 0.1, 0.1);
+        text->ShadowOff();
+        text->ItalicOff();
+      }
+      renderer->AddActor2D(bar);
+    }
+    auto lights = vtkSmartPointer<vtkLightKit>::New();
+    lights->AddLightsToRenderer(renderer);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetPosition(picture.camera.position.data());
+    camera->SetFocalPoint(picture.camera.focal_point.data());
+    camera->SetViewUp(picture.camera.view_up.data());
+    camera->OrthogonalizeViewUp();
+    camera->SetViewAngle(picture.camera.view_angle);
+    renderer->ResetCameraClippingRange();
+    window->AddRenderer(renderer);
+  }
+  window->Render();
+  if (!detail::write_window_PNG(window, filename, reason))
+    return fail(reason);
+  return true;
+}
+
+} // namespace fas_demo
+
+#endif // FAS_DEMO_RENDER_SCENE_PNG_H
