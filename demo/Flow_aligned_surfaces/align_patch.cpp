@@ -345,7 +345,11 @@ Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view 
       obstacle_points > 0 && (patch.ymin() + patch.ymax()) / 2 > obstacle_y / obstacle_points ? 1 : -1;
   if (scene.domain) // no farther than the data
     focus = box_intersection(focus, *scene.domain);
-  const Scene_lines outline = box_outline(scene.domain ? *scene.domain : focus);
+  // The domain's outline where the view shows it: a domain much larger than the scene (a
+  // channel around its obstacle) would draw edges across the whole picture, so it is cut at a
+  // margin around the scene (its walls near the scene stay where they are).
+  const Scene_lines outline =
+    box_outline(scene.domain ? box_intersection(*scene.domain, expanded(focus, 0.15)) : focus);
   Scene_picture picture;
   picture.views.push_back(
       {{to_scene_surface(initial, face_fluxes(initial, scene.flow), {0.8, 0.8, 0.8})}, {outline}, "initial " + kind + " patch"});
