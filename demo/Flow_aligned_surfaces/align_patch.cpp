@@ -262,9 +262,9 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
     view.surfaces.push_back(to_scene_surface(surfaces, {}, {0.98, 0.8, 0.3}, 0.6));
   if (tangential && pictures && !surfaces.is_empty()) {
     // The paper's Figure 8: the stream surface with the LIC-like texture of its own tangential
-    // parametrization (8 repeats of the texture along the flow), masked where grad r leaves it.
+    // parametrization (3 repeats of the texture along the flow), masked where grad r leaves it.
     try {
-      Flow_texture_of_mesh texture = flow_texture_of_mesh(surfaces, scene.flow, -8);
+      Flow_texture_of_mesh texture = flow_texture_of_mesh(surfaces, scene.flow, -3);
       Scene_surface textured = to_scene_surface(surfaces, {}, {1, 1, 1});
       textured.texture = std::make_shared<const FAS::Texture_image>(std::move(texture.texture));
       textured.texture_coordinates = std::move(texture.texture_coordinates);
