@@ -53,6 +53,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -181,7 +182,8 @@ using Polyline = std::vector<Point>;
 // Returns false when a file cannot be written.
 bool seed_and_integrate(const std::string& name, Mesh& tm,
                         const FAS::Flow_aligned_deformation<Mesh, Flow>& deformation, const Scene& scene,
-                        const std::filesystem::path& out, bool pictures, Scene_view& view)
+                        const std::filesystem::path& out, bool pictures, Scene_view& view,
+                        std::optional<Scene_view>& textured_view)
 {
   const bool tangential = deformation.alignment() == FAS::Alignment::TANGENTIAL;
   auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
@@ -258,6 +260,20 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
   view.lines.push_back(to_scene_lines(seed_curves, {0.02, 0.02, 0.02}, 4));
   if (!surfaces.is_empty()) // the stream surfaces, translucent, beyond the aligned patch
     view.surfaces.push_back(to_scene_surface(surfaces, {}, {0.98, 0.8, 0.3}, 0.6));
+  if (tangential && pictures && !surfaces.is_empty()) {
+    // The paper's Figure 8: the stream surface with the LIC-like texture of its own tangential
+    // parametrization (3 repeats of the texture along the flow), masked where grad r leaves it.
+    try {
+      Flow_texture_of_mesh texture = flow_texture_of_mesh(surfaces, scene.flow, -3);
+      Scene_surface textured = to_scene_surface(surfaces, {}, {1, 1, 1});
+      textured.texture = std::make_shared<const FAS::Texture_image>(std::move(texture.texture));
+      textured.texture_coordinates = std::move(texture.texture_coordinates);
+      textured.face_mask = std::move(texture.face_mask);
+      textured_view = Scene_view{{std::move(textured)}, {}, "stream surface, LIC-like texture"};
+    } catch (const std::exception& e) {
+      std::cerr << name << ": the stream surface is drawn without its texture: " << e.what() << "\n";
+    }
+  }
   std::cout << name << ": " << seed_curves.size() << " seed curves, " << integrated.number_of_surfaces()
             << " distinct stream surfaces of " << surfaces.number_of_faces() << " triangles (flux "
             << (surfaces_flux ? *surfaces_flux : FAS::Normalized_flux()) << ")" << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
@@ -313,7 +329,8 @@ void warn_unsampled(const std::string& name, const std::vector<FAS::Iteration_re
 // seed curves, stream surfaces and stream lines (`aligned`, right), both coloured by the
 // normalized flux, with the obstacle and the outline of the domain (analytic flows: of the
 // scene), seen by the oblique camera.
-Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view aligned, const std::string& kind)
+Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view aligned, const std::string& kind,
+                            std::optional<Scene_view> textured)
 {
   CGAL::Bbox_3 focus = CGAL::bbox_3(initial.points().begin(), initial.points().end());
   for (const Scene_view* view : {&aligned})
@@ -356,9 +373,15 @@ Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view 
   aligned.lines.push_back(outline);
   aligned.title = std::string(kind == "tangential" ? "grown, " : "") + "aligned, seeded";
   picture.views.push_back(std::move(aligned));
+  if (textured) { // a third view: the stream surface textured (the paper's Figure 8)
+    textured->lines.push_back(outline);
+    picture.views.push_back(std::move(*textured));
+    picture.width = 1800;
+  }
   picture.scalar_name = "normalized_flux";
   picture.obstacle = std::move(obstacle);
-  picture.camera = oblique_camera(focus, 0.5 * double(picture.width) / double(picture.height), side);
+  picture.camera =
+    oblique_camera(focus, double(picture.width) / double(picture.views.size()) / double(picture.height), side);
   return picture;
 }
 
@@ -432,10 +455,11 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   if (pictures && tangential) // the LIC-like texture of the stream surface (Section 6)
     write_textured_picture(out / (name + "_textured.png"), tm, scene.flow, 2 / scene.size);
   Scene_view aligned_view{{to_scene_surface(tm, face_fluxes(tm, scene.flow), {0.8, 0.8, 0.8})}, {}, "aligned"};
-  if (!seed_and_integrate(name, tm, deformation, scene, out, pictures, aligned_view))
+  std::optional<Scene_view> textured_view;
+  if (!seed_and_integrate(name, tm, deformation, scene, out, pictures, aligned_view, textured_view))
     return std::nullopt;
   const bool has_stream_surfaces = aligned_view.surfaces.size() > 1, has_stream_lines = !tangential;
-  const Scene_picture picture = scene_picture(scene, initial, aligned_view, name);
+  const Scene_picture picture = scene_picture(scene, initial, aligned_view, name, std::move(textured_view));
   if (pictures) // the paper's Figures 4 and 5: the initial patch beside the aligned one and what it seeds
     write_scene_picture(out / (name + "_scene.png"), picture);
   // The obstacle of the picture, for ParaView (an extra, as the pictures).

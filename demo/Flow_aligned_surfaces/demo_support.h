@@ -28,7 +28,9 @@
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -226,10 +228,19 @@ inline bool write_flux_picture(const std::filesystem::path& path, const Mesh& tm
   return write_picture(path, tm, flux_with_polylines(tm, flow, {}));
 }
 
-/// The picture of a stream surface `tm` with the LIC-like texture of its unnormalized tangential
-/// parametrization (`scale` texture repeats per unit of r), masked where grad r leaves the flow.
-inline bool write_textured_picture(const std::filesystem::path& path, const Mesh& tm, const Flow& flow,
-                                   double scale)
+/// The LIC-like texture of the paper's Section 6 on a stream surface: the noise texture, mapped by
+/// the surface's unnormalized tangential parametrization r, s (texture coordinates per vertex, in
+/// vertex index order) and blended to its mean colour by the mask b per face (face index order).
+struct Flow_texture_of_mesh {
+  FAS::Texture_image texture = FAS::make_noise_texture(128, 128, 24, 1);
+  std::vector<std::array<double, 2>> texture_coordinates;
+  std::vector<double> face_mask;
+};
+
+/// The flow texture of `tm` in `flow` with `scale` texture repeats per unit of r, or, when `scale`
+/// is not positive, -`scale` repeats over the range of r.  \throws what
+/// `parametrize_tangential()` throws (no usable flow on the surface).
+inline Flow_texture_of_mesh flow_texture_of_mesh(const Mesh& tm, const Flow& flow, double scale)
 {
   Mesh copy = tm;
   auto r = copy.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
@@ -237,16 +248,40 @@ inline bool write_textured_picture(const std::filesystem::path& path, const Mesh
   auto uv = copy.add_property_map<Mesh::Vertex_index, std::array<double, 2>>("v:uv").first;
   auto mask = copy.add_property_map<Mesh::Face_index, double>("f:mask", 1).first;
   FAS::parametrize_tangential(copy, flow, r, s, FAS::parameters::normalized(false));
+  if (!(scale > 0)) {
+    double lo = 0, hi = 0;
+    bool first = true;
+    for (auto v : copy.vertices())
+      if (std::isfinite(r[v])) {
+        lo = first ? r[v] : std::min(lo, r[v]);
+        hi = first ? r[v] : std::max(hi, r[v]);
+        first = false;
+      }
+    scale = hi > lo ? -scale / (hi - lo) : 1;
+  }
   FAS::compute_flow_texture_coordinates(copy, r, s, uv, scale);
   FAS::compute_flow_texture_mask(copy, flow, r, mask);
-  const FAS::Texture_image noise = FAS::make_noise_texture(128, 128, 24, 1);
-  Surface_rendering what;
-  what.texture = &noise;
+  Flow_texture_of_mesh result;
+  result.texture_coordinates.resize(copy.number_of_vertices());
+  result.face_mask.resize(copy.number_of_faces());
   for (auto v : copy.vertices())
-    what.texture_coordinates.push_back(uv[v]);
+    result.texture_coordinates[v.idx()] = uv[v];
   for (auto f : copy.faces())
-    what.face_mask.push_back(mask[f]);
-  return write_picture(path, copy, what);
+    result.face_mask[f.idx()] = mask[f];
+  return result;
+}
+
+/// The picture of a stream surface `tm` with the LIC-like texture of its unnormalized tangential
+/// parametrization (`scale` texture repeats per unit of r), masked where grad r leaves the flow.
+inline bool write_textured_picture(const std::filesystem::path& path, const Mesh& tm, const Flow& flow,
+                                   double scale)
+{
+  const Flow_texture_of_mesh texture = flow_texture_of_mesh(tm, flow, scale);
+  Surface_rendering what;
+  what.texture = &texture.texture;
+  what.texture_coordinates = texture.texture_coordinates;
+  what.face_mask = texture.face_mask;
+  return write_picture(path, tm, what);
 }
 
 /// The orthogonal surface of the seeding programs: a tilted disk of `faces` triangles beside the

@@ -56,7 +56,8 @@ inline vtkSmartPointer<vtkLookupTable> make_blue_to_red(const std::array<double,
   return table;
 }
 
-inline vtkSmartPointer<vtkActor> make_scene_surface_actor(const Scene_surface& s, vtkLookupTable* table)
+// Adds the actors of `s` to `renderer`: the surface, and for a textured one its mask layer.
+inline void add_scene_surface(vtkRenderer* renderer, const Scene_surface& s, vtkLookupTable* table)
 {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
@@ -85,6 +86,10 @@ inline vtkSmartPointer<vtkActor> make_scene_surface_actor(const Scene_surface& s
     mapper->SetScalarModeToUseCellData();
     mapper->ScalarVisibilityOn();
   }
+  const bool textured = s.texture != nullptr && s.texture_coordinates.size() == s.points.size();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  if (textured) // the coordinates travel with the points through the normals' filter
+    set_texture(actor, polydata, *s.texture, s.texture_coordinates);
   // Smooth shading: point normals (flat faces, unconnected sides, consistent orientation).
   auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
   normals->SetInputData(polydata);
@@ -96,10 +101,10 @@ inline vtkSmartPointer<vtkActor> make_scene_surface_actor(const Scene_surface& s
     mapper->SetResolveCoincidentTopologyToPolygonOffset();
     mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(2, 2);
   }
-  auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   vtkProperty* property = actor->GetProperty();
-  property->SetColor(s.color[0], s.color[1], s.color[2]);
+  if (!textured)
+    property->SetColor(s.color[0], s.color[1], s.color[2]);
   property->SetOpacity(s.opacity);
   property->SetAmbient(0.2);
   property->SetDiffuse(0.8);
@@ -109,7 +114,10 @@ inline vtkSmartPointer<vtkActor> make_scene_surface_actor(const Scene_surface& s
     property->EdgeVisibilityOn();
     property->SetEdgeColor(0.3, 0.3, 0.3);
   }
-  return actor;
+  renderer->AddActor(actor);
+  if (textured && s.face_mask.size() == s.triangles.size())
+    if (const vtkSmartPointer<vtkActor> layer = make_mask_layer(points, polys, *s.texture, s.face_mask))
+      renderer->AddActor(layer);
 }
 
 inline vtkSmartPointer<vtkActor> make_scene_lines_actor(const Scene_lines& l)
@@ -219,7 +227,7 @@ inline bool render_scene_PNG(const std::string& filename, const Scene_picture& p
     renderer->SetMaximumNumberOfPeels(8);
     renderer->UseFXAAOn();
     for (const Scene_surface& s : view.surfaces)
-      renderer->AddActor(detail::make_scene_surface_actor(s, table));
+      detail::add_scene_surface(renderer, s, table);
     for (const Scene_lines& l : view.lines)
       renderer->AddActor(detail::make_scene_lines_actor(l));
     if (!lattice.defined.empty())

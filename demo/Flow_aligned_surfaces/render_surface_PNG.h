@@ -100,6 +100,63 @@ inline vtkSmartPointer<vtkImageData> make_vtk_image(const CGAL::Flow_aligned_sur
   return image;
 }
 
+/// Textures `actor` (which draws `surface`) by `texture` at one (u, v) per point of `surface`
+/// (non-finite coordinates map to 0).
+inline void set_texture(vtkActor* actor, vtkPolyData* surface, const CGAL::Flow_aligned_surfaces::Texture_image& texture,
+                        const std::vector<std::array<double, 2>>& texture_coordinates)
+{
+  auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
+  tcoords->SetName("texture_coordinates");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(vtkIdType(texture_coordinates.size()));
+  for (std::size_t i = 0; i < texture_coordinates.size(); ++i) {
+    const auto& t = texture_coordinates[i];
+    const bool finite = std::isfinite(t[0]) && std::isfinite(t[1]);
+    tcoords->SetTuple2(vtkIdType(i), finite ? t[0] : 0.0, finite ? t[1] : 0.0);
+  }
+  surface->GetPointData()->SetTCoords(tcoords);
+  auto vtk_texture = vtkSmartPointer<vtkTexture>::New();
+  vtk_texture->SetInputData(make_vtk_image(texture));
+  vtk_texture->RepeatOn();
+  vtk_texture->InterpolateOn();
+  actor->SetTexture(vtk_texture);
+  actor->GetProperty()->SetColor(1, 1, 1);
+}
+
+/// The layer that blends a textured surface (`points`, `polys`) to the texture's mean colour:
+/// that colour with opacity b per face, pulled in front of the textured layer; null when no b is
+/// positive.
+inline vtkSmartPointer<vtkActor> make_mask_layer(vtkPoints* points, vtkCellArray* polys,
+                                                 const CGAL::Flow_aligned_surfaces::Texture_image& texture,
+                                                 const std::vector<double>& face_mask)
+{
+  bool any_mask = false;
+  for (double b : face_mask)
+    any_mask = any_mask || !(b <= 0);
+  if (!any_mask)
+    return nullptr;
+  const std::array<double, 3> mean = texture.mean_color();
+  auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  colors->SetNumberOfComponents(4);
+  colors->SetNumberOfTuples(vtkIdType(face_mask.size()));
+  for (std::size_t j = 0; j < face_mask.size(); ++j) {
+    const double b = std::isnan(face_mask[j]) ? 1.0 : std::clamp(face_mask[j], 0.0, 1.0);
+    colors->SetTuple4(vtkIdType(j), std::lround(255 * mean[0]), std::lround(255 * mean[1]),
+                      std::lround(255 * mean[2]), std::lround(255 * b));
+  }
+  auto layer = vtkSmartPointer<vtkPolyData>::New();
+  layer->SetPoints(points);
+  layer->SetPolys(polys);
+  layer->GetCellData()->SetScalars(colors);
+  auto layer_mapper = make_mapper(layer);
+  layer_mapper->ScalarVisibilityOn();
+  layer_mapper->SetScalarModeToUseCellData();
+  layer_mapper->SetColorModeToDirectScalars();
+  layer_mapper->SetResolveCoincidentTopologyToPolygonOffset();
+  layer_mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2, -2);
+  return make_actor(layer_mapper);
+}
+
 // Writes what `window` shows to `filename` as PNG, beside it first and renamed over it when
 // complete, so that a reader never sees half a picture; `reason` says why not.
 inline bool write_window_PNG(vtkRenderWindow* window, const std::string& filename, std::string& reason)
@@ -199,49 +256,9 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
   auto actor = detail::make_actor(mapper);
   renderer->AddActor(actor);
   if (what.texture != nullptr) {
-    auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
-    tcoords->SetName("texture_coordinates");
-    tcoords->SetNumberOfComponents(2);
-    tcoords->SetNumberOfTuples(vtkIdType(nv));
-    for (std::size_t i = 0; i < nv; ++i) {
-      const auto& t = what.texture_coordinates[i];
-      const bool finite = std::isfinite(t[0]) && std::isfinite(t[1]);
-      tcoords->SetTuple2(vtkIdType(i), finite ? t[0] : 0.0, finite ? t[1] : 0.0);
-    }
-    surface->GetPointData()->SetTCoords(tcoords);
-    auto texture = vtkSmartPointer<vtkTexture>::New();
-    texture->SetInputData(detail::make_vtk_image(*what.texture));
-    texture->RepeatOn();
-    texture->InterpolateOn();
-    actor->SetTexture(texture);
-    actor->GetProperty()->SetColor(1, 1, 1);
-
-    bool any_mask = false;
-    for (double b : what.face_mask)
-      any_mask = any_mask || !(b <= 0);
-    if (any_mask) {
-      // The mean-colour layer, opacity b, pulled in front of the textured one.
-      const std::array<double, 3> mean = what.texture->mean_color();
-      auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
-      colors->SetNumberOfComponents(4);
-      colors->SetNumberOfTuples(vtkIdType(nf));
-      for (std::size_t j = 0; j < nf; ++j) {
-        const double b = std::isnan(what.face_mask[j]) ? 1.0 : std::clamp(what.face_mask[j], 0.0, 1.0);
-        colors->SetTuple4(vtkIdType(j), std::lround(255 * mean[0]), std::lround(255 * mean[1]),
-                          std::lround(255 * mean[2]), std::lround(255 * b));
-      }
-      auto layer = vtkSmartPointer<vtkPolyData>::New();
-      layer->SetPoints(points);
-      layer->SetPolys(polys);
-      layer->GetCellData()->SetScalars(colors);
-      auto layer_mapper = detail::make_mapper(layer);
-      layer_mapper->ScalarVisibilityOn();
-      layer_mapper->SetScalarModeToUseCellData();
-      layer_mapper->SetColorModeToDirectScalars();
-      layer_mapper->SetResolveCoincidentTopologyToPolygonOffset();
-      layer_mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2, -2);
-      renderer->AddActor(detail::make_actor(layer_mapper));
-    }
+    detail::set_texture(actor, surface, *what.texture, what.texture_coordinates);
+    if (const vtkSmartPointer<vtkActor> layer = detail::make_mask_layer(points, polys, *what.texture, what.face_mask))
+      renderer->AddActor(layer);
   }
   else if (!what.face_scalars.empty()) {
     auto scalars = vtkSmartPointer<vtkDoubleArray>::New();

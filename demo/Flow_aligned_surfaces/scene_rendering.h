@@ -15,17 +15,24 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace fas_demo {
 
-/// A triangle surface of a scene: coloured by `face_scalars` through the picture's colour map
-/// when they are given, else in `color`.
+/// A triangle surface of a scene: textured when `texture` is given (the paper's Figure 8), else
+/// coloured by `face_scalars` through the picture's colour map when they are given, else in
+/// `color`.
 struct Scene_surface {
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 3>> triangles;
   std::vector<double> face_scalars; ///< one per triangle, or empty
+  /// The texture, with one (u, v) per point in `texture_coordinates`, blended per triangle to its
+  /// mean colour by `face_mask` (b in [0, 1]; empty: not blended).
+  std::shared_ptr<const CGAL::Flow_aligned_surfaces::Texture_image> texture;
+  std::vector<std::array<double, 2>> texture_coordinates;
+  std::vector<double> face_mask;
   std::array<double, 3> color{0.8, 0.8, 0.8};
   double opacity = 1;
   bool edges = false; ///< draw the triangles' edges (a wireframe over the surface)
