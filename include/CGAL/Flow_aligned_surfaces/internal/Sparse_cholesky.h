@@ -25,6 +25,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
+#include <CGAL/Flow_aligned_surfaces/internal/Supernodal_LLT.h>
 #include <Eigen/CholmodSupport>
 #endif
 
@@ -64,12 +65,26 @@ public:
 };
 
 /// CHOLMOD's simplicial LDL^T (fill-reducing ordering by CHOLMOD's default strategy): one thread,
-/// no BLAS; its back-substitutions sweep the three coordinate columns at once.
-using Default_sparse_linear_solver =
-    CGAL::Eigen_solver_traits<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>>>;
+/// no BLAS; repacked into supernodes whose back-substitutions sweep the three coordinate columns
+/// at once, in parallel over independent subtrees when asked (Supernodal_LLT.h).
+using Default_sparse_linear_solver = CGAL::Eigen_solver_traits<Supernodal_LLT<double>>;
 #else
 using Default_sparse_linear_solver =
     CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>;
+#endif
+
+/// Lets `solver` use the threads of the caller's TBB arena in its solves when `parallel`, if it
+/// can (the package's default solver can; the results are the same bit for bit).
+template <class EigenSolver>
+void use_parallelism_in(EigenSolver&, bool)
+{
+}
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
+template <class FactorScalar>
+void use_parallelism_in(Supernodal_LLT<FactorScalar>& solver, bool parallel)
+{
+  solver.use_parallelism(parallel);
+}
 #endif
 
 /// Throws std::runtime_error naming `what` when the last factorization of `solver` failed.
