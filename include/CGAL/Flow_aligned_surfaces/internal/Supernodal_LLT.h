@@ -59,26 +59,22 @@ public:
     return *this;
   }
 
-  /// From this many rows on, the fill-reducing ordering is METIS's nested dissection instead of
-  /// CHOLMOD's default (AMD): on 2D meshes its factor has 10 to 20 % fewer nonzeros, so every
-  /// solve reads less, and its slower analysis is paid once (benchmark/Flow_aligned_surfaces/
-  /// RESULTS.md, issue 18); below, the analysis would cost more than the solves gain.
-  static constexpr Eigen::Index smallest_dissected_matrix = 60000;
-
   /// Makes the next analyses use the CHOLMOD ordering `ordering` (CHOLMOD_AMD, CHOLMOD_METIS,
-  /// CHOLMOD_NESDIS, ...), or choose by size as described above when it is negative.
+  /// CHOLMOD_NESDIS, ...) only, or CHOLMOD's default strategy when it is negative (the default:
+  /// AMD on these meshes).  METIS's nested dissection gives 2 to 10 % fewer nonzeros on the
+  /// patches of the benchmark but no faster solve, and its analysis costs 15 times AMD's
+  /// (benchmark/Flow_aligned_surfaces/RESULTS.md, issue 18).
   void use_ordering(int ordering) { m_ordering = ordering; }
 
   /// The symbolic analysis (fill-reducing ordering and pattern of the factor).
   void analyzePattern(const Matrix_type& matrix)
   {
     cholmod_common& common = this->cholmod();
-    const bool dissect = m_ordering < 0 ? matrix.rows() >= smallest_dissected_matrix : m_ordering == CHOLMOD_METIS;
-    common.nmethods = dissect || m_ordering >= 0 ? 1 : 0;
-    common.method[0].ordering = dissect ? CHOLMOD_METIS : m_ordering >= 0 ? m_ordering : CHOLMOD_AMD;
+    common.nmethods = m_ordering >= 0 ? 1 : 0;
+    common.method[0].ordering = m_ordering >= 0 ? m_ordering : CHOLMOD_AMD;
     Base::analyzePattern(matrix);
-    if (dissect && this->m_cholmodFactor == nullptr) {
-      // A CHOLMOD built without METIS: its default strategy.
+    if (m_ordering >= 0 && this->m_cholmodFactor == nullptr) {
+      // An ordering this CHOLMOD was built without (METIS): its default strategy.
       common.nmethods = 0;
       Base::analyzePattern(matrix);
     }
