@@ -72,11 +72,12 @@ discretized; iterations never accumulate errors because they always reconstruct 
 \tparam GeomTraits a model of `Kernel`; default: the kernel of the point type
 \tparam SparseLinearSolver a model of `SparseLinearAlgebraWithFactorTraits_d` wrapping an Eigen
         sparse Cholesky solver, such as `CGAL::Eigen_solver_traits<S>`; its `solver()` is used to
-        factor once and solve the three coordinates at once.  Default:
-        `CGAL::Eigen_solver_traits<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>>>`
-        when CHOLMOD was found (the macro `CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD`), else
-        `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`; both run
-        on the calling thread only (see \ref fas_threads).
+        factor once and solve the three coordinates at once.  Default: when CHOLMOD was found
+        (the macro `CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD`), CHOLMOD's simplicial \f$ LDL^T \f$
+        factorization, whose factor the package repacks by supernodes for its own
+        back-substitutions (swept over independent subtrees in parallel with `use_parallelism`),
+        else `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`;
+        both run on the calling thread only unless parallelism is asked for (see \ref fas_threads).
 
 The field is held by reference, not copied, as the mesh is: both must outlive this object.
 

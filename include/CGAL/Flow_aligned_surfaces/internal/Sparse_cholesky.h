@@ -7,7 +7,8 @@
 // (CGAL::Eigen_solver_traits<S>); its Eigen solver is used directly so that the
 // three coordinate columns are solved in one call.
 //
-// Threads: the default solver starts none.  CHOLMOD's simplicial LDL^T calls no BLAS and runs no
+// Threads: the default solver starts none (its back-substitutions use the caller's TBB arena
+// only when asked, use_parallelism_in()).  CHOLMOD's simplicial LDL^T calls no BLAS and runs no
 // OpenMP loop; CHOLMOD 3's supernodal factorization does both (loops with
 // num_threads(CHOLMOD_OMP_NUM_THREADS) = 4, which omp_set_num_threads() cannot lower, and
 // dgemm/dsyrk of the system's BLAS, OpenBLAS with its own thread pool on Debian); the threads
