@@ -262,7 +262,7 @@ private:
   // vectorizes).
   template <int R>
   struct Supernode_sweeper {
-    static constexpr int panel_width = 2;
+    static constexpr int panel_width = 4;
     // Supernodes of at most this many columns (most of them: chains of the tree are short) are
     // swept in place, row by row of the right-hand side, without the gather buffer.
     static constexpr int narrow_width = 4;
@@ -399,10 +399,7 @@ private:
               v[c][i] -= double(column[i]) * v[c][j];
           }
         }
-        if (width == panel_width)
-          subtract_panel<panel_width>(block, nrows, j0, v);
-        else
-          subtract_panel<1>(block, nrows, j0, v);
+        with_width(width, [&](auto b) { subtract_panel<decltype(b)::value>(block, nrows, j0, v); });
       }
       for (int i = 0; i < k; ++i)
         for (int c = 0; c < R; ++c)
@@ -445,10 +442,7 @@ private:
       // The panels of forward(), last first: all the rows below the panel, then its triangle.
       for (int j0 = (k - 1) / panel_width * panel_width; j0 >= 0; j0 -= panel_width) {
         const int width = (std::min)(panel_width, k - j0);
-        if (width == panel_width)
-          dot_panel<panel_width>(block, nrows, j0, v);
-        else
-          dot_panel<1>(block, nrows, j0, v);
+        with_width(width, [&](auto b) { dot_panel<decltype(b)::value>(block, nrows, j0, v); });
         for (int j = j0 + width - 1; j >= j0; --j) {
           const FactorScalar* column = block + std::size_t(j) * nrows;
           for (int c = 0; c < R; ++c) {
