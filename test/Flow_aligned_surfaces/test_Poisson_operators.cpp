@@ -10,8 +10,10 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 // This file's tests and helpers in a namespace of their own: the suite is compiled in unity
 // batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
@@ -94,6 +96,50 @@ TEST(PoissonOperators, LaplacianEqualsCotangentFormula)
     }
   EXPECT_LT((Eigen::MatrixXd(patch.ops.L) - expected).cwiseAbs().maxCoeff(),
             1e-10 * expected.cwiseAbs().maxCoeff());
+}
+
+// L is assembled column by column without triplets (issue 18); it must be the matrix that
+// Eigen's setFromTriplets() makes of the faces' stiffness matrices, entry for entry and bit for
+// bit (the same sums in the same order), also with the vertices in a random order and on a mesh
+// of two components with a boundary.  Fails if an entry is missing, duplicated, misplaced or
+// summed in another order.
+TEST(PoissonOperators, LaplacianIsTheTripletAssemblyOfTheFaceStiffnesses)
+{
+  Mesh tm;
+  FAS::make_disk_patch(tm, K::Point_3(0.1, -0.2, 0.3), K::Vector_3(0.2, 0.1, 1), 1.0, 300);
+  FAS::make_planar_patch(tm, K::Point_3(3, 0, 0), K::Vector_3(1, 1, 1), 1.0, 0.5, 200);
+  for (auto v : tm.vertices()) {
+    const K::Point_3 p = tm.point(v);
+    tm.point(v) = K::Point_3(p.x(), p.y(), p.z() + 0.3 * (p.x() * p.x() - 0.5 * p.y() * p.y()));
+  }
+  std::vector<std::size_t> order(num_vertices(tm));
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937(18));
+  auto vim = tm.add_property_map<Mesh::Vertex_index, std::size_t>("v:shuffled").first;
+  for (auto v : tm.vertices())
+    vim[v] = order[std::size_t(v)];
+  const FASI::Positions x = FASI::read_positions(FASI::vertices_in_index_order(tm, vim), tm.points());
+  const FASI::Mesh_arrays arrays = FASI::make_mesh_arrays(tm, vim, get(CGAL::face_index, tm));
+  ASSERT_EQ(arrays.number_of_components, 2u);
+  const auto ops = std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(x, arrays.face_vertices, false));
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const FASI::Reference_face& face : ops.faces)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k)
+        triplets.emplace_back(face.vertices[i], face.vertices[k], face.stiffness(i, k));
+  Eigen::SparseMatrix<double> expected(x.rows(), x.rows());
+  expected.setFromTriplets(triplets.begin(), triplets.end());
+
+  ASSERT_TRUE(ops.L.isCompressed());
+  ASSERT_EQ(ops.L.nonZeros(), expected.nonZeros());
+  for (Eigen::Index c = 0; c <= x.rows(); ++c)
+    ASSERT_EQ(ops.L.outerIndexPtr()[c], expected.outerIndexPtr()[c]) << "column " << c;
+  for (Eigen::Index k = 0; k < expected.nonZeros(); ++k) {
+    EXPECT_EQ(ops.L.innerIndexPtr()[k], expected.innerIndexPtr()[k]) << "entry " << k;
+    EXPECT_EQ(ops.L.valuePtr()[k], expected.valuePtr()[k]) << "entry " << k;
+  }
 }
 
 TEST(PoissonOperators, DivergenceOfGradientIsLaplacian)
