@@ -46,6 +46,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -548,7 +549,7 @@ public:
       put(fim, f, face_index++);
     m_arrays = internal::make_mesh_arrays(m_tm, vim, fim);
     const auto factor_start = std::chrono::steady_clock::now();
-    rebuild_operators(m_reference);
+    rebuild_operators(m_reference, true);
     const auto end = std::chrono::steady_clock::now();
 
     Growth_report report = strip.report;
@@ -970,19 +971,44 @@ private:
     return constrained;
   }
 
+  // Whether the faces of m_ops are the first faces of m_arrays, in the same order with the same
+  // vertices: then the operators of a grown mesh extend the old ones.
+  bool operators_are_a_prefix() const
+  {
+    const std::size_t n = m_ops.faces.size();
+    if (n == 0 || n > m_arrays.face_vertices.size() || m_ops.number_of_vertices() > m_reference.rows())
+      return false;
+    for (std::size_t j = 0; j < n; ++j)
+      if (m_ops.faces[j].vertices != m_arrays.face_vertices[j])
+        return false;
+    return true;
+  }
+
   // Assembles the operators on the reference positions, chooses the constrained faces and
-  // factors L + W.  Called at construction and whenever the connectivity changes.
-  void rebuild_operators(const Positions& reference)
+  // factors L + W.  Called at construction and whenever the connectivity changes; after
+  // `grow()` (`grown`), whose new faces and vertices come after the old ones in the mesh's
+  // order, the old operators are extended instead of assembled anew.
+  void rebuild_operators(const Positions& reference, bool grown = false)
   {
     using Clock = std::chrono::steady_clock;
     m_construction = Construction_report();
     const auto assembling = Clock::now();
-    // The iterations use L and the per-face stiffness only (D Y' is assembled face by face).
-    auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices, false);
-    if (auto* degenerate = std::get_if<internal::Degenerate_face>(&built))
+    std::optional<internal::Degenerate_face> degenerate;
+    if (grown && operators_are_a_prefix())
+      degenerate = internal::extend_poisson_operators(m_ops, reference, m_arrays.face_vertices);
+    else {
+      // The iterations use L and the per-face stiffness only (D Y' is assembled face by face).
+      // Room for half as many faces again, for grow() (address space only).
+      auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices, false,
+                                                    m_arrays.face_vertices.size() / 2);
+      if (auto* face = std::get_if<internal::Degenerate_face>(&built))
+        degenerate = *face;
+      else
+        m_ops = std::move(std::get<internal::Poisson_operators>(built));
+    }
+    if (degenerate)
       throw std::invalid_argument("Flow_aligned_deformation: tm: face " + std::to_string(degenerate->face) +
                                   " is degenerate (zero area)");
-    m_ops = std::move(std::get<internal::Poisson_operators>(built));
     const auto choosing = Clock::now();
 
     m_constrained_vertices =
