@@ -998,9 +998,7 @@ private:
       degenerate = internal::extend_poisson_operators(m_ops, reference, m_arrays.face_vertices);
     else {
       // The iterations use L and the per-face stiffness only (D Y' is assembled face by face).
-      // Room for half as many faces again, for grow() (address space only).
-      auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices, false,
-                                                    m_arrays.face_vertices.size() / 2);
+      auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices, false);
       if (auto* face = std::get_if<internal::Degenerate_face>(&built))
         degenerate = *face;
       else

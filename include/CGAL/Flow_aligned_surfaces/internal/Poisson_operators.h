@@ -109,10 +109,6 @@ struct Degenerate_face {
   std::size_t face;
 };
 
-/// Entries of L per face of a grown triangle mesh (about 7 per vertex, 2 faces per vertex, and
-/// some margin): the room reserved for faces to come.
-constexpr std::size_t kSpareNonzerosPerFace = 5;
-
 /// L = sum_j K_j (each face's local stiffness scattered to its vertices), assembled directly in
 /// compressed column form: the rows of column v are v and the vertices of the faces around v,
 /// and each entry sums the faces' contributions in increasing face order, as
@@ -120,9 +116,7 @@ constexpr std::size_t kSpareNonzerosPerFace = 5;
 /// `setFromTriplets()` it needs no triplet list and no transposed copy (9 triplets of 16 bytes
 /// and 9 more entries per face): it touches about a third of the memory, and on a machine whose
 /// page faults are slow the first touch of fresh memory is most of the assembly time (issue 18).
-/// `spare_nonzeros`: room reserved in L's arrays for that many more entries.
-inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m, const std::vector<Reference_face>& faces,
-                                                             std::size_t spare_nonzeros = 0)
+inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m, const std::vector<Reference_face>& faces)
 {
   using StorageIndex = Eigen::SparseMatrix<double>::StorageIndex;
   // The faces around each vertex, in increasing face order (a CSR array of face indices).
@@ -162,7 +156,6 @@ inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m, con
     outer[v + 1] = outer[v] + StorageIndex(rows.size());
   }
   std::fill(seen.begin(), seen.end(), StorageIndex(-1));
-  l.data().reserve(Eigen::Index(outer[m]) + Eigen::Index(spare_nonzeros));
   l.resizeNonZeros(outer[m]);
   StorageIndex* inner = l.innerIndexPtr();
   double* values = l.valuePtr();
@@ -186,22 +179,19 @@ inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m, con
 }
 
 /// Assembles the operators from vertex positions (m x 3) and the vertex indices of each face.
-/// Returns the index of a degenerate face instead when there is one.  `spare_faces`: room reserved
-/// (address space only, no memory is touched) for that many more faces in `faces` and their
-/// entries in `L`, so that `extend_poisson_operators()` can add them in place.  Without
+/// Returns the index of a degenerate face instead when there is one.  Without
 /// `with_gradient_and_divergence`, G and D are left empty: the deformation needs only L and the
 /// per-face data, and G, D cost about half of the assembly (a sparse product for D).
 inline std::variant<Poisson_operators, Degenerate_face>
 make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
                        const std::vector<std::array<Eigen::Index, 3>>& face_vertices,
-                       bool with_gradient_and_divergence = true, std::size_t spare_faces = 0)
+                       bool with_gradient_and_divergence = true)
 {
   using Triplet = Eigen::Triplet<double>;
   const Eigen::Index m = positions.rows();
   const Eigen::Index n = static_cast<Eigen::Index>(face_vertices.size());
 
   Poisson_operators ops;
-  ops.faces.reserve(face_vertices.size() + spare_faces);
   ops.faces.resize(face_vertices.size());
   ops.face_areas.resize(n);
   std::vector<Triplet> g_entries;
@@ -222,7 +212,7 @@ make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions
           g_entries.emplace_back(3 * j + d, fv[i], gradients(d, i));
   }
 
-  ops.L = assemble_stiffness_matrix(m, ops.faces, spare_faces * kSpareNonzerosPerFace);
+  ops.L = assemble_stiffness_matrix(m, ops.faces);
   if (with_gradient_and_divergence) {
     ops.G.resize(3 * n, m);
     ops.G.setFromTriplets(g_entries.begin(), g_entries.end());
@@ -238,9 +228,9 @@ make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions
 /// is extended in place (its old columns moved toward the end of its arrays from the last one
 /// down, the new faces' entries merged in): each entry is the old sum plus the new faces'
 /// contributions in increasing face order, so the result is what `make_poisson_operators()`
-/// makes of the whole mesh, to the last bit, with a fraction of the work and, when `ops` has
-/// room to spare (`spare_faces`), without fresh memory.  Returns the first degenerate new face,
-/// if any, and then leaves `ops` untouched.
+/// makes of the whole mesh, to the last bit, with a fraction of the work and little fresh memory
+/// (the arrays grow by half again when full, so repeated growing mostly reuses them; issue 18).
+/// Returns the first degenerate new face, if any, and then leaves `ops` untouched.
 /// \pre `face_vertices[j] == ops.faces[j].vertices` for the old faces; `ops.G` is empty.
 inline std::optional<Degenerate_face>
 extend_poisson_operators(Poisson_operators& ops, const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
@@ -312,7 +302,7 @@ extend_poisson_operators(Poisson_operators& ops, const Eigen::Matrix<double, Eig
 
   const Eigen::Index nonzeros = outer[std::size_t(m)];
   if (nonzeros > Eigen::Index(l.data().allocatedSize()))
-    l.data().reserve(nonzeros - l.nonZeros() + Eigen::Index(kSpareNonzerosPerFace * added.size()));
+    l.data().reserve(nonzeros - l.nonZeros() + nonzeros / 2);
   l.conservativeResize(m, m);
   l.resizeNonZeros(nonzeros);
   StorageIndex* inner = l.innerIndexPtr();
