@@ -167,13 +167,21 @@ void expect_same_operators(const FASI::Poisson_operators& got, const FASI::Poiss
 // After grow_boundary() (new vertices and faces after the old ones), the old operators extended
 // by extend_poisson_operators() are those made from scratch on the grown mesh, to the last bit,
 // three times in a row (the first extension reallocates, the next ones work in place in the
-// room the first left).  Fails if a column is misplaced while moving, an entry is lost or added
-// twice in the merge, or the sums are made in another order.
+// room the first left).  The old vertices are numbered in a random order, so that columns
+// without new entries lie between columns with some and must be moved.  Fails if a column is
+// misplaced while moving, an entry is lost or added twice in the merge, or the sums are made in
+// another order.
 TEST(PoissonOperators, ExtendedOperatorsOfAGrownMeshAreTheOperatorsOfTheWholeMesh)
 {
   Mesh tm;
   FAS::make_disk_patch(tm, K::Point_3(0.1, -0.2, 0.3), K::Vector_3(0.2, 0.1, 1), 1.0, 300);
-  const auto vim = get(CGAL::vertex_index, tm);
+  std::vector<std::size_t> order(num_vertices(tm));
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937(18));
+  auto vim = tm.add_property_map<Mesh::Vertex_index, std::size_t>("v:order").first;
+  for (auto v : tm.vertices())
+    vim[v] = std::size_t(v) < order.size() ? order[std::size_t(v)] : std::size_t(v);
   const auto fim = get(CGAL::face_index, tm);
   auto positions = [&] { return FASI::read_positions(FASI::vertices_in_index_order(tm, vim), tm.points()); };
   FASI::Mesh_arrays arrays = FASI::make_mesh_arrays(tm, vim, fim);
@@ -183,6 +191,9 @@ TEST(PoissonOperators, ExtendedOperatorsOfAGrownMeshAreTheOperatorsOfTheWholeMes
     FAS::grow_boundary(tm, 0.1);
     ASSERT_GT(num_faces(tm), old_faces);
     ASSERT_GT(num_vertices(tm), old_vertices);
+    for (auto v : tm.vertices()) // Surface_mesh numbers the new vertices after the old ones
+      if (std::size_t(v) >= old_vertices)
+        vim[v] = std::size_t(v);
     arrays = FASI::make_mesh_arrays(tm, vim, fim);
     const FASI::Positions x = positions();
     ASSERT_FALSE(FASI::extend_poisson_operators(ops, x, arrays.face_vertices));
