@@ -205,17 +205,17 @@ int main(int argc, char** argv)
     }
   }
 
-  std::cout << "Medians over " << processes << " fresh processes per case; wall/phase ms, CPU = thread CPU ms, "
-            << "faults = minor page faults\n\n"
-            << "| faces | case | wall ms | CPU ms | faults | check | arrays | operators | constraints | analyze | "
-               "factorize |\n|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::cout
+      << "Medians over " << processes << " fresh processes per case; wall/phase ms, CPU = thread CPU ms, "
+      << "faults = minor page faults\n\n"
+      << "| faces | case | wall ms | CPU ms | faults | check | arrays | operators | constraints | analyze | "
+         "factorize |\n|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (std::size_t size : sizes) {
     std::map<std::string, std::vector<Figures>> runs;
     std::size_t face_count = 0;
     for (int p = 0; p < processes; ++p)
       for (const char* mode : {"all", "after_small"}) {
-        const std::string command =
-            std::string(argv[0]) + " --child " + std::to_string(size) + " " + mode;
+        const std::string command = std::string(argv[0]) + " --child " + std::to_string(size) + " " + mode;
         FILE* pipe = popen(command.c_str(), "r");
         if (!pipe) {
           std::cerr << "cannot run " << command << '\n';

@@ -123,7 +123,8 @@ TEST(PoissonOperators, LaplacianIsTheTripletAssemblyOfTheFaceStiffnesses)
   const FASI::Positions x = FASI::read_positions(FASI::vertices_in_index_order(tm, vim), tm.points());
   const FASI::Mesh_arrays arrays = FASI::make_mesh_arrays(tm, vim, get(CGAL::face_index, tm));
   ASSERT_EQ(arrays.number_of_components, 2u);
-  const auto ops = std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(x, arrays.face_vertices, false));
+  const auto ops =
+      std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(x, arrays.face_vertices, false));
 
   std::vector<Eigen::Triplet<double>> triplets;
   for (const FASI::Reference_face& face : ops.faces)
@@ -185,7 +186,8 @@ TEST(PoissonOperators, ExtendedOperatorsOfAGrownMeshAreTheOperatorsOfTheWholeMes
   const auto fim = get(CGAL::face_index, tm);
   auto positions = [&] { return FASI::read_positions(FASI::vertices_in_index_order(tm, vim), tm.points()); };
   FASI::Mesh_arrays arrays = FASI::make_mesh_arrays(tm, vim, fim);
-  auto ops = std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(positions(), arrays.face_vertices, false));
+  auto ops = std::get<FASI::Poisson_operators>(
+      FASI::make_poisson_operators(positions(), arrays.face_vertices, false));
   for (int round = 0; round < 3; ++round) {
     const std::size_t old_faces = num_faces(tm), old_vertices = num_vertices(tm);
     FAS::grow_boundary(tm, 0.1);

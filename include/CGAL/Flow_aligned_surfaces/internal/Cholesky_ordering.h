@@ -30,8 +30,8 @@ struct Factorization_times {
 /// Factors `matrix` with `solver` (analysis, then numeric factorization) and returns the time of
 /// each phase; throws std::runtime_error naming `what` when the factorization fails.
 template <class SparseLinearSolver>
-Factorization_times timed_factor_or_throw(SparseLinearSolver& solver, const Eigen::SparseMatrix<double>& matrix,
-                                          const std::string& what)
+Factorization_times timed_factor_or_throw(SparseLinearSolver& solver,
+                                          const Eigen::SparseMatrix<double>& matrix, const std::string& what)
 {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();

@@ -87,9 +87,9 @@ struct Poisson_operators {
 
 /// The data of the face `fv` of the mesh with vertex positions `positions` (m x 3), and its basis
 /// gradients in `*gradients` when asked; nothing for a degenerate face.
-inline std::optional<Reference_face> make_reference_face(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
-                                                         const std::array<Eigen::Index, 3>& fv,
-                                                         Eigen::Matrix3d* gradients = nullptr)
+inline std::optional<Reference_face>
+make_reference_face(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
+                    const std::array<Eigen::Index, 3>& fv, Eigen::Matrix3d* gradients = nullptr)
 {
   const auto t = triangle_gradients(positions.row(fv[0]).transpose(), positions.row(fv[1]).transpose(),
                                     positions.row(fv[2]).transpose());
@@ -116,7 +116,8 @@ struct Degenerate_face {
 /// `setFromTriplets()` it needs no triplet list and no transposed copy (9 triplets of 16 bytes
 /// and 9 more entries per face): it touches about a third of the memory, and on a machine whose
 /// page faults are slow the first touch of fresh memory is most of the assembly time (issue 18).
-inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m, const std::vector<Reference_face>& faces)
+inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m,
+                                                             const std::vector<Reference_face>& faces)
 {
   using StorageIndex = Eigen::SparseMatrix<double>::StorageIndex;
   // The faces around each vertex, in increasing face order (a CSR array of face indices).
@@ -170,7 +171,9 @@ inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m, con
     }
     for (StorageIndex k = first[v]; k < first[v + 1]; ++k) {
       const Reference_face& face = faces[std::size_t(around[std::size_t(k)])];
-      const int corner = face.vertices[0] == Eigen::Index(v) ? 0 : face.vertices[1] == Eigen::Index(v) ? 1 : 2;
+      const int corner = face.vertices[0] == Eigen::Index(v)   ? 0
+                         : face.vertices[1] == Eigen::Index(v) ? 1
+                                                               : 2;
       for (int i = 0; i < 3; ++i)
         values[at[std::size_t(face.vertices[i])]] += face.stiffness(i, corner);
     }
@@ -338,7 +341,9 @@ extend_poisson_operators(Poisson_operators& ops, const Eigen::Matrix<double, Eig
     const StorageIndex* column_end = inner + outer[v + 1];
     for (StorageIndex k = first[v]; k < first[v + 1]; ++k) {
       const Reference_face& face = ops.faces[std::size_t(around[std::size_t(k)])];
-      const int corner = face.vertices[0] == Eigen::Index(v) ? 0 : face.vertices[1] == Eigen::Index(v) ? 1 : 2;
+      const int corner = face.vertices[0] == Eigen::Index(v)   ? 0
+                         : face.vertices[1] == Eigen::Index(v) ? 1
+                                                               : 2;
       for (int i = 0; i < 3; ++i) {
         const StorageIndex row = StorageIndex(face.vertices[i]);
         values[std::lower_bound(column, column_end, row) - inner] += face.stiffness(i, corner);
