@@ -17,7 +17,7 @@
 #include <CGAL/Flow_aligned_surfaces/Alignment.h>
 #include <CGAL/Flow_aligned_surfaces/grow_boundary.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
-#include <CGAL/Flow_aligned_surfaces/internal/Cholesky_ordering.h>
+#include <CGAL/Flow_aligned_surfaces/internal/timed_factorization.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>

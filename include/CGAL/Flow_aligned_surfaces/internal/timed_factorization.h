@@ -9,8 +9,8 @@
 // `factorize(A)` in every Eigen sparse Cholesky solver (CHOLMOD's and Eigen's own), so this is
 // the same factorization.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_CHOLESKY_ORDERING_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_CHOLESKY_ORDERING_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TIMED_FACTORIZATION_H
+#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TIMED_FACTORIZATION_H
 
 #include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
 
@@ -47,4 +47,4 @@ Factorization_times timed_factor_or_throw(SparseLinearSolver& solver,
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_CHOLESKY_ORDERING_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TIMED_FACTORIZATION_H
