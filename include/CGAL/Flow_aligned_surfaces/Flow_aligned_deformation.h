@@ -17,7 +17,6 @@
 #include <CGAL/Flow_aligned_surfaces/Alignment.h>
 #include <CGAL/Flow_aligned_surfaces/grow_boundary.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
-#include <CGAL/Flow_aligned_surfaces/internal/timed_factorization.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
@@ -25,6 +24,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/parametrization.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
+#include <CGAL/Flow_aligned_surfaces/internal/timed_factorization.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/Default.h>
