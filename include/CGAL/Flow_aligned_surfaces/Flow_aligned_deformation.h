@@ -24,6 +24,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/parametrization.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
+#include <CGAL/Flow_aligned_surfaces/internal/timed_factorization.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/Default.h>
@@ -45,12 +46,26 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+
+/// \ingroup PkgFlowAlignedSurfacesRef
+/// Where the time of the last preparation of a `Flow_aligned_deformation` went: its constructor,
+/// or the rebuild of the operators after `grow()` (then the check and mesh-array phases are
+/// `grow()`'s own, reported in its `Growth_report`, and are 0 here).  Wall-clock milliseconds.
+struct Construction_report {
+  double check_ms = 0;       ///< the mesh checked (triangles, manifold, finite positions)
+  double mesh_arrays_ms = 0; ///< the mesh flattened into arrays (faces, interior edges, components)
+  double operators_ms = 0;   ///< the Poisson operators assembled on \f$ M_0 \f$
+  double constraints_ms = 0; ///< the constrained faces chosen and \f$ L + W \f$ formed
+  double analyze_ms = 0;     ///< the symbolic analysis (fill-reducing ordering, elimination tree)
+  double factorize_ms = 0;   ///< the numeric factorization
+};
 
 /*!
 \ingroup PkgFlowAlignedSurfacesRef
@@ -246,14 +261,20 @@ public:
     m_cos_eta = std::cos((std::min)(m_eta, CGAL_PI / 2));
     m_sin_eta = std::sin((std::min)(m_eta, CGAL_PI / 2));
 
+    using Clock = std::chrono::steady_clock;
+    const auto checking = Clock::now();
     internal::check_triangle_mesh(tm, "Flow_aligned_deformation: tm");
     const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
     const auto fim = CGAL::get_initialized_face_index_map(tm, np);
     m_vertices = internal::vertices_in_index_order(tm, vim);
-    m_arrays = internal::make_mesh_arrays(tm, vim, fim);
     m_reference = internal::read_positions(m_vertices, m_vpm);
     internal::check_finite_positions(m_reference, "Flow_aligned_deformation: tm");
+    const auto flattening = Clock::now();
+    m_arrays = internal::make_mesh_arrays(tm, vim, fim);
+    const auto flattened = Clock::now();
     rebuild_operators(m_reference);
+    m_construction.check_ms = milliseconds_between(checking, flattening);
+    m_construction.mesh_arrays_ms = milliseconds_between(flattening, flattened);
   }
 
   /// The field is held by reference: a temporary would be destroyed before the first
@@ -505,7 +526,7 @@ public:
       put(fim, f, face_index++);
     m_arrays = internal::make_mesh_arrays(m_tm, vim, fim);
     const auto factor_start = std::chrono::steady_clock::now();
-    rebuild_operators(m_reference);
+    rebuild_operators(m_reference, true);
     const auto end = std::chrono::steady_clock::now();
 
     Growth_report report = strip.report;
@@ -675,6 +696,11 @@ public:
   {
     return m_number_of_factorizations;
   }
+  /// Where the time of the constructor, or of the last `grow()`'s rebuild of the operators, went.
+  const Construction_report& construction_report() const
+  {
+    return m_construction;
+  }
   /// The report of the last iteration.
   const Iteration_report& last_report() const
   {
@@ -695,6 +721,12 @@ private:
     if (!valid || !std::isfinite(value))
       throw std::invalid_argument(std::string("Flow_aligned_deformation: parameter ") + name + " = " +
                                   std::to_string(value) + " is out of range");
+  }
+
+  static double milliseconds_between(std::chrono::steady_clock::time_point start,
+                                     std::chrono::steady_clock::time_point end)
+  {
+    return std::chrono::duration<double, std::milli>(end - start).count();
   }
 
   static Eigen::Vector3d to_eigen(const Vector_3& v)
@@ -986,63 +1018,117 @@ private:
     return x;
   }
 
-  // Assembles the operators on the reference positions, chooses the constrained faces and
-  // factors L + W.  Called at construction and whenever the connectivity changes.
-  void rebuild_operators(const Positions& reference)
+  // The vertices of the face nearest to the area-weighted barycenter of each connected
+  // component, three per component.  Symmetric patches have several faces at the same distance;
+  // a tolerance makes the choice (the lowest index among them) independent of rounding, so equal
+  // inputs in other mesh types or precisions anchor the same face.  Centroids are recomputed in
+  // the second pass rather than stored (fresh memory is slow to touch, issue 18).
+  static std::vector<Eigen::Index> central_face_vertices(const std::vector<internal::Reference_face>& faces,
+                                                         const Positions& reference,
+                                                         const std::vector<std::size_t>& face_component,
+                                                         std::size_t components)
   {
-    // The iterations use L and the per-face stiffness only (D Y' is assembled face by face).
-    auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices, false);
-    if (auto* degenerate = std::get_if<internal::Degenerate_face>(&built))
-      throw std::invalid_argument("Flow_aligned_deformation: tm: face " + std::to_string(degenerate->face) +
-                                  " is degenerate (zero area)");
-    m_ops = std::move(std::get<internal::Poisson_operators>(built));
-    m_corner_offsets.clear();
-
-    // The face nearest to the area-weighted barycenter of each connected component.
-    const std::size_t components = m_arrays.number_of_components;
+    const auto centroid = [&](const internal::Reference_face& f) -> Eigen::Vector3d {
+      return (reference.row(f.vertices[0]) + reference.row(f.vertices[1]) + reference.row(f.vertices[2]))
+                 .transpose() /
+             3;
+    };
     std::vector<Eigen::Vector3d> barycenter(components, Eigen::Vector3d::Zero());
     std::vector<double> component_area(components, 0);
-    std::vector<Eigen::Vector3d> centroid(m_ops.faces.size());
-    for (std::size_t j = 0; j < m_ops.faces.size(); ++j) {
-      const auto& f = m_ops.faces[j];
-      centroid[j] =
-          (reference.row(f.vertices[0]) + reference.row(f.vertices[1]) + reference.row(f.vertices[2]))
-              .transpose() /
-          3;
-      barycenter[m_arrays.face_component[j]] += f.area * centroid[j];
-      component_area[m_arrays.face_component[j]] += f.area;
+    for (std::size_t j = 0; j < faces.size(); ++j) {
+      barycenter[face_component[j]] += faces[j].area * centroid(faces[j]);
+      component_area[face_component[j]] += faces[j].area;
     }
     std::vector<std::size_t> nearest(components, 0);
     std::vector<double> nearest_distance(components, std::numeric_limits<double>::infinity());
-    // Symmetric patches have several faces at the same distance; a tolerance makes the choice
-    // (the lowest index among them) independent of rounding, so equal inputs in other mesh
-    // types or precisions anchor the same face.
     const double tolerance =
         1e-10 * (reference.colwise().maxCoeff() - reference.colwise().minCoeff()).squaredNorm();
-    for (std::size_t j = 0; j < m_ops.faces.size(); ++j) {
-      const std::size_t c = m_arrays.face_component[j];
-      const double d = (centroid[j] - barycenter[c] / component_area[c]).squaredNorm();
+    for (std::size_t j = 0; j < faces.size(); ++j) {
+      const std::size_t c = face_component[j];
+      const double d = (centroid(faces[j]) - barycenter[c] / component_area[c]).squaredNorm();
       if (d < nearest_distance[c] - tolerance) {
         nearest_distance[c] = d;
         nearest[c] = j;
       }
     }
-    m_constrained_vertices.clear();
+    std::vector<Eigen::Index> constrained;
     for (std::size_t c = 0; c < components; ++c)
-      for (Eigen::Index v : m_ops.faces[nearest[c]].vertices)
-        m_constrained_vertices.push_back(v);
+      for (Eigen::Index v : faces[nearest[c]].vertices)
+        constrained.push_back(v);
+    return constrained;
+  }
+
+  // Whether the faces of m_ops are the first faces of m_arrays, in the same order with the same
+  // vertices: then the operators of a grown mesh extend the old ones.
+  bool operators_are_a_prefix() const
+  {
+    const std::size_t n = m_ops.faces.size();
+    if (n == 0 || n > m_arrays.face_vertices.size() || m_ops.number_of_vertices() > m_reference.rows())
+      return false;
+    for (std::size_t j = 0; j < n; ++j)
+      if (m_ops.faces[j].vertices != m_arrays.face_vertices[j])
+        return false;
+    return true;
+  }
+
+  // Assembles the operators on the reference positions, chooses the constrained faces and
+  // factors L + W.  Called at construction and whenever the connectivity changes; after
+  // `grow()` (`grown`), whose new faces and vertices come after the old ones in the mesh's
+  // order, the old operators are extended instead of assembled anew.
+  void rebuild_operators(const Positions& reference, bool grown = false)
+  {
+    using Clock = std::chrono::steady_clock;
+    m_construction = Construction_report();
+    const auto assembling = Clock::now();
+    std::optional<internal::Degenerate_face> degenerate;
+    if (grown && operators_are_a_prefix())
+      degenerate = internal::extend_poisson_operators(m_ops, reference, m_arrays.face_vertices);
+    else {
+      // The iterations use L and the per-face stiffness only (D Y' is assembled face by face).
+      auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices, false);
+      if (auto* face = std::get_if<internal::Degenerate_face>(&built))
+        degenerate = *face;
+      else
+        m_ops = std::move(std::get<internal::Poisson_operators>(built));
+    }
+    if (degenerate)
+      throw std::invalid_argument("Flow_aligned_deformation: tm: face " + std::to_string(degenerate->face) +
+                                  " is degenerate (zero area)");
+    m_corner_offsets.clear(); // the corners of each vertex, for the parallel pass, are made again
+    const auto choosing = Clock::now();
+
+    m_constrained_vertices =
+        central_face_vertices(m_ops.faces, reference, m_arrays.face_component, m_arrays.number_of_components);
 
     // Small weight: it only has to remove the translational null space.  A large one pins
-    // the constrained face's orientation and leaves a kink there.
+    // the constrained face's orientation and leaves a kink there.  L + W is factored in place
+    // of L (no copy of L: fresh memory is slow to touch, issue 18), and L's diagonal entries are
+    // restored bit for bit afterwards.
     m_constraint_weight = m_relative_constraint_weight * m_ops.L.diagonal().mean();
-    Eigen::SparseMatrix<double> system = m_ops.L;
-    for (Eigen::Index v : m_constrained_vertices)
-      system.coeffRef(v, v) += m_constraint_weight;
-
-    const auto start = std::chrono::steady_clock::now();
-    internal::factor_or_throw(m_solver, system, "L + W");
-    m_factor_ms +=
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::vector<double> unconstrained;
+    for (Eigen::Index v : m_constrained_vertices) {
+      unconstrained.push_back(m_ops.L.coeff(v, v));
+      m_ops.L.coeffRef(v, v) += m_constraint_weight;
+    }
+    const Eigen::SparseMatrix<double>& system = m_ops.L;
+    const auto factoring = Clock::now();
+    const auto restore = [&] {
+      for (std::size_t k = m_constrained_vertices.size(); k-- > 0;)
+        m_ops.L.coeffRef(m_constrained_vertices[k], m_constrained_vertices[k]) = unconstrained[k];
+    };
+    internal::Factorization_times times;
+    try {
+      times = internal::timed_factor_or_throw(m_solver, system, "L + W");
+    } catch (...) {
+      restore();
+      throw;
+    }
+    restore();
+    m_construction.operators_ms = milliseconds_between(assembling, choosing);
+    m_construction.constraints_ms = milliseconds_between(choosing, factoring);
+    m_construction.analyze_ms = times.analyze_ms;
+    m_construction.factorize_ms = times.factorize_ms;
+    m_factor_ms += times.analyze_ms + times.factorize_ms;
     ++m_number_of_factorizations;
   }
 
@@ -1068,6 +1154,7 @@ private:
   mutable Sparse_linear_solver m_solver; // mutable: CGAL's solver traits have no const solver()
   std::size_t m_number_of_factorizations = 0;
   double m_factor_ms = 0;
+  Construction_report m_construction;
   std::size_t m_number_of_iterations = 0;
   Iteration_report m_last_report;
 
