@@ -85,8 +85,16 @@ public:
   {
     Base::factorize(matrix);
     m_subtrees = Elimination_subtrees();
+    m_super.clear();
     if (this->m_info != Eigen::Success)
       return;
+    // A factor below the threshold is solved by CHOLMOD: no copy (fresh memory costs a page
+    // fault per 4 KiB, 10 us each on the benchmark's virtual machine).
+    if (this->cholmod().lnz < m_smallest_swept_factor) {
+      if (!has_positive_pivots(*this->m_cholmodFactor))
+        this->m_info = Eigen::NumericalIssue;
+      return;
+    }
     if (!pack(*this->m_cholmodFactor)) {
       this->m_info = Eigen::NumericalIssue;
       return;
@@ -104,20 +112,21 @@ public:
     m_subtrees.use_parallelism(parallel);
   }
 
-  /// Below this many nonzeros (by default) the factor stays in the processor's caches and
-  /// CHOLMOD's own simplicial solve is the faster (benchmark/Flow_aligned_surfaces/RESULTS.md,
-  /// issue 18); from there on the supernodal sweeps are used.  The choice does not depend on
+  /// From this many nonzeros of the factor on (by default), the factor is repacked and solve()
+  /// sweeps the supernodes; below, CHOLMOD's own simplicial solve is used.  On the benchmark's
+  /// patches the sweeps are 5 % faster than CHOLMOD's solve at 1.5e6 nonzeros (8e4 faces) and
+  /// 15 % at 7e6 (3.2e5 faces), and the copy costs the factorization the page faults of its
+  /// fresh memory (about 30 ms at 8e4 faces): so from about 1.5e5 faces on
+  /// (benchmark/Flow_aligned_surfaces/RESULTS.md, issue 18).  The choice does not depend on
   /// `use_parallelism()`, so that the solutions do not either.
-  static constexpr double default_smallest_swept_factor = 5e5;
+  static constexpr double default_smallest_swept_factor = 3e6;
 
-  /// Sets the number of nonzeros of the factor from which solve() sweeps the supernodes.
+  /// Sets the number of nonzeros of the factor from which the next factorizations are repacked
+  /// and solved by the supernodal sweeps.
   void sweep_from(double entries) { m_smallest_swept_factor = entries; }
 
   /// Whether solve() uses the supernodal sweeps (else CHOLMOD's simplicial solve).
-  bool uses_supernodal_sweeps() const
-  {
-    return !m_super.empty() && number_of_entries() >= m_smallest_swept_factor;
-  }
+  bool uses_supernodal_sweeps() const { return !m_super.empty(); }
 
   /// The fill-reducing ordering of the last analysis (CHOLMOD_AMD, CHOLMOD_METIS, ...; -1 if none).
   int ordering() const { return this->m_cholmodFactor ? this->m_cholmodFactor->ordering : -1; }
@@ -129,16 +138,19 @@ public:
   std::size_t number_of_supernodes() const { return m_super.empty() ? 0 : m_super.size() - 1; }
 
   /// The nonzeros of the factor, which each sweep reads once.
-  double number_of_entries() const { return m_entries; }
+  double number_of_entries() const
+  {
+    return uses_supernodal_sweeps() ? m_entries : this->m_cholmodFactor ? double(this->m_cholmod.lnz) : 0.;
+  }
 
   /// The bytes one sweep of solve() reads from the factor: the values and the row indices of the
   /// supernodes, or, when CHOLMOD's simplicial solve is used, its values and a row index per value.
   double bytes_per_sweep() const
   {
-    if (m_super.empty())
+    if (!this->m_cholmodFactor)
       return 0;
     if (!uses_supernodal_sweeps())
-      return number_of_entries() * (sizeof(double) + sizeof(int)) + 2. * double(m_super.back()) * sizeof(int);
+      return number_of_entries() * (sizeof(double) + sizeof(int)) + 2. * double(this->m_cholmodFactor->n) * sizeof(int);
     return number_of_entries() * sizeof(FactorScalar) + double(m_rows.size()) * sizeof(int) +
            double(m_super.size() + m_pi.size() + m_px.size()) * sizeof(int);
   }
@@ -168,6 +180,19 @@ public:
   }
 
 private:
+  // Whether every pivot of D is positive and finite (CHOLMOD's LDL^T accepts indefinite matrices).
+  static bool has_positive_pivots(const cholmod_factor& factor)
+  {
+    const int* p = static_cast<const int*>(factor.p);
+    const double* value = static_cast<const double*>(factor.x);
+    for (std::size_t j = 0; j < factor.n; ++j) {
+      const double d = value[p[j]]; // the diagonal comes first
+      if (!(d > 0) || !std::isfinite(d))
+        return false;
+    }
+    return true;
+  }
+
   // Copies the simplicial LDL^T factor into supernodes of L sqrt(D); false if a pivot of D is
   // not positive (the matrix is not positive definite).
   bool pack(const cholmod_factor& factor)
