@@ -209,10 +209,15 @@ public:
     }
   }
 
+  // Flow_aligned_deformation calls analyzePattern() then factorize(): both are timed here, in
+  // factorize(), by compute().
+  void analyzePattern(const Sparse_matrix&) {}
+  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
+
   Instrumented_cholmod& compute(const Sparse_matrix& matrix)
   {
     bool supernodal = false;
-    timed_factorization(*this, matrix, [&] {
+    timed_factorization(static_cast<Timed_solve<CholmodSolver>&>(*this), matrix, [&] {
       supernodal = this->m_cholmodFactor && this->m_cholmodFactor->is_super;
       if (ToSimplicial && this->info() == Eigen::Success && supernodal &&
           !cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, this->m_cholmodFactor,
@@ -236,9 +241,14 @@ public:
 template <class EigenSimplicialSolver>
 class Instrumented_eigen : public Timed_solve<EigenSimplicialSolver> {
 public:
+  // Flow_aligned_deformation calls analyzePattern() then factorize(): both are timed here, in
+  // factorize(), by compute().
+  void analyzePattern(const Sparse_matrix&) {}
+  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
+
   Instrumented_eigen& compute(const Sparse_matrix& matrix)
   {
-    timed_factorization(*this, matrix, [] {});
+    timed_factorization(static_cast<Timed_solve<EigenSimplicialSolver>&>(*this), matrix, [] {});
     // Strictly lower part plus the diagonal, as CHOLMOD counts it.
     last_factor_stats.nnz_L = double(this->m_matrix.nonZeros()) + double(this->m_matrix.rows());
     last_factor_stats.flops = -1;
@@ -265,9 +275,14 @@ public:
     this->use_parallelism(Parallel);
   }
 
+  // Flow_aligned_deformation calls analyzePattern() then factorize(): both are timed here, in
+  // factorize(), by compute().
+  void analyzePattern(const Sparse_matrix&) {}
+  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
+
   Instrumented_supernodal& compute(const Sparse_matrix& matrix)
   {
-    timed_factorization(*this, matrix, [] {});
+    timed_factorization(static_cast<Timed_solve<Base>&>(*this), matrix, [] {});
     last_factor_stats.nnz_L = this->number_of_entries();
     last_factor_stats.flops = this->cholmod().fl;
     last_factor_stats.ordering = cholmod_ordering_name(this->ordering());
@@ -282,6 +297,9 @@ public:
 // not the default: it reads the single factor twice, as many bytes as the double one once.
 class Refined_single : public Instrumented_supernodal<float, -1> {
 public:
+  void analyzePattern(const Sparse_matrix&) {}
+  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
+
   Refined_single& compute(const Sparse_matrix& matrix)
   {
     m_matrix = matrix;
@@ -319,6 +337,11 @@ class Warm_conjugate_gradient
   using Base = Eigen::ConjugateGradient<Sparse_matrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>>;
 
 public:
+  // Flow_aligned_deformation calls analyzePattern() then factorize(): both are timed here, in
+  // factorize(), by compute().
+  void analyzePattern(const Sparse_matrix&) {}
+  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
+
   Warm_conjugate_gradient& compute(const Sparse_matrix& matrix)
   {
     this->setTolerance(1e-10);
@@ -326,7 +349,7 @@ public:
     m_previous.resize(0, 0);
     // Eigen's iterative solvers keep a reference to the matrix; the caller's is a temporary.
     m_matrix = matrix;
-    timed_factorization(*this, m_matrix, [] {});
+    timed_factorization(static_cast<Base&>(*this), m_matrix, [] {});
     last_factor_stats.nnz_L = -1;
     last_factor_stats.flops = -1;
     last_factor_stats.ordering = "AMD (Eigen, incomplete)";
