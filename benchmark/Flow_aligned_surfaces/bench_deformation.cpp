@@ -53,6 +53,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
 #include <Eigen/CholmodSupport>
@@ -72,6 +73,7 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -125,6 +127,7 @@ struct Factor_stats {
   double flops = -1; // CHOLMOD's flop count of the numeric factorization; -1 if unknown
   std::string ordering;
   bool supernodal = false;
+  double bytes_per_solve = -1; // bytes of the factor read by one solve (both sweeps); -1 if unknown
 };
 Factor_stats last_factor_stats;
 
@@ -206,10 +209,15 @@ public:
     }
   }
 
+  // Flow_aligned_deformation calls analyzePattern() then factorize(): both are timed here, in
+  // factorize(), by compute().
+  void analyzePattern(const Sparse_matrix&) {}
+  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
+
   Instrumented_cholmod& compute(const Sparse_matrix& matrix)
   {
     bool supernodal = false;
-    timed_factorization(*this, matrix, [&] {
+    timed_factorization(static_cast<Timed_solve<CholmodSolver>&>(*this), matrix, [&] {
       supernodal = this->m_cholmodFactor && this->m_cholmodFactor->is_super;
       if (ToSimplicial && this->info() == Eigen::Success && supernodal &&
           !cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, this->m_cholmodFactor,
@@ -222,6 +230,9 @@ public:
     last_factor_stats.ordering =
         this->m_cholmodFactor ? cholmod_ordering_name(this->m_cholmodFactor->ordering) : "none";
     last_factor_stats.supernodal = supernodal;
+    // The simplicial solve reads a value and a row index per nonzero, and the column pointers.
+    last_factor_stats.bytes_per_solve =
+        supernodal ? -1 : 2 * (common.lnz * (sizeof(double) + sizeof(int)) + 2. * matrix.rows() * sizeof(int));
     return *this;
   }
 };
@@ -230,16 +241,140 @@ public:
 template <class EigenSimplicialSolver>
 class Instrumented_eigen : public Timed_solve<EigenSimplicialSolver> {
 public:
+  // Flow_aligned_deformation calls analyzePattern() then factorize(): both are timed here, in
+  // factorize(), by compute().
+  void analyzePattern(const Sparse_matrix&) {}
+  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
+
   Instrumented_eigen& compute(const Sparse_matrix& matrix)
   {
-    timed_factorization(*this, matrix, [] {});
+    timed_factorization(static_cast<Timed_solve<EigenSimplicialSolver>&>(*this), matrix, [] {});
     // Strictly lower part plus the diagonal, as CHOLMOD counts it.
     last_factor_stats.nnz_L = double(this->m_matrix.nonZeros()) + double(this->m_matrix.rows());
     last_factor_stats.flops = -1;
     last_factor_stats.ordering = "AMD (Eigen)";
     last_factor_stats.supernodal = false;
+    last_factor_stats.bytes_per_solve = -1;
     return *this;
   }
+};
+
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
+// The package's default solver (internal::Supernodal_LLT: CHOLMOD's simplicial LDL^T repacked
+// into supernodes for the solves), in double or single precision, with the ordering chosen by
+// size (Ordering < 0) or forced, its solves swept in sequence or over the threads of TBB's
+// default arena (Parallel).
+template <class FactorScalar, int Ordering, bool Parallel = false>
+class Instrumented_supernodal : public Timed_solve<FAS::internal::Supernodal_LLT<FactorScalar>> {
+  using Base = FAS::internal::Supernodal_LLT<FactorScalar>;
+
+public:
+  Instrumented_supernodal()
+  {
+    this->use_ordering(Ordering);
+    this->use_parallelism(Parallel);
+  }
+
+  // Flow_aligned_deformation calls analyzePattern() then factorize(): both are timed here, in
+  // factorize(), by compute().
+  void analyzePattern(const Sparse_matrix&) {}
+  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
+
+  Instrumented_supernodal& compute(const Sparse_matrix& matrix)
+  {
+    timed_factorization(static_cast<Timed_solve<Base>&>(*this), matrix, [] {});
+    last_factor_stats.nnz_L = this->number_of_entries();
+    last_factor_stats.flops = this->cholmod().fl;
+    last_factor_stats.ordering = cholmod_ordering_name(this->ordering());
+    last_factor_stats.supernodal = this->uses_supernodal_sweeps();
+    last_factor_stats.bytes_per_solve = 2 * this->bytes_per_sweep();
+    return *this;
+  }
+};
+
+// The single-precision factor with one step of iterative refinement in double: x = S(b), then
+// x += S(b - A x) (S the single-precision solve, A kept for the residual).  A lever measured,
+// not the default: it reads the single factor twice, as many bytes as the double one once.
+class Refined_single : public Instrumented_supernodal<float, -1> {
+public:
+  void analyzePattern(const Sparse_matrix&) {}
+  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
+
+  Refined_single& compute(const Sparse_matrix& matrix)
+  {
+    m_matrix = matrix;
+    Instrumented_supernodal<float, -1>::compute(matrix);
+    last_factor_stats.bytes_per_solve *= 2;
+    return *this;
+  }
+
+  template <class Rhs>
+  Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Eigen::MatrixBase<Rhs>& b) const
+  {
+    const double cpu_start = thread_cpu_ms();
+    const auto start = Clock::now();
+    using Result = Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime>;
+    const FAS::internal::Supernodal_LLT<float>& single = *this;
+    Result x = single.solve(b);
+    const Result residual = b - m_matrix.selfadjointView<Eigen::Lower>() * x;
+    x += Result(single.solve(residual));
+    last_solve_stats.wall_ms = ms_since(start);
+    last_solve_stats.cpu_ms = thread_cpu_ms() - cpu_start;
+    return x;
+  }
+
+private:
+  Sparse_matrix m_matrix;
+};
+#endif
+
+// A warm-started preconditioned conjugate gradient (Eigen's, with an incomplete Cholesky
+// preconditioner): each solve starts from the previous solution, which between iterations of the
+// deformation changes little.  FACTOR is the preconditioner's factorization.  Relative residual
+// tolerance 1e-10 (the direct solves reach about 1e-12).
+class Warm_conjugate_gradient
+    : public Eigen::ConjugateGradient<Sparse_matrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> {
+  using Base = Eigen::ConjugateGradient<Sparse_matrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>>;
+
+public:
+  // Flow_aligned_deformation calls analyzePattern() then factorize(): both are timed here, in
+  // factorize(), by compute().
+  void analyzePattern(const Sparse_matrix&) {}
+  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
+
+  Warm_conjugate_gradient& compute(const Sparse_matrix& matrix)
+  {
+    this->setTolerance(1e-10);
+    this->setMaxIterations(5000);
+    m_previous.resize(0, 0);
+    // Eigen's iterative solvers keep a reference to the matrix; the caller's is a temporary.
+    m_matrix = matrix;
+    timed_factorization(static_cast<Base&>(*this), m_matrix, [] {});
+    last_factor_stats.nnz_L = -1;
+    last_factor_stats.flops = -1;
+    last_factor_stats.ordering = "AMD (Eigen, incomplete)";
+    last_factor_stats.supernodal = false;
+    last_factor_stats.bytes_per_solve = -1;
+    return *this;
+  }
+
+  template <class Rhs>
+  Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Eigen::MatrixBase<Rhs>& b) const
+  {
+    const double cpu_start = thread_cpu_ms();
+    const auto start = Clock::now();
+    if (m_previous.rows() != b.rows() || m_previous.cols() != b.cols())
+      m_previous = Eigen::MatrixXd::Zero(b.rows(), b.cols());
+    Eigen::MatrixXd x = Base::solveWithGuess(b, m_previous);
+    m_previous = x;
+    last_solve_stats.wall_ms = ms_since(start);
+    last_solve_stats.cpu_ms = thread_cpu_ms() - cpu_start;
+    return x;
+  }
+
+private:
+  Sparse_matrix m_matrix;
+  mutable Eigen::MatrixXd m_previous;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -299,7 +434,7 @@ struct Convergence_run {
 bool g_use_parallelism = false;
 
 Convergence_run run_to_convergence(const Grid& grid, FAS::Alignment alignment, std::size_t target_faces,
-                                   std::size_t& faces, std::size_t& vertices)
+                                   std::size_t& faces, std::size_t& vertices, bool parallel)
 {
   Mesh tm;
   make_start(tm, alignment, target_faces);
@@ -307,7 +442,7 @@ Convergence_run run_to_convergence(const Grid& grid, FAS::Alignment alignment, s
   vertices = num_vertices(tm);
   const auto construct_start = Clock::now();
   FAS::Flow_aligned_deformation<Mesh, Grid> deformation(tm, grid, alignment,
-                                                        FAS::parameters::use_parallelism(g_use_parallelism));
+                                                        FAS::parameters::use_parallelism(parallel));
   Convergence_run run;
   run.construct_ms = ms_since(construct_start);
   run.factor_ms = deformation.run(0).factor_ms; // no iteration: only the constructor's factorization
@@ -374,29 +509,35 @@ std::vector<Solver_config> solver_configs()
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
   typedef Eigen::CholmodSupernodalLLT<Sparse_matrix> Supernodal;
   typedef Eigen::CholmodSimplicialLDLT<Sparse_matrix> Cholmod_simplicial;
-  configs.push_back({"cholmod_supernodal", "CHOLMOD supernodal LL^T, default ordering strategy",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, -1>>>});
+  configs.push_back({"supernodal_llt",
+                     "the package's Supernodal_LLT: CHOLMOD simplicial LDL^T (default ordering strategy) "
+                     "repacked into supernodes for the solves, double, solves in sequence",
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1>>>});
+  configs.push_back({"supernodal_llt_metis", "the same with METIS's nested dissection at every size",
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, CHOLMOD_METIS>>>});
+  configs.push_back({"supernodal_llt_float", "the same factor rounded to single precision (half the bytes)",
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<float, -1>>>});
+  configs.push_back({"supernodal_llt_float_refined",
+                     "single precision with one step of iterative refinement in double (two single solves)",
+                     measure_solver<CGAL::Eigen_solver_traits<Refined_single>>});
+#ifdef CGAL_LINKED_WITH_TBB
+  configs.push_back({"supernodal_llt_parallel",
+                     "supernodal_llt with the solves swept over independent subtrees on TBB's threads (2 here)",
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1, true>>>});
+#endif
   configs.push_back(
-      {"cholmod_supernodal_amd", "CHOLMOD supernodal LL^T, AMD only (nmethods = 1)",
-       measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, CHOLMOD_AMD>>>});
-  configs.push_back(
-      {"cholmod_supernodal_metis", "CHOLMOD supernodal LL^T, METIS only (nmethods = 1)",
-       measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, CHOLMOD_METIS>>>});
-  configs.push_back({"cholmod_supernodal_to_simplicial",
-                     "CHOLMOD supernodal LL^T (default ordering) converted to simplicial LL^T for the solves",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, -1, true>>>});
-  configs.push_back({"cholmod_auto_ldlt",
-                     "CHOLMOD supernodal LL^T where its flops/nnz(L) switch says so, then simplicial LDL^T "
-                     "without the amalgamation zeros (final_super = 0, final_resymbol)",
-                     measure_solver<CGAL::Eigen_solver_traits<
-                         Instrumented_cholmod<FAS::internal::Cholmod_auto_LDLT<Sparse_matrix>, -1>>>});
-  configs.push_back(
-      {"cholmod_simplicial_ldlt", "CHOLMOD simplicial LDL^T, default ordering strategy",
+      {"cholmod_simplicial_ldlt", "CHOLMOD simplicial LDL^T and its own solve (the former default), default ordering strategy",
        measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Cholmod_simplicial, -1>>>});
+  configs.push_back({"cholmod_supernodal", "CHOLMOD supernodal LL^T and its own solve, default ordering strategy",
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, -1>>>});
 #endif
   configs.push_back(
       {"eigen_simplicial_ldlt", "Eigen SimplicialLDLT (Eigen's AMD)",
        measure_solver<CGAL::Eigen_solver_traits<Instrumented_eigen<Eigen::SimplicialLDLT<Sparse_matrix>>>>});
+  configs.push_back({"warm_conjugate_gradient",
+                     "Eigen's conjugate gradient, incomplete Cholesky preconditioner, started from the previous "
+                     "solution, relative tolerance 1e-10",
+                     measure_solver<CGAL::Eigen_solver_traits<Warm_conjugate_gradient>>});
   return configs;
 }
 
@@ -411,6 +552,8 @@ const char* default_solver_name()
     return "cholmod_simplicial_ldlt";
   if (std::is_same<Default, FAS::internal::Cholmod_auto_LDLT<Sparse_matrix>>::value)
     return "cholmod_auto_ldlt";
+  if (std::is_same<Default, FAS::internal::Supernodal_LLT<double>>::value)
+    return "supernodal_llt";
 #endif
   if (std::is_same<Default, Eigen::SimplicialLDLT<Sparse_matrix>>::value)
     return "eigen_simplicial_ldlt";
@@ -576,6 +719,40 @@ double cpu_seconds()
          1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
+// The read bandwidth of `threads` threads streaming a 256 MiB array (each its own part, four
+// partial sums so that the additions do not wait for each other), GB/s, median of 5 passes: the
+// physical bound of a solve that streams its factor.
+double read_bandwidth_gb_s(unsigned threads)
+{
+  const std::size_t n = (std::size_t(256) << 20) / sizeof(double);
+  std::vector<double> data(n, 1.0);
+  std::vector<double> rates;
+  std::vector<double> sums(threads);
+  for (int pass = 0; pass < 5; ++pass) {
+    const auto start = Clock::now();
+    std::vector<std::thread> workers;
+    for (unsigned t = 0; t < threads; ++t)
+      workers.emplace_back([&, t] {
+        const std::size_t begin = n / threads * t, end = t + 1 == threads ? n : n / threads * (t + 1);
+        double a = 0, b = 0, c = 0, d = 0;
+        std::size_t i = begin;
+        for (; i + 3 < end; i += 4) {
+          a += data[i];
+          b += data[i + 1];
+          c += data[i + 2];
+          d += data[i + 3];
+        }
+        sums[t] = a + b + c + d;
+      });
+    for (std::thread& w : workers)
+      w.join();
+    rates.push_back(double(n * sizeof(double)) / (ms_since(start) * 1e6));
+  }
+  if (std::accumulate(sums.begin(), sums.end(), 0.) != double(n - n % 4))
+    std::cerr << "bench_deformation: bandwidth check sum differs\n";
+  return median(rates);
+}
+
 std::vector<std::size_t> parse_sizes(const std::string& list)
 {
   std::vector<std::size_t> sizes;
@@ -655,6 +832,11 @@ int main(int argc, char** argv)
   std::cerr << "grid " << kGridNodes << "^3 sampled in " << grid_ms << " ms\n";
 
   const std::vector<Solver_config> configs = solver_configs();
+  const double bandwidth_1 = read_bandwidth_gb_s(1);
+  const unsigned cores = (std::max)(1u, std::thread::hardware_concurrency());
+  const double bandwidth_all = read_bandwidth_gb_s(cores);
+  std::cerr << "read bandwidth: " << bandwidth_1 << " GB/s on one thread, " << bandwidth_all << " GB/s on " << cores
+            << "\n";
 
   Json json;
   json.open("", '{');
@@ -698,6 +880,8 @@ int main(int argc, char** argv)
       .value("openblas_num_threads",
              std::getenv("OPENBLAS_NUM_THREADS") ? std::getenv("OPENBLAS_NUM_THREADS") : "unset")
       .value("libraries", loaded_libraries())
+      .value("read_bandwidth_gb_s_1_thread", bandwidth_1)
+      .value("read_bandwidth_gb_s_all_threads", bandwidth_all)
       .close('}');
   {
     std::ostringstream field;
@@ -732,12 +916,13 @@ int main(int argc, char** argv)
     const FAS::Alignment alignments[2] = {FAS::Alignment::ORTHOGONAL, FAS::Alignment::TANGENTIAL};
     std::vector<double> construct_all, factor_all, gtransf_runs, solve_runs, wall_runs, cpu_runs;
     std::vector<double> gtransf_by[2], solve_by[2];
+    std::vector<double> parallel_gtransf, parallel_solve, parallel_final_flux;
     Convergence_run first[2];
     // The solver comparison, interleaved with the convergence runs so that both see the same noise.
     std::vector<std::vector<Solver_sample>> solver_samples(configs.size());
     for (std::size_t r = 0; r < reps; ++r) {
       for (int a = 0; a < 2; ++a) {
-        const Convergence_run run = run_to_convergence(grid, alignments[a], target, faces, vertices);
+        const Convergence_run run = run_to_convergence(grid, alignments[a], target, faces, vertices, g_use_parallelism);
         std::vector<double> g, s, w, u;
         for (std::size_t k = 0; k < run.iterations.size(); ++k) {
           g.push_back(run.iterations[k].gradient_transformation_ms);
@@ -763,6 +948,23 @@ int main(int argc, char** argv)
                   << " ms, factor " << run.factor_ms << " ms, gtransf " << median(g) << " ms, solve "
                   << median(s) << " ms\n";
       }
+#ifdef CGAL_LINKED_WITH_TBB
+      // The same orthogonal run with use_parallelism (TBB's default arena: every core), beside
+      // the single-threaded one in the same repetition.
+      if (!g_use_parallelism) {
+        const Convergence_run run = run_to_convergence(grid, alignments[0], target, faces, vertices, true);
+        std::vector<double> g, s;
+        for (const auto& it : run.iterations) {
+          g.push_back(it.gradient_transformation_ms);
+          s.push_back(it.solve_ms);
+        }
+        parallel_gtransf.push_back(median(g));
+        parallel_solve.push_back(median(s));
+        parallel_final_flux.push_back(run.final_flux);
+        std::cerr << "  orthogonal, use_parallelism: gtransf " << median(g) << " ms, solve " << median(s)
+                  << " ms, final flux " << run.final_flux << "\n";
+      }
+#endif
       for (std::size_t c = 0; c < configs.size(); ++c) {
         solver_samples[c].push_back(configs[c].measure(grid, target));
         const Solver_sample& s = solver_samples[c].back();
@@ -790,6 +992,14 @@ int main(int argc, char** argv)
         .value("step_cpu_ms", median(cpu_runs))
         .array("gtransf_ms_runs", gtransf_runs)
         .array("solve_ms_runs", solve_runs);
+    if (!parallel_gtransf.empty())
+      json.open("parallel", '{')
+          .value("threads", std::size_t(std::thread::hardware_concurrency()))
+          .value("gtransf_ms", median(parallel_gtransf))
+          .value("solve_ms", median(parallel_solve))
+          .value("its_per_s", 1000. / (median(parallel_gtransf) + median(parallel_solve)))
+          .array("final_flux", parallel_final_flux)
+          .close('}');
     json.open("by_alignment", '{');
     for (int a = 0; a < 2; ++a) {
       const Convergence_run& run = first[a];
@@ -840,6 +1050,7 @@ int main(int argc, char** argv)
           .value("supernodal", stats.supernodal)
           .value("nnz_L", stats.nnz_L)
           .value("flops", stats.flops)
+          .value("bytes_per_solve", stats.bytes_per_solve)
           .array("factor_ms_all", f)
           .array("solve_ms_all", s)
           .close('}');
@@ -850,7 +1061,9 @@ int main(int argc, char** argv)
   json.close(']');
 
   const double wall_s = ms_since(program_start) / 1000;
+  const double bandwidth_after = read_bandwidth_gb_s(1);
   json.open("run", '{')
+      .value("read_bandwidth_gb_s_1_thread_after", bandwidth_after)
       .value("wall_s", wall_s)
       .value("cpu_s", cpu_seconds() - cpu_start)
       .value("loadavg_after", read_file_line("/proc/loadavg"))

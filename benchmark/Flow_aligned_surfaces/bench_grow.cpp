@@ -11,7 +11,8 @@
 // split it: offset_ms (selection, offset, raw strip), remesh_ms (split_long_edges and
 // isotropic_remeshing), m0_map_ms (new vertices located in M_0, appended to the mesh, mesh
 // arrays), check_ms (the grown surface checked: manifold, no new face cutting through another),
-// factor_ms (operators on M_0 and the factorization).  Single-threaded: run with
+// factor_ms (operators on M_0 and the factorization), split by construction_report() into
+// operators_ms, constraints_ms, analyze_ms (symbolic analysis) and factorize_ms (numeric).  Single-threaded: run with
 // OMP_NUM_THREADS=1 (CHOLMOD links OpenMP).  With CHOLMOD, the same with the supernodal LL^T
 // solver (template parameter SparseLinearSolver), which factors faster at 8e4 faces.  grow_cpu_ms is the thread CPU time of grow(), the
 // figure to trust on a shared machine; construct_ms the constructor (operators and the first
@@ -33,6 +34,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <sys/resource.h>
 #include <time.h>
 
 #include <chrono>
@@ -47,6 +49,14 @@ double thread_cpu_ms()
   timespec t;
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
+}
+
+// Minor page faults of the process: first touches of fresh memory, ~10 us each on this VM.
+long minor_faults()
+{
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_minflt;
 }
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -67,6 +77,7 @@ void BM_grow_and_refactor(benchmark::State& state)
   const std::size_t faces = static_cast<std::size_t>(state.range(0));
   const double h = std::sqrt(2.0 / (std::sqrt(3.0) * double(faces)));
   double cpu = 0, construct = 0, offset = 0, remesh = 0, map = 0, check = 0, factor = 0, new_faces = 0, total_faces = 0;
+  double operators = 0, constraints = 0, analyze = 0, factorize = 0, faults = 0;
   const Flow flow(K::Point_3(0, 0, 0), 1.0); // held by reference by the deformation
   for (auto _ : state) {
     Mesh tm;
@@ -78,17 +89,24 @@ void BM_grow_and_refactor(benchmark::State& state)
     construct +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - constructing).count();
     deformation->run(3);
+    const long faults_start = minor_faults();
     const double cpu_start = thread_cpu_ms();
     const auto start = std::chrono::steady_clock::now();
     const FAS::Growth_report report = deformation->grow(2 * h);
     const auto end = std::chrono::steady_clock::now();
     cpu += thread_cpu_ms() - cpu_start;
+    faults += double(minor_faults() - faults_start);
     state.SetIterationTime(std::chrono::duration<double>(end - start).count());
     offset += report.offset_ms;
     remesh += report.remesh_ms;
     map += report.reference_map_ms;
     check += report.check_ms;
     factor += report.factor_ms;
+    const FAS::Construction_report& rebuild = deformation->construction_report();
+    operators += rebuild.operators_ms;
+    constraints += rebuild.constraints_ms;
+    analyze += rebuild.analyze_ms;
+    factorize += rebuild.factorize_ms;
     new_faces += double(report.number_of_new_faces);
     total_faces += double(tm.number_of_faces());
     benchmark::DoNotOptimize(deformation);
@@ -101,6 +119,11 @@ void BM_grow_and_refactor(benchmark::State& state)
   state.counters["m0_map_ms"] = map / n;
   state.counters["check_ms"] = check / n;
   state.counters["factor_ms"] = factor / n;
+  state.counters["minor_faults"] = faults / n;
+  state.counters["operators_ms"] = operators / n;
+  state.counters["constraints_ms"] = constraints / n;
+  state.counters["analyze_ms"] = analyze / n;
+  state.counters["factorize_ms"] = factorize / n;
   state.counters["new_faces"] = new_faces / n;
   state.counters["faces_after"] = total_faces / n;
 }

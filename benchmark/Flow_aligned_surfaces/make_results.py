@@ -135,8 +135,8 @@ def solver_section(data):
     out.append(f'FACTOR = symbolic analysis + numeric factorization (wall clock; thread CPU time beside it); '
                f'SOLVE = median of {data["setup"]["solver_steps"]} iterations (the three coordinates at once).  '
                'nnz(L) and flops are CHOLMOD\'s counts from the analysis.\n')
-    out.append("| faces | solver | ordering | FACTOR ms | analyze | numeric | FACTOR cpu | SOLVE ms | nnz(L) | flops |")
-    out.append("|---:|---|---|---:|---:|---:|---:|---:|---:|---:|")
+    out.append("| faces | solver | ordering | FACTOR ms | analyze | numeric | FACTOR cpu | SOLVE ms | nnz(L) | MB per solve | flops |")
+    out.append("|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     for s in data["sizes"]:
         best_factor = min(c["factor_ms"] for c in s["solvers"])
         best_solve = min(c["solve_ms"] for c in s["solvers"])
@@ -149,11 +149,47 @@ def solver_section(data):
                 sv = f"**{sv}**"
             default = " (default)" if c["name"] == s["default_solver"] else ""
             flops = fmt(c["flops"]) if c.get("flops") not in (None, -1) else "–"
+            mb = fmt(c["bytes_per_solve"] / 1e6) if c.get("bytes_per_solve", -1) not in (None, -1) else "–"
+            nnz = fmt(c["nnz_L"]) if c.get("nnz_L", -1) not in (None, -1) else "–"
             out.append(f'| {s["faces"]:,} | `{c["name"]}`{default} | {c["ordering"]} | {f} | {fmt(c["analyze_ms"])} '
-                       f'| {fmt(c["numeric_ms"])} | {fmt(c["factor_cpu_ms"])} | {sv} | {fmt(c["nnz_L"])} | {flops} |')
+                       f'| {fmt(c["numeric_ms"])} | {fmt(c["factor_cpu_ms"])} | {sv} | {nnz} | {mb} | {flops} |')
     out.append("")
     out.append("Solvers: " + "; ".join(f'`{c["name"]}`: {c["description"].replace(" (package default)", "")}' for c in data["sizes"][0]["solvers"]) + ".\n"
                if data["sizes"] else "")
+    return out
+
+
+def limits_section(data):
+    """Issue 18: the bytes a solve streams against the bandwidth measured in the same run, and
+    the rate on every core (use_parallelism) beside the single-threaded one."""
+    m = data["machine"]
+    bandwidth = m.get("read_bandwidth_gb_s_1_thread")
+    if bandwidth is None:
+        return []
+    after = data["run"].get("read_bandwidth_gb_s_1_thread_after")
+    out = ["### The physical limit of SOLVE, and both cores\n"]
+    out.append(f'Read bandwidth measured in this run (one thread streaming 256 MiB, median of 5): '
+               f'{fmt(bandwidth)} GB/s before the sizes, {fmt(after)} GB/s after; '
+               f'{fmt(m.get("read_bandwidth_gb_s_all_threads"))} GB/s on all {m["hardware_threads"]} threads.  '
+               'Bytes: the factor read by the two sweeps of one solve (values and row indices), the '
+               'least any direct solve with this factor must stream; bound = bytes / bandwidth.  '
+               'The parallel columns repeat the orthogonal run with `use_parallelism(true)` '
+               '(TBB over the faces and over independent subtrees of the elimination tree).\n')
+    out.append("| faces | solver | nnz(L) | MB per solve | bound ms | SOLVE ms | SOLVE / bound "
+               "| parallel GTRANSF ms | parallel SOLVE ms | parallel IT/s | parallel / serial IT/s |")
+    out.append("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for s in data["sizes"]:
+        default = next((c for c in s["solvers"] if c["name"] == s["default_solver"]), None)
+        if default is None or default.get("bytes_per_solve", -1) in (None, -1):
+            continue
+        mb = default["bytes_per_solve"] / 1e6
+        bound = default["bytes_per_solve"] / (bandwidth * 1e6)
+        par = s.get("parallel")
+        par_cells = (f'| {fmt(par["gtransf_ms"])} | {fmt(par["solve_ms"])} | {fmt(par["its_per_s"])} '
+                     f'| {fmt(par["its_per_s"] / s["its_per_s"], 2)}× |') if par else "| – | – | – | – |"
+        out.append(f'| {s["faces"]:,} | `{default["name"]}` | {fmt(default["nnz_L"])} | {fmt(mb)} | {fmt(bound)} '
+                   f'| {fmt(s["solve_ms"])} | {fmt(s["solve_ms"] / bound, 2)}× {par_cells}')
+    out.append("")
     return out
 
 
@@ -230,6 +266,7 @@ def main():
             lines += table1_section(json.load(f), label)
     lines += convergence_section(data)
     lines += solver_section(data)
+    lines += limits_section(data)
     lines += machine_section(data, args.command)
     if args.grid:
         with open(args.grid) as f:

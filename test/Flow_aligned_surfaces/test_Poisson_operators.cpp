@@ -2,6 +2,7 @@
 // functions, the cotangent formula, and the identities L = G^T A G, D G = L.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Flow_aligned_surfaces/grow_boundary.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
@@ -10,8 +11,10 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 // This file's tests and helpers in a namespace of their own: the suite is compiled in unity
 // batches (test/Flow_aligned_surfaces/CMakeLists.txt), where files share a translation unit.
@@ -94,6 +97,112 @@ TEST(PoissonOperators, LaplacianEqualsCotangentFormula)
     }
   EXPECT_LT((Eigen::MatrixXd(patch.ops.L) - expected).cwiseAbs().maxCoeff(),
             1e-10 * expected.cwiseAbs().maxCoeff());
+}
+
+// L is assembled column by column without triplets (issue 18); it must be the matrix that
+// Eigen's setFromTriplets() makes of the faces' stiffness matrices, entry for entry and bit for
+// bit (the same sums in the same order), also with the vertices in a random order and on a mesh
+// of two components with a boundary.  Fails if an entry is missing, duplicated, misplaced or
+// summed in another order.
+TEST(PoissonOperators, LaplacianIsTheTripletAssemblyOfTheFaceStiffnesses)
+{
+  Mesh tm;
+  FAS::make_disk_patch(tm, K::Point_3(0.1, -0.2, 0.3), K::Vector_3(0.2, 0.1, 1), 1.0, 300);
+  FAS::make_planar_patch(tm, K::Point_3(3, 0, 0), K::Vector_3(1, 1, 1), 1.0, 0.5, 200);
+  for (auto v : tm.vertices()) {
+    const K::Point_3 p = tm.point(v);
+    tm.point(v) = K::Point_3(p.x(), p.y(), p.z() + 0.3 * (p.x() * p.x() - 0.5 * p.y() * p.y()));
+  }
+  std::vector<std::size_t> order(num_vertices(tm));
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937(18));
+  auto vim = tm.add_property_map<Mesh::Vertex_index, std::size_t>("v:shuffled").first;
+  for (auto v : tm.vertices())
+    vim[v] = order[std::size_t(v)];
+  const FASI::Positions x = FASI::read_positions(FASI::vertices_in_index_order(tm, vim), tm.points());
+  const FASI::Mesh_arrays arrays = FASI::make_mesh_arrays(tm, vim, get(CGAL::face_index, tm));
+  ASSERT_EQ(arrays.number_of_components, 2u);
+  const auto ops =
+      std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(x, arrays.face_vertices, false));
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const FASI::Reference_face& face : ops.faces)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k)
+        triplets.emplace_back(face.vertices[i], face.vertices[k], face.stiffness(i, k));
+  Eigen::SparseMatrix<double> expected(x.rows(), x.rows());
+  expected.setFromTriplets(triplets.begin(), triplets.end());
+
+  ASSERT_TRUE(ops.L.isCompressed());
+  ASSERT_EQ(ops.L.nonZeros(), expected.nonZeros());
+  for (Eigen::Index c = 0; c <= x.rows(); ++c)
+    ASSERT_EQ(ops.L.outerIndexPtr()[c], expected.outerIndexPtr()[c]) << "column " << c;
+  for (Eigen::Index k = 0; k < expected.nonZeros(); ++k) {
+    EXPECT_EQ(ops.L.innerIndexPtr()[k], expected.innerIndexPtr()[k]) << "entry " << k;
+    EXPECT_EQ(ops.L.valuePtr()[k], expected.valuePtr()[k]) << "entry " << k;
+  }
+}
+
+void expect_same_operators(const FASI::Poisson_operators& got, const FASI::Poisson_operators& expected)
+{
+  ASSERT_EQ(got.faces.size(), expected.faces.size());
+  for (std::size_t j = 0; j < expected.faces.size(); ++j) {
+    ASSERT_EQ(got.faces[j].vertices, expected.faces[j].vertices) << "face " << j;
+    ASSERT_EQ(got.faces[j].area, expected.faces[j].area) << "face " << j;
+    ASSERT_EQ(got.faces[j].stiffness, expected.faces[j].stiffness) << "face " << j;
+  }
+  ASSERT_EQ(got.face_areas, expected.face_areas);
+  ASSERT_TRUE(got.L.isCompressed());
+  ASSERT_EQ(got.L.rows(), expected.L.rows());
+  ASSERT_EQ(got.L.cols(), expected.L.cols());
+  ASSERT_EQ(got.L.nonZeros(), expected.L.nonZeros());
+  for (Eigen::Index c = 0; c <= expected.L.cols(); ++c)
+    ASSERT_EQ(got.L.outerIndexPtr()[c], expected.L.outerIndexPtr()[c]) << "column " << c;
+  for (Eigen::Index k = 0; k < expected.L.nonZeros(); ++k) {
+    ASSERT_EQ(got.L.innerIndexPtr()[k], expected.L.innerIndexPtr()[k]) << "entry " << k;
+    ASSERT_EQ(got.L.valuePtr()[k], expected.L.valuePtr()[k]) << "entry " << k;
+  }
+}
+
+// After grow_boundary() (new vertices and faces after the old ones), the old operators extended
+// by extend_poisson_operators() are those made from scratch on the grown mesh, to the last bit,
+// three times in a row (the first extension reallocates, the next ones work in place in the
+// room the first left).  The old vertices are numbered in a random order, so that columns
+// without new entries lie between columns with some and must be moved.  Fails if a column is
+// misplaced while moving, an entry is lost or added twice in the merge, or the sums are made in
+// another order.
+TEST(PoissonOperators, ExtendedOperatorsOfAGrownMeshAreTheOperatorsOfTheWholeMesh)
+{
+  Mesh tm;
+  FAS::make_disk_patch(tm, K::Point_3(0.1, -0.2, 0.3), K::Vector_3(0.2, 0.1, 1), 1.0, 300);
+  std::vector<std::size_t> order(num_vertices(tm));
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937(18));
+  auto vim = tm.add_property_map<Mesh::Vertex_index, std::size_t>("v:order").first;
+  for (auto v : tm.vertices())
+    vim[v] = std::size_t(v) < order.size() ? order[std::size_t(v)] : std::size_t(v);
+  const auto fim = get(CGAL::face_index, tm);
+  auto positions = [&] { return FASI::read_positions(FASI::vertices_in_index_order(tm, vim), tm.points()); };
+  FASI::Mesh_arrays arrays = FASI::make_mesh_arrays(tm, vim, fim);
+  auto ops = std::get<FASI::Poisson_operators>(
+      FASI::make_poisson_operators(positions(), arrays.face_vertices, false));
+  for (int round = 0; round < 3; ++round) {
+    const std::size_t old_faces = num_faces(tm), old_vertices = num_vertices(tm);
+    FAS::grow_boundary(tm, 0.1);
+    ASSERT_GT(num_faces(tm), old_faces);
+    ASSERT_GT(num_vertices(tm), old_vertices);
+    for (auto v : tm.vertices()) // Surface_mesh numbers the new vertices after the old ones
+      if (std::size_t(v) >= old_vertices)
+        vim[v] = std::size_t(v);
+    arrays = FASI::make_mesh_arrays(tm, vim, fim);
+    const FASI::Positions x = positions();
+    ASSERT_FALSE(FASI::extend_poisson_operators(ops, x, arrays.face_vertices));
+    const auto expected =
+        std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(x, arrays.face_vertices, false));
+    expect_same_operators(ops, expected);
+  }
 }
 
 TEST(PoissonOperators, DivergenceOfGradientIsLaplacian)

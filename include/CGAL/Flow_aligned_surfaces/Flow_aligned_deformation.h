@@ -24,6 +24,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/parametrization.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
+#include <CGAL/Flow_aligned_surfaces/internal/timed_factorization.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/Default.h>
@@ -45,12 +46,26 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
+
+/// \ingroup PkgFlowAlignedSurfacesRef
+/// Where the time of the last preparation of a `Flow_aligned_deformation` went: its constructor,
+/// or the rebuild of the operators after `grow()` (then the check and mesh-array phases are
+/// `grow()`'s own, reported in its `Growth_report`, and are 0 here).  Wall-clock milliseconds.
+struct Construction_report {
+  double check_ms = 0;       ///< the mesh checked (triangles, manifold, finite positions)
+  double mesh_arrays_ms = 0; ///< the mesh flattened into arrays (faces, interior edges, components)
+  double operators_ms = 0;   ///< the Poisson operators assembled on \f$ M_0 \f$
+  double constraints_ms = 0; ///< the constrained faces chosen and \f$ L + W \f$ formed
+  double analyze_ms = 0;     ///< the symbolic analysis (fill-reducing ordering, elimination tree)
+  double factorize_ms = 0;   ///< the numeric factorization
+};
 
 /*!
 \ingroup PkgFlowAlignedSurfacesRef
@@ -72,11 +87,12 @@ discretized; iterations never accumulate errors because they always reconstruct 
 \tparam GeomTraits a model of `Kernel`; default: the kernel of the point type
 \tparam SparseLinearSolver a model of `SparseLinearAlgebraWithFactorTraits_d` wrapping an Eigen
         sparse Cholesky solver, such as `CGAL::Eigen_solver_traits<S>`; its `solver()` is used to
-        factor once and solve the three coordinates at once.  Default:
-        `CGAL::Eigen_solver_traits<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>>>`
-        when CHOLMOD was found (the macro `CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD`), else
-        `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`; both run
-        on the calling thread only (see \ref fas_threads).
+        factor once and solve the three coordinates at once.  Default: when CHOLMOD was found
+        (the macro `CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD`), CHOLMOD's simplicial \f$ LDL^T \f$
+        factorization, whose factor the package repacks by supernodes for its own
+        back-substitutions (swept over independent subtrees in parallel with `use_parallelism`),
+        else `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`;
+        both run on the calling thread only unless parallelism is asked for (see \ref fas_threads).
 
 The field is held by reference, not copied, as the mesh is: both must outlive this object.
 
@@ -112,6 +128,7 @@ public:
 
 private:
   using Positions = internal::Positions;
+  using Row_positions = internal::Row_positions;
 
 public:
   /// \name Construction
@@ -195,7 +212,9 @@ public:
     \cgalParamNBegin{use_parallelism}
       \cgalParamDescription{whether the field is sampled and the faces are transformed in
         parallel (with TBB, when the macro `CGAL_LINKED_WITH_TBB` is defined, as the CMake target
-        `CGAL::Flow_aligned_surfaces` does when TBB is found, and for 4096 faces or more), in the
+        `CGAL::Flow_aligned_surfaces` does when TBB is found, and for 4096 faces or more), and,
+        with the default solver, the back-substitutions swept over independent subtrees of the
+        elimination tree in parallel, in the
         TBB task arena that `step()` is called from: a caller limits the threads with its own
         `tbb::task_arena`.  The field's `operator()` must then be safe to call concurrently.  The
         surfaces are the same either way.  Without it (the default) this object runs on the
@@ -231,6 +250,7 @@ public:
     m_area_correction = choose_parameter(get_parameter(np, fnp::area_correction_t()), true);
     m_relative_constraint_weight = choose_parameter(get_parameter(np, fnp::constraint_weight_t()), 1e-3);
     m_parallel = choose_parameter(get_parameter(np, fnp::use_parallelism_t()), false);
+    internal::use_parallelism_in(m_solver.solver(), m_parallel);
     check_parameter("max_rotation_angle", m_eta, m_eta > 0 && m_eta <= CGAL_PI);
     check_parameter("convergence_angle", m_epsilon, m_epsilon >= 0);
     check_parameter("convergence_step", m_convergence_step, m_convergence_step >= 0);
@@ -241,14 +261,20 @@ public:
     m_cos_eta = std::cos((std::min)(m_eta, CGAL_PI / 2));
     m_sin_eta = std::sin((std::min)(m_eta, CGAL_PI / 2));
 
+    using Clock = std::chrono::steady_clock;
+    const auto checking = Clock::now();
     internal::check_triangle_mesh(tm, "Flow_aligned_deformation: tm");
     const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
     const auto fim = CGAL::get_initialized_face_index_map(tm, np);
     m_vertices = internal::vertices_in_index_order(tm, vim);
-    m_arrays = internal::make_mesh_arrays(tm, vim, fim);
     m_reference = internal::read_positions(m_vertices, m_vpm);
     internal::check_finite_positions(m_reference, "Flow_aligned_deformation: tm");
+    const auto flattening = Clock::now();
+    m_arrays = internal::make_mesh_arrays(tm, vim, fim);
+    const auto flattened = Clock::now();
     rebuild_operators(m_reference);
+    m_construction.check_ms = milliseconds_between(checking, flattening);
+    m_construction.mesh_arrays_ms = milliseconds_between(flattening, flattened);
   }
 
   /// The field is held by reference: a temporary would be destroyed before the first
@@ -272,78 +298,50 @@ public:
     Iteration_report report;
     report.iteration = ++m_number_of_iterations;
 
-    const Positions x = internal::read_positions(m_vertices, m_vpm);
+    // Into buffers kept between iterations: the positions, the right-hand side and the solution
+    // are each a few megabytes at 1e5 faces, and fresh memory costs a page fault per 4 KiB.
+    // Row by row, so that the three coordinates of a vertex are read and written together.
+    internal::read_positions(m_vertices, m_vpm, m_positions);
+    const Row_positions& x = m_positions;
     // The user may have moved vertices since the last iteration.
     internal::check_finite_positions(x, "Flow_aligned_deformation::step(): tm");
     const std::size_t n = m_ops.faces.size();
-    m_transforms.resize(n);
     m_normals.resize(n);
     m_has_normal.assign(n, 0);
 
+    // Right-hand side D Y' + W X_c; face j contributes K_j X_j T_j^T (K_j its M_0 stiffness),
+    // T_j its local transformation, each face's term added as soon as T_j is known (one pass
+    // over the faces, nothing stored per face but its normal for the fold test).
+    m_rhs.setZero(x.rows(), 3);
+    for (Eigen::Index v : m_constrained_vertices)
+      m_rhs.row(v) = m_constraint_weight * x.row(v);
     Face_pass face_pass;
 #ifdef CGAL_LINKED_WITH_TBB
     // Faces are independent; below a few thousand the threads cost more than they save.  The
     // algorithm runs in the caller's task arena (tbb::this_task_arena), so a caller's
     // tbb::task_arena bounds the threads.
     if (m_parallel && n >= 4096)
-      face_pass = tbb::parallel_reduce(
-          tbb::blocked_range<std::size_t>(0, n, 1024), Face_pass(),
-          [&](const tbb::blocked_range<std::size_t>& range, Face_pass partial) {
-            transform_faces(x, range.begin(), range.end(), partial);
-            return partial;
-          },
-          [](Face_pass left, const Face_pass& right) {
-            left.join(right);
-            return left;
-          });
+      face_pass = parallel_face_pass(x);
     else
 #endif
-      transform_faces(x, 0, n, face_pass);
+    {
+      for (std::size_t j = 0; j < n; ++j) {
+        const Eigen::Matrix3d term = face_term(x, j, transform_face(x, j, face_pass));
+        const auto& vertices = m_ops.faces[j].vertices;
+        for (int i = 0; i < 3; ++i)
+          m_rhs.row(vertices[i]) += term.row(i);
+      }
+    }
     report.number_of_outside_samples = face_pass.outside;
     report.number_of_invalid_samples = face_pass.invalid;
     report.number_of_zero_samples = face_pass.zero;
     report.normalized_flux = face_pass.flux.result();
     report.max_rotation_angle = face_pass.largest_requested.radians();
-
-    // Fold correction: open every crease sharper than theta_max by delta/2 on each side.
-    for (const auto& edge : m_arrays.interior_edges) {
-      const std::size_t p = edge.faces[0], q = edge.faces[1];
-      if (!m_has_normal[p] || !m_has_normal[q])
-        continue;
-      // Cheap rejection of the unfolded edges, nearly all of them; the margin sends every edge
-      // near theta_max to the exact test.
-      if (m_normals[p].dot(m_normals[q]) >= m_cos_theta_max_margin)
-        continue;
-      const double theta = internal::angle_between(m_normals[p], m_normals[q]);
-      const double delta = theta - m_theta_max;
-      if (!(delta > 0))
-        continue;
-      Eigen::Vector3d axis = m_normals[p].cross(m_normals[q]);
-      // Exactly opposite normals: any axis orthogonal to both opens the fold; the shared edge is one.
-      if (axis.norm() < 1e-12)
-        axis = x.row(edge.vertices[1]) - x.row(edge.vertices[0]);
-      axis.normalize();
-      m_transforms[p] = internal::rotation_matrix(axis, delta / 2) * m_transforms[p];
-      m_transforms[q] = internal::rotation_matrix(-axis, delta / 2) * m_transforms[q];
-      ++report.number_of_folds;
-    }
-
-    // Right-hand side D Y' + W X_c; face j contributes K_j X_j T_j^T (K_j its M_0 stiffness).
-    m_rhs.setZero(x.rows(), 3);
-    for (Eigen::Index v : m_constrained_vertices)
-      m_rhs.row(v) = m_constraint_weight * x.row(v);
-    for (std::size_t j = 0; j < n; ++j) {
-      const internal::Reference_face& face = m_ops.faces[j];
-      Eigen::Matrix3d local;
-      for (int i = 0; i < 3; ++i)
-        local.row(i) = x.row(face.vertices[i]);
-      const Eigen::Matrix3d contribution = face.stiffness * local * m_transforms[j].transpose();
-      for (int i = 0; i < 3; ++i)
-        m_rhs.row(face.vertices[i]) += contribution.row(i);
-    }
+    report.number_of_folds = correct_folds(x);
     const auto transformed = Clock::now();
 
-    Positions next = m_solver.solver().solve(m_rhs);
+    m_next = m_solver.solver().solve(m_rhs);
+    const Row_positions& next = m_next;
     const auto solved = Clock::now();
     if (m_solver.solver().info() != Eigen::Success || !next.allFinite())
       throw std::runtime_error("Flow_aligned_deformation::step(): the Poisson solve failed");
@@ -528,7 +526,7 @@ public:
       put(fim, f, face_index++);
     m_arrays = internal::make_mesh_arrays(m_tm, vim, fim);
     const auto factor_start = std::chrono::steady_clock::now();
-    rebuild_operators(m_reference);
+    rebuild_operators(m_reference, true);
     const auto end = std::chrono::steady_clock::now();
 
     Growth_report report = strip.report;
@@ -698,6 +696,11 @@ public:
   {
     return m_number_of_factorizations;
   }
+  /// Where the time of the constructor, or of the last `grow()`'s rebuild of the operators, went.
+  const Construction_report& construction_report() const
+  {
+    return m_construction;
+  }
   /// The report of the last iteration.
   const Iteration_report& last_report() const
   {
@@ -720,12 +723,19 @@ private:
                                   std::to_string(value) + " is out of range");
   }
 
+  static double milliseconds_between(std::chrono::steady_clock::time_point start,
+                                     std::chrono::steady_clock::time_point end)
+  {
+    return std::chrono::duration<double, std::milli>(end - start).count();
+  }
+
   static Eigen::Vector3d to_eigen(const Vector_3& v)
   {
     return Eigen::Vector3d(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
   }
 
-  static double bounding_box_diagonal(const Positions& x)
+  template <class Matrix>
+  static double bounding_box_diagonal(const Matrix& x)
   {
     return (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
   }
@@ -764,64 +774,173 @@ private:
     double twice_area = 0;
     bool sampled = false;
   };
-  static Current_face current_face(const Positions& x, const internal::Reference_face& face)
+  template <class Matrix>
+  static Current_face current_face(const Matrix& x, const internal::Reference_face& face)
   {
     Current_face current;
-    const Eigen::Vector3d a = x.row(face.vertices[0]), b = x.row(face.vertices[1]),
-                          c = x.row(face.vertices[2]);
+    const Eigen::Vector3d a = x.row(face.vertices[0]).transpose(), b = x.row(face.vertices[1]).transpose(),
+                          c = x.row(face.vertices[2]).transpose();
     const Eigen::Vector3d cross = (b - a).cross(c - a);
     current.twice_area = cross.norm();
     if (!(current.twice_area > 0) || !std::isfinite(current.twice_area))
       return current;
-    current.normal = cross / current.twice_area;
+    current.normal = cross * (1 / current.twice_area);
     current.centroid = (a + b + c) / 3;
     current.sampled = true;
     return current;
   }
 
-  // The local transformation T_j of the faces [begin, end) of the current positions `x`:
-  // samples the field at the centroid, rotates toward alignment and corrects the area.
-  void transform_faces(const Positions& x, std::size_t begin, std::size_t end, Face_pass& pass)
+  // The local transformation T_j of face j of the current positions `x`: samples the field at
+  // the centroid, rotates toward alignment and corrects the area; records the face's normal for
+  // the fold test and its sample in `pass`.
+  template <class Matrix>
+  Eigen::Matrix3d transform_face(const Matrix& x, std::size_t j, Face_pass& pass)
   {
-    auto construct_point = m_gt.construct_point_3_object();
-    for (std::size_t j = begin; j < end; ++j) {
-      const internal::Reference_face& face = m_ops.faces[j];
-      const Current_face current = current_face(x, face);
-      Eigen::Matrix3d& t = m_transforms[j];
-      t.setIdentity();
-      // A face collapsed by the user has no normal; it keeps its gradients (T = I).
-      if (!current.sampled)
-        continue;
-      const Eigen::Vector3d& normal = current.normal;
-      m_normals[j] = normal;
-      m_has_normal[j] = true;
+    const internal::Reference_face& face = m_ops.faces[j];
+    const Current_face current = current_face(x, face);
+    // A face collapsed by the user has no normal; it keeps its gradients (T = I).
+    if (!current.sampled)
+      return Eigen::Matrix3d::Identity();
+    const Eigen::Vector3d& normal = current.normal;
+    m_normals[j] = normal;
+    m_has_normal[j] = true;
 
-      const Eigen::Vector3d& centroid = current.centroid;
-      const internal::Flow_sample sample =
-          internal::sample_flow(m_field, construct_point(centroid.x(), centroid.y(), centroid.z()));
-      const double area = 0.5 * current.twice_area;
-      pass.flux.add(area, internal::face_flux(normal, sample));
-      switch (sample.kind) {
-      case internal::Sample_kind::OUTSIDE:
-        ++pass.outside;
-        break;
-      case internal::Sample_kind::INVALID:
-        ++pass.invalid;
-        break;
-      case internal::Sample_kind::ZERO:
-        ++pass.zero;
-        break;
-      case internal::Sample_kind::VALID: {
-        Rotation_angle requested;
-        t = alignment_rotation(normal, sample.direction, requested);
-        if (requested.key() > pass.largest_requested.key())
-          pass.largest_requested = requested;
-        break;
-      }
-      }
-      if (m_area_correction)
-        t *= std::sqrt(face.area / area);
+    auto construct_point = m_gt.construct_point_3_object();
+    const Eigen::Vector3d& centroid = current.centroid;
+    const internal::Flow_sample sample =
+        internal::sample_flow(m_field, construct_point(centroid.x(), centroid.y(), centroid.z()));
+    const double area = 0.5 * current.twice_area;
+    pass.flux.add(area, internal::face_flux(normal, sample));
+    Eigen::Matrix3d t = Eigen::Matrix3d::Identity();
+    switch (sample.kind) {
+    case internal::Sample_kind::OUTSIDE:
+      ++pass.outside;
+      break;
+    case internal::Sample_kind::INVALID:
+      ++pass.invalid;
+      break;
+    case internal::Sample_kind::ZERO:
+      ++pass.zero;
+      break;
+    case internal::Sample_kind::VALID: {
+      Rotation_angle requested;
+      t = alignment_rotation(normal, sample.direction, requested);
+      if (requested.key() > pass.largest_requested.key())
+        pass.largest_requested = requested;
+      break;
     }
+    }
+    if (m_area_correction)
+      t *= std::sqrt(face.area / area);
+    return t;
+  }
+
+  // Face j's term K_j X_j T^T of the right-hand side, one row per corner.
+  Eigen::Matrix3d face_term(const Row_positions& x, std::size_t j, const Eigen::Matrix3d& t) const
+  {
+    const internal::Reference_face& face = m_ops.faces[j];
+    Eigen::Matrix3d local;
+    for (int i = 0; i < 3; ++i)
+      local.row(i) = x.row(face.vertices[i]);
+    return face.stiffness * local * t.transpose();
+  }
+
+#ifdef CGAL_LINKED_WITH_TBB
+  // The pass over the faces on the threads of the caller's arena: the terms of the faces are
+  // computed in parallel, then each vertex adds those of its faces in face order, as the serial
+  // pass does, so that the right-hand side is the same bit for bit.
+  Face_pass parallel_face_pass(const Row_positions& x)
+  {
+    const std::size_t n = m_ops.faces.size();
+    m_terms.resize(n);
+    const Face_pass pass = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, n, 1024), Face_pass(),
+        [&](const tbb::blocked_range<std::size_t>& range, Face_pass partial) {
+          for (std::size_t j = range.begin(); j != range.end(); ++j)
+            m_terms[j] = face_term(x, j, transform_face(x, j, partial));
+          return partial;
+        },
+        [](Face_pass left, const Face_pass& right) {
+          left.join(right);
+          return left;
+        });
+    if (m_corner_offsets.size() != std::size_t(x.rows()) + 1)
+      make_vertex_corners(std::size_t(x.rows()));
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, std::size_t(x.rows()), 2048),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t v = range.begin(); v != range.end(); ++v)
+                          for (std::size_t c = m_corner_offsets[v]; c != m_corner_offsets[v + 1]; ++c)
+                            m_rhs.row(Eigen::Index(v)) += m_terms[m_corners[c] / 3].row(int(m_corners[c] % 3));
+                      });
+    return pass;
+  }
+
+  // For every vertex, its corners (3 j + i: corner i of face j) in increasing face order.
+  void make_vertex_corners(std::size_t number_of_vertices)
+  {
+    m_corner_offsets.assign(number_of_vertices + 1, 0);
+    for (const internal::Reference_face& face : m_ops.faces)
+      for (Eigen::Index v : face.vertices)
+        ++m_corner_offsets[std::size_t(v) + 1];
+    for (std::size_t v = 0; v < number_of_vertices; ++v)
+      m_corner_offsets[v + 1] += m_corner_offsets[v];
+    m_corners.resize(3 * m_ops.faces.size());
+    std::vector<std::size_t> next(m_corner_offsets.begin(), m_corner_offsets.end() - 1);
+    for (std::size_t j = 0; j < m_ops.faces.size(); ++j)
+      for (int i = 0; i < 3; ++i)
+        m_corners[next[std::size_t(m_ops.faces[j].vertices[i])]++] = 3 * j + std::size_t(i);
+  }
+#endif
+
+  // Fold correction: opens every crease sharper than theta_max by delta/2 on each side, that is
+  // T_p becomes R T_p, and replaces the faces' terms in the right-hand side accordingly.
+  // Returns the number of folded edges.
+  std::size_t correct_folds(const Row_positions& x)
+  {
+    std::vector<std::pair<std::size_t, Eigen::Matrix3d>> folded; // face, product of its fold rotations
+    m_fold_slot.resize(m_ops.faces.size(), -1);                  // face -> its place in `folded`
+    auto rotation_of = [&](std::size_t face) -> Eigen::Matrix3d& {
+      if (m_fold_slot[face] < 0) {
+        m_fold_slot[face] = std::ptrdiff_t(folded.size());
+        folded.emplace_back(face, Eigen::Matrix3d::Identity());
+      }
+      return folded[std::size_t(m_fold_slot[face])].second;
+    };
+    std::size_t folds = 0;
+    for (const auto& edge : m_arrays.interior_edges) {
+      const std::size_t p = edge.faces[0], q = edge.faces[1];
+      if (!m_has_normal[p] || !m_has_normal[q])
+        continue;
+      // Cheap rejection of the unfolded edges, nearly all of them; the margin sends every edge
+      // near theta_max to the exact test.
+      if (m_normals[p].dot(m_normals[q]) >= m_cos_theta_max_margin)
+        continue;
+      const double theta = internal::angle_between(m_normals[p], m_normals[q]);
+      const double delta = theta - m_theta_max;
+      if (!(delta > 0))
+        continue;
+      Eigen::Vector3d axis = m_normals[p].cross(m_normals[q]);
+      // Exactly opposite normals: any axis orthogonal to both opens the fold; the shared edge is one.
+      if (axis.norm() < 1e-12)
+        axis = (x.row(edge.vertices[1]) - x.row(edge.vertices[0])).transpose();
+      axis.normalize();
+      Eigen::Matrix3d& rp = rotation_of(p);
+      rp = internal::rotation_matrix(axis, delta / 2) * rp;
+      Eigen::Matrix3d& rq = rotation_of(q);
+      rq = internal::rotation_matrix(-axis, delta / 2) * rq;
+      ++folds;
+    }
+    // The transformation of a folded face again (the same computation, the same result), and
+    // its term replaced.
+    for (const auto& [j, rotation] : folded) {
+      m_fold_slot[j] = -1;
+      Face_pass ignored;
+      const Eigen::Matrix3d t = transform_face(x, j, ignored);
+      const Eigen::Matrix3d change = face_term(x, j, rotation * t) - face_term(x, j, t);
+      for (int i = 0; i < 3; ++i)
+        m_rhs.row(m_ops.faces[j].vertices[i]) += change.row(i);
+    }
+    return folds;
   }
 
   // The rotation that turns the unit normal toward alignment, clamped to eta; `requested`
@@ -846,7 +965,7 @@ private:
       angle_sin = -std::abs(c);
     }
     else {
-      axis /= s;
+      axis *= 1 / s;
       if (m_alignment == Alignment::ORTHOGONAL) {
         angle_cos = std::abs(c);
         angle_sin = c >= 0 ? s : -s;
@@ -899,62 +1018,117 @@ private:
     return x;
   }
 
-  // Assembles the operators on the reference positions, chooses the constrained faces and
-  // factors L + W.  Called at construction and whenever the connectivity changes.
-  void rebuild_operators(const Positions& reference)
+  // The vertices of the face nearest to the area-weighted barycenter of each connected
+  // component, three per component.  Symmetric patches have several faces at the same distance;
+  // a tolerance makes the choice (the lowest index among them) independent of rounding, so equal
+  // inputs in other mesh types or precisions anchor the same face.  Centroids are recomputed in
+  // the second pass rather than stored (fresh memory is slow to touch, issue 18).
+  static std::vector<Eigen::Index> central_face_vertices(const std::vector<internal::Reference_face>& faces,
+                                                         const Positions& reference,
+                                                         const std::vector<std::size_t>& face_component,
+                                                         std::size_t components)
   {
-    // The iterations use L and the per-face stiffness only (D Y' is assembled face by face).
-    auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices, false);
-    if (auto* degenerate = std::get_if<internal::Degenerate_face>(&built))
-      throw std::invalid_argument("Flow_aligned_deformation: tm: face " + std::to_string(degenerate->face) +
-                                  " is degenerate (zero area)");
-    m_ops = std::move(std::get<internal::Poisson_operators>(built));
-
-    // The face nearest to the area-weighted barycenter of each connected component.
-    const std::size_t components = m_arrays.number_of_components;
+    const auto centroid = [&](const internal::Reference_face& f) -> Eigen::Vector3d {
+      return (reference.row(f.vertices[0]) + reference.row(f.vertices[1]) + reference.row(f.vertices[2]))
+                 .transpose() /
+             3;
+    };
     std::vector<Eigen::Vector3d> barycenter(components, Eigen::Vector3d::Zero());
     std::vector<double> component_area(components, 0);
-    std::vector<Eigen::Vector3d> centroid(m_ops.faces.size());
-    for (std::size_t j = 0; j < m_ops.faces.size(); ++j) {
-      const auto& f = m_ops.faces[j];
-      centroid[j] =
-          (reference.row(f.vertices[0]) + reference.row(f.vertices[1]) + reference.row(f.vertices[2]))
-              .transpose() /
-          3;
-      barycenter[m_arrays.face_component[j]] += f.area * centroid[j];
-      component_area[m_arrays.face_component[j]] += f.area;
+    for (std::size_t j = 0; j < faces.size(); ++j) {
+      barycenter[face_component[j]] += faces[j].area * centroid(faces[j]);
+      component_area[face_component[j]] += faces[j].area;
     }
     std::vector<std::size_t> nearest(components, 0);
     std::vector<double> nearest_distance(components, std::numeric_limits<double>::infinity());
-    // Symmetric patches have several faces at the same distance; a tolerance makes the choice
-    // (the lowest index among them) independent of rounding, so equal inputs in other mesh
-    // types or precisions anchor the same face.
     const double tolerance =
         1e-10 * (reference.colwise().maxCoeff() - reference.colwise().minCoeff()).squaredNorm();
-    for (std::size_t j = 0; j < m_ops.faces.size(); ++j) {
-      const std::size_t c = m_arrays.face_component[j];
-      const double d = (centroid[j] - barycenter[c] / component_area[c]).squaredNorm();
+    for (std::size_t j = 0; j < faces.size(); ++j) {
+      const std::size_t c = face_component[j];
+      const double d = (centroid(faces[j]) - barycenter[c] / component_area[c]).squaredNorm();
       if (d < nearest_distance[c] - tolerance) {
         nearest_distance[c] = d;
         nearest[c] = j;
       }
     }
-    m_constrained_vertices.clear();
+    std::vector<Eigen::Index> constrained;
     for (std::size_t c = 0; c < components; ++c)
-      for (Eigen::Index v : m_ops.faces[nearest[c]].vertices)
-        m_constrained_vertices.push_back(v);
+      for (Eigen::Index v : faces[nearest[c]].vertices)
+        constrained.push_back(v);
+    return constrained;
+  }
+
+  // Whether the faces of m_ops are the first faces of m_arrays, in the same order with the same
+  // vertices: then the operators of a grown mesh extend the old ones.
+  bool operators_are_a_prefix() const
+  {
+    const std::size_t n = m_ops.faces.size();
+    if (n == 0 || n > m_arrays.face_vertices.size() || m_ops.number_of_vertices() > m_reference.rows())
+      return false;
+    for (std::size_t j = 0; j < n; ++j)
+      if (m_ops.faces[j].vertices != m_arrays.face_vertices[j])
+        return false;
+    return true;
+  }
+
+  // Assembles the operators on the reference positions, chooses the constrained faces and
+  // factors L + W.  Called at construction and whenever the connectivity changes; after
+  // `grow()` (`grown`), whose new faces and vertices come after the old ones in the mesh's
+  // order, the old operators are extended instead of assembled anew.
+  void rebuild_operators(const Positions& reference, bool grown = false)
+  {
+    using Clock = std::chrono::steady_clock;
+    m_construction = Construction_report();
+    const auto assembling = Clock::now();
+    std::optional<internal::Degenerate_face> degenerate;
+    if (grown && operators_are_a_prefix())
+      degenerate = internal::extend_poisson_operators(m_ops, reference, m_arrays.face_vertices);
+    else {
+      // The iterations use L and the per-face stiffness only (D Y' is assembled face by face).
+      auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices, false);
+      if (auto* face = std::get_if<internal::Degenerate_face>(&built))
+        degenerate = *face;
+      else
+        m_ops = std::move(std::get<internal::Poisson_operators>(built));
+    }
+    if (degenerate)
+      throw std::invalid_argument("Flow_aligned_deformation: tm: face " + std::to_string(degenerate->face) +
+                                  " is degenerate (zero area)");
+    m_corner_offsets.clear(); // the corners of each vertex, for the parallel pass, are made again
+    const auto choosing = Clock::now();
+
+    m_constrained_vertices =
+        central_face_vertices(m_ops.faces, reference, m_arrays.face_component, m_arrays.number_of_components);
 
     // Small weight: it only has to remove the translational null space.  A large one pins
-    // the constrained face's orientation and leaves a kink there.
+    // the constrained face's orientation and leaves a kink there.  L + W is factored in place
+    // of L (no copy of L: fresh memory is slow to touch, issue 18), and L's diagonal entries are
+    // restored bit for bit afterwards.
     m_constraint_weight = m_relative_constraint_weight * m_ops.L.diagonal().mean();
-    Eigen::SparseMatrix<double> system = m_ops.L;
-    for (Eigen::Index v : m_constrained_vertices)
-      system.coeffRef(v, v) += m_constraint_weight;
-
-    const auto start = std::chrono::steady_clock::now();
-    internal::factor_or_throw(m_solver, system, "L + W");
-    m_factor_ms +=
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::vector<double> unconstrained;
+    for (Eigen::Index v : m_constrained_vertices) {
+      unconstrained.push_back(m_ops.L.coeff(v, v));
+      m_ops.L.coeffRef(v, v) += m_constraint_weight;
+    }
+    const Eigen::SparseMatrix<double>& system = m_ops.L;
+    const auto factoring = Clock::now();
+    const auto restore = [&] {
+      for (std::size_t k = m_constrained_vertices.size(); k-- > 0;)
+        m_ops.L.coeffRef(m_constrained_vertices[k], m_constrained_vertices[k]) = unconstrained[k];
+    };
+    internal::Factorization_times times;
+    try {
+      times = internal::timed_factor_or_throw(m_solver, system, "L + W");
+    } catch (...) {
+      restore();
+      throw;
+    }
+    restore();
+    m_construction.operators_ms = milliseconds_between(assembling, choosing);
+    m_construction.constraints_ms = milliseconds_between(choosing, factoring);
+    m_construction.analyze_ms = times.analyze_ms;
+    m_construction.factorize_ms = times.factorize_ms;
+    m_factor_ms += times.analyze_ms + times.factorize_ms;
     ++m_number_of_factorizations;
   }
 
@@ -980,14 +1154,19 @@ private:
   mutable Sparse_linear_solver m_solver; // mutable: CGAL's solver traits have no const solver()
   std::size_t m_number_of_factorizations = 0;
   double m_factor_ms = 0;
+  Construction_report m_construction;
   std::size_t m_number_of_iterations = 0;
   Iteration_report m_last_report;
 
   // Per-iteration buffers, kept to avoid reallocations.
-  std::vector<Eigen::Matrix3d> m_transforms;
   std::vector<Eigen::Vector3d> m_normals;
   std::vector<unsigned char> m_has_normal; // not vector<bool>: read in the hot loop
-  Positions m_rhs;
+  Row_positions m_positions, m_rhs, m_next;
+  // With use_parallelism: the faces' terms of the right-hand side, and the corners of each vertex
+  // (offsets into m_corners by vertex; corner 3 j + i is corner i of face j).
+  std::vector<Eigen::Matrix3d> m_terms;
+  std::vector<std::size_t> m_corner_offsets, m_corners;
+  std::vector<std::ptrdiff_t> m_fold_slot; // -1 between iterations
 };
 
 } // namespace Flow_aligned_surfaces

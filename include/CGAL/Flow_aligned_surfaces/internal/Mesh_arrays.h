@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <stdexcept>
@@ -27,6 +28,9 @@ namespace Flow_aligned_surfaces {
 namespace internal {
 
 using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3>;
+/// The same stored row by row: the three coordinates of a vertex side by side, for the loops
+/// over faces that read the vertices of each face.
+using Row_positions = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
 struct Mesh_arrays {
   std::vector<std::array<Eigen::Index, 3>> face_vertices;
@@ -50,22 +54,33 @@ vertices_in_index_order(const TriangleMesh& tm, VertexIndexMap vim)
   return ordered;
 }
 
-/// The positions (m x 3) of `ordered_vertices`, row i for the vertex of index i.
-template <class VertexDescriptor, class VertexPointMap>
-Positions read_positions(const std::vector<VertexDescriptor>& ordered_vertices, VertexPointMap vpm)
+/// The positions (m x 3) of `ordered_vertices` into `x`, row i for the vertex of index i; the
+/// storage of `x` is reused when it has the right size.
+template <class VertexDescriptor, class VertexPointMap, class Matrix>
+void read_positions(const std::vector<VertexDescriptor>& ordered_vertices, VertexPointMap vpm,
+                    Eigen::PlainObjectBase<Matrix>& x)
 {
-  Positions x(static_cast<Eigen::Index>(ordered_vertices.size()), 3);
+  x.resize(static_cast<Eigen::Index>(ordered_vertices.size()), 3);
   Eigen::Index i = 0;
   for (auto v : ordered_vertices) {
     const auto& p = get(vpm, v);
     x.row(i++) << CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z());
   }
+}
+
+/// The positions (m x 3) of `ordered_vertices`, row i for the vertex of index i.
+template <class VertexDescriptor, class VertexPointMap>
+Positions read_positions(const std::vector<VertexDescriptor>& ordered_vertices, VertexPointMap vpm)
+{
+  Positions x;
+  read_positions(ordered_vertices, vpm, x);
   return x;
 }
 
 /// Throws std::invalid_argument naming `name` and the first vertex (in index order) with a
 /// NaN or infinite coordinate, if any.
-inline void check_finite_positions(const Positions& x, const std::string& name)
+template <class Matrix>
+void check_finite_positions(const Eigen::MatrixBase<Matrix>& x, const std::string& name)
 {
   for (Eigen::Index i = 0; i < x.rows(); ++i)
     if (!x.row(i).allFinite())
@@ -73,8 +88,8 @@ inline void check_finite_positions(const Positions& x, const std::string& name)
                                   " has a coordinate that is not finite");
 }
 
-template <class VertexDescriptor, class VertexPointMap, class GeomTraits>
-void write_positions(const Positions& x, const std::vector<VertexDescriptor>& ordered_vertices,
+template <class VertexDescriptor, class VertexPointMap, class GeomTraits, class Matrix>
+void write_positions(const Eigen::MatrixBase<Matrix>& x, const std::vector<VertexDescriptor>& ordered_vertices,
                      VertexPointMap vpm, const GeomTraits& gt)
 {
   auto construct_point = gt.construct_point_3_object();
@@ -107,6 +122,9 @@ Mesh_arrays make_mesh_arrays(const TriangleMesh& tm, VertexIndexMap vim, FaceInd
       i = parent[i] = parent[parent[i]];
     return i;
   };
+  // One reservation: growing by doubling would touch about twice the memory, and fresh memory
+  // is expensive on its first touch (a page fault per 4 KiB; issue 18).
+  arrays.interior_edges.reserve(num_edges(tm));
   for (auto e : edges(tm)) {
     const auto h = halfedge(e, tm);
     if (is_border_edge(h, tm))
@@ -117,10 +135,15 @@ Mesh_arrays make_mesh_arrays(const TriangleMesh& tm, VertexIndexMap vim, FaceInd
                                       static_cast<Eigen::Index>(get(vim, target(h, tm)))}});
     parent[root(p)] = root(q);
   }
+  // Components numbered in the order of their first face; `parent`, no longer needed once every
+  // face knows its root, then maps a root to its component.
   arrays.face_component.resize(parent.size());
-  std::vector<std::size_t> component_of_root(parent.size(), std::size_t(-1));
+  for (std::size_t f = 0; f < parent.size(); ++f)
+    arrays.face_component[f] = root(f);
+  std::vector<std::size_t>& component_of_root = parent;
+  std::fill(component_of_root.begin(), component_of_root.end(), std::size_t(-1));
   for (std::size_t f = 0; f < parent.size(); ++f) {
-    std::size_t& c = component_of_root[root(f)];
+    std::size_t& c = component_of_root[arrays.face_component[f]];
     if (c == std::size_t(-1))
       c = arrays.number_of_components++;
     arrays.face_component[f] = c;

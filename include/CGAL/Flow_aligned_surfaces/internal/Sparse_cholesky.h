@@ -7,7 +7,8 @@
 // (CGAL::Eigen_solver_traits<S>); its Eigen solver is used directly so that the
 // three coordinate columns are solved in one call.
 //
-// Threads: the default solver starts none.  CHOLMOD's simplicial LDL^T calls no BLAS and runs no
+// Threads: the default solver starts none (its back-substitutions use the caller's TBB arena
+// only when asked, use_parallelism_in()).  CHOLMOD's simplicial LDL^T calls no BLAS and runs no
 // OpenMP loop; CHOLMOD 3's supernodal factorization does both (loops with
 // num_threads(CHOLMOD_OMP_NUM_THREADS) = 4, which omp_set_num_threads() cannot lower, and
 // dgemm/dsyrk of the system's BLAS, OpenBLAS with its own thread pool on Debian); the threads
@@ -25,6 +26,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
+#include <CGAL/Flow_aligned_surfaces/internal/Supernodal_LLT.h>
 #include <Eigen/CholmodSupport>
 #endif
 
@@ -64,12 +66,26 @@ public:
 };
 
 /// CHOLMOD's simplicial LDL^T (fill-reducing ordering by CHOLMOD's default strategy): one thread,
-/// no BLAS; its back-substitutions sweep the three coordinate columns at once.
-using Default_sparse_linear_solver =
-    CGAL::Eigen_solver_traits<Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>>>;
+/// no BLAS; repacked into supernodes whose back-substitutions sweep the three coordinate columns
+/// at once, in parallel over independent subtrees when asked (Supernodal_LLT.h).
+using Default_sparse_linear_solver = CGAL::Eigen_solver_traits<Supernodal_LLT<double>>;
 #else
 using Default_sparse_linear_solver =
     CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>;
+#endif
+
+/// Lets `solver` use the threads of the caller's TBB arena in its solves when `parallel`, if it
+/// can (the package's default solver can; the results are the same bit for bit).
+template <class EigenSolver>
+void use_parallelism_in(EigenSolver&, bool)
+{
+}
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
+template <class FactorScalar>
+void use_parallelism_in(Supernodal_LLT<FactorScalar>& solver, bool parallel)
+{
+  solver.use_parallelism(parallel);
+}
 #endif
 
 /// Throws std::runtime_error naming `what` when the last factorization of `solver` failed.

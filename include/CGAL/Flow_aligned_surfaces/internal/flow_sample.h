@@ -44,7 +44,7 @@ Flow_sample sample_flow(const FlowField& field, const Point_3& p)
   const double squared_norm = sample.velocity.squaredNorm();
   if (squared_norm > 1e-200 && squared_norm < 1e200) {
     sample.kind = Sample_kind::VALID;
-    sample.direction = sample.velocity / std::sqrt(squared_norm);
+    sample.direction = sample.velocity * (1 / std::sqrt(squared_norm));
     return sample;
   }
   // Far from 1 the squared norm may under- or overflow: scale by the largest component first.

@@ -1,0 +1,305 @@
+// Copyright (c) 2026 The Flow_aligned_surfaces developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The default solver's own back-substitutions (internal/Supernodal_LLT.h) against CHOLMOD's
+// simplicial solve of the same matrix (the peer) and against the residual, and the schedule of
+// internal/Elimination_subtrees.h against the rules of a triangular sweep, checked on a tree
+// built here by hand.
+
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
+
+#include <CGAL/Flow_aligned_surfaces/internal/Elimination_subtrees.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Supernodal_LLT.h>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Sparse>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
+#include <vector>
+
+namespace {
+
+namespace FASI = CGAL::Flow_aligned_surfaces::internal;
+using Sparse_matrix = Eigen::SparseMatrix<double>;
+
+// The cotangent-free Laplacian of an m x m grid cut into triangles (each node linked to its
+// four neighbours and along one diagonal), plus `shift` on the diagonal of the middle node: the
+// structure of L + W of a planar patch, symmetric positive definite.
+Sparse_matrix triangulated_grid_laplacian(int m, double shift = 6e-3)
+{
+  std::vector<Eigen::Triplet<double>> triplets;
+  const int offsets[6][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, -1}};
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      const int node = i * m + j;
+      double degree = 0;
+      for (const auto& o : offsets) {
+        const int a = i + o[0], b = j + o[1];
+        if (a < 0 || b < 0 || a >= m || b >= m)
+          continue;
+        triplets.emplace_back(node, a * m + b, -1.);
+        degree += 1;
+      }
+      triplets.emplace_back(node, node, degree + (i == m / 2 && j == m / 2 ? shift : 0.));
+    }
+  Sparse_matrix matrix(m * m, m * m);
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  return matrix;
+}
+
+double relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b)
+{
+  return (a - b).norm() / b.norm();
+}
+
+TEST(SupernodalLLT, SweepsSolveLikeCholmodForAnyNumberOfColumns)
+{
+  const Sparse_matrix matrix = triangulated_grid_laplacian(60);
+  FASI::Supernodal_LLT<double> solver;
+  solver.sweep_from(0); // the sweeps even on this small factor
+  solver.compute(matrix);
+  ASSERT_EQ(solver.info(), Eigen::Success);
+  ASSERT_TRUE(solver.uses_supernodal_sweeps());
+  EXPECT_GT(solver.number_of_supernodes(), 10u);
+  EXPECT_LT(solver.number_of_supernodes(), std::size_t(matrix.rows()));
+  Eigen::CholmodSimplicialLDLT<Sparse_matrix> peer;
+  peer.compute(matrix);
+  ASSERT_EQ(peer.info(), Eigen::Success);
+  for (int columns : {1, 2, 3, 4, 7}) {
+    const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), columns);
+    const Eigen::MatrixXd x = solver.solve(b);
+    ASSERT_EQ(x.cols(), columns);
+    EXPECT_LT((matrix * x - b).norm() / b.norm(), 1e-9) << columns << " columns";
+    EXPECT_LT(relative_difference(x, peer.solve(b)), 1e-10) << columns << " columns";
+  }
+}
+
+TEST(SupernodalLLT, SmallFactorsUseCholmodsSolveAndLargeOnesTheSweeps)
+{
+  FASI::Supernodal_LLT<double> small, large;
+  small.compute(triangulated_grid_laplacian(20));
+  EXPECT_FALSE(small.uses_supernodal_sweeps());
+  large.sweep_from(1e4);
+  large.compute(triangulated_grid_laplacian(40));
+  EXPECT_TRUE(large.uses_supernodal_sweeps());
+  // Both answer the same as the peer.
+  for (const auto* solver : {&small, &large}) {
+    const Sparse_matrix matrix = triangulated_grid_laplacian(solver == &small ? 20 : 40);
+    const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), 3);
+    EXPECT_LT((matrix * solver->solve(b) - b).norm() / b.norm(), 1e-9);
+  }
+}
+
+TEST(SupernodalLLT, RowMajorRightHandSidesAreSolvedToo)
+{
+  const Sparse_matrix matrix = triangulated_grid_laplacian(50);
+  FASI::Supernodal_LLT<double> solver;
+  solver.sweep_from(0);
+  solver.compute(matrix);
+  const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> b =
+      Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>::Random(matrix.rows(), 3);
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> x(matrix.rows(), 3);
+  x = solver.solve(b);
+  EXPECT_LT((matrix * x - b).norm() / b.norm(), 1e-9);
+}
+
+TEST(SupernodalLLT, SinglePrecisionCopyIsAccurateToSinglePrecision)
+{
+  const Sparse_matrix matrix = triangulated_grid_laplacian(80);
+  FASI::Supernodal_LLT<double> exact;
+  FASI::Supernodal_LLT<float> single;
+  exact.sweep_from(0);
+  single.sweep_from(0);
+  exact.compute(matrix);
+  single.compute(matrix);
+  ASSERT_EQ(single.info(), Eigen::Success);
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), 3);
+  const double error = relative_difference(single.solve(b), exact.solve(b));
+  EXPECT_LT(error, 1e-5);
+  // Really single precision: a double factor would agree to about 1e-14.
+  EXPECT_GT(error, 1e-10);
+  EXPECT_EQ(single.bytes_per_sweep() < 0.7 * exact.bytes_per_sweep(), true);
+}
+
+TEST(SupernodalLLT, NotPositiveDefiniteIsReported)
+{
+  Sparse_matrix matrix = triangulated_grid_laplacian(10);
+  matrix.coeffRef(55, 55) = -4;
+  // Solved by CHOLMOD (a small factor) and by the sweeps.
+  FASI::Supernodal_LLT<double> solver, swept;
+  solver.compute(matrix);
+  EXPECT_NE(solver.info(), Eigen::Success);
+  swept.sweep_from(0);
+  swept.compute(matrix);
+  EXPECT_NE(swept.info(), Eigen::Success);
+}
+
+TEST(SupernodalLLT, OrderingCanBeChosen)
+{
+  const Sparse_matrix matrix = triangulated_grid_laplacian(100);
+  FASI::Supernodal_LLT<double> by_default, dissected;
+  by_default.compute(matrix);
+  EXPECT_EQ(by_default.ordering(), CHOLMOD_AMD);
+  dissected.use_ordering(CHOLMOD_METIS);
+  dissected.sweep_from(0);
+  dissected.compute(matrix);
+  ASSERT_EQ(dissected.info(), Eigen::Success);
+  EXPECT_EQ(dissected.ordering(), CHOLMOD_METIS);
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), 3);
+  EXPECT_LT(relative_difference(dissected.solve(b), by_default.solve(b)), 1e-9);
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST(SupernodalLLT, ParallelSweepsGiveTheSerialSolutionBitForBit)
+{
+  const Sparse_matrix matrix = triangulated_grid_laplacian(120);
+  FASI::Supernodal_LLT<double> serial, parallel;
+  serial.sweep_from(0);
+  serial.compute(matrix);
+  parallel.sweep_from(0);
+  parallel.use_parallelism(true);
+  parallel.compute(matrix);
+  ASSERT_TRUE(parallel.subtrees().is_split());
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), 3);
+  const Eigen::MatrixXd x = serial.solve(b), y = parallel.solve(b);
+  EXPECT_EQ((x - y).cwiseAbs().maxCoeff(), 0.);
+  EXPECT_LT((matrix * y - b).norm() / b.norm(), 1e-9);
+}
+#endif
+
+// A supernodal structure built by hand: a complete binary tree of depth `depth`, numbered in
+// postorder, one column per supernode (super[s] = s), each supernode's rows its own column then
+// all its ancestors' columns in increasing order.
+struct Hand_made_tree {
+  std::vector<int> super, pi, px, rows, parent;
+
+  explicit Hand_made_tree(int depth)
+  {
+    build(depth);
+    const int n = int(parent.size());
+    for (int s = 0; s <= n; ++s)
+      super.push_back(s);
+    px.assign(std::size_t(n) + 1, 0);
+    pi.assign(1, 0);
+    for (int s = 0; s < n; ++s) {
+      rows.push_back(s);
+      for (int a = parent[std::size_t(s)]; a >= 0; a = parent[std::size_t(a)])
+        rows.push_back(a);
+      pi.push_back(int(rows.size()));
+    }
+  }
+
+  // Numbers the subtree of the given depth in postorder; returns its root.
+  int build(int depth)
+  {
+    std::vector<int> children;
+    for (int c = 0; depth > 0 && c < 2; ++c)
+      children.push_back(build(depth - 1));
+    const int root = int(parent.size());
+    parent.push_back(-1);
+    for (int c : children)
+      parent[std::size_t(c)] = root;
+    return root;
+  }
+};
+
+TEST(EliminationSubtrees, ScheduleKeepsTheOrderOfTheSweepsOnAHandMadeTree)
+{
+  const Hand_made_tree tree(7); // 255 supernodes
+  const int n = int(tree.parent.size());
+  ASSERT_EQ(n, 255);
+  FASI::Elimination_subtrees schedule(n, tree.super.data(), tree.pi.data(), tree.rows.data(), tree.px.data());
+  ASSERT_TRUE(schedule.is_split());
+  EXPECT_LT(schedule.top_fraction(), 0.2);
+
+  // Forward: every supernode once, after all its descendants.
+  std::vector<int> forward_position(std::size_t(n), -1), group_of(std::size_t(n), -1), split_of(std::size_t(n), 0);
+  int position = 0;
+  double z = 0;
+  schedule.forward(&z, 1, [&](int s, double* target, int split, int group) {
+    EXPECT_EQ(forward_position[std::size_t(s)], -1) << "supernode " << s << " visited twice";
+    forward_position[std::size_t(s)] = position++;
+    group_of[std::size_t(s)] = group;
+    split_of[std::size_t(s)] = split;
+    EXPECT_EQ(target == &z, group == 0) << "a grouped supernode writes its top rows to a private target";
+    if (target == &z) {
+      EXPECT_LT(split, 0);
+    }
+  });
+  for (int s = 0; s < n; ++s) {
+    ASSERT_GE(forward_position[std::size_t(s)], 0) << "supernode " << s << " not visited";
+    const int p = tree.parent[std::size_t(s)];
+    if (p >= 0) {
+      EXPECT_LT(forward_position[std::size_t(s)], forward_position[std::size_t(p)]);
+    }
+  }
+  // The rows before a grouped supernode's split are in its own group, those after in the top;
+  // a top supernode has no split.
+  for (int s = 0; s < n; ++s) {
+    const int group = group_of[std::size_t(s)], split = split_of[std::size_t(s)];
+    if (group == 0) {
+      EXPECT_LT(split, 0);
+      continue;
+    }
+    const int begin = tree.pi[std::size_t(s)], end = tree.pi[std::size_t(s) + 1];
+    for (int r = begin + 1; r < end; ++r) {
+      const int row = tree.rows[std::size_t(r)];
+      EXPECT_EQ(group_of[std::size_t(row)], r - begin < split ? group : 0) << "supernode " << s << " row " << row;
+    }
+  }
+  // The top and every group of subtrees are used.
+  std::vector<int> groups_used;
+  for (int g : group_of)
+    if (std::find(groups_used.begin(), groups_used.end(), g) == groups_used.end())
+      groups_used.push_back(g);
+  EXPECT_EQ(int(groups_used.size()), FASI::Elimination_subtrees::number_of_groups + 1);
+
+  // Backward: every supernode once, after its parent.
+  std::vector<int> backward_position(std::size_t(n), -1);
+  position = 0;
+  schedule.backward([&](int s, int) {
+    EXPECT_EQ(backward_position[std::size_t(s)], -1);
+    backward_position[std::size_t(s)] = position++;
+  });
+  for (int s = 0; s < n; ++s) {
+    ASSERT_GE(backward_position[std::size_t(s)], 0);
+    const int p = tree.parent[std::size_t(s)];
+    if (p >= 0) {
+      EXPECT_GT(backward_position[std::size_t(s)], backward_position[std::size_t(p)]);
+    }
+  }
+}
+
+TEST(EliminationSubtrees, ATreeThatIsNotPostorderedIsSweptInSequence)
+{
+  // A chain of 40 supernodes each of which is the child of the one before: the parents come
+  // first, which no postorder allows.  The same chain the other way round is split-able input
+  // (and a chain is swept in sequence anyway, so only the refusal is checked here).
+  const int n = 40;
+  std::vector<int> super, pi = {0}, px(n + 1, 0), rows;
+  for (int s = 0; s <= n; ++s)
+    super.push_back(s);
+  for (int s = 0; s < n; ++s) {
+    rows.push_back(s);
+    for (int a = s - 1; a >= 0; --a)
+      rows.push_back(a);
+    std::sort(rows.end() - (s + 1), rows.end());
+    pi.push_back(int(rows.size()));
+  }
+  FASI::Elimination_subtrees schedule(n, super.data(), pi.data(), rows.data(), px.data());
+  EXPECT_FALSE(schedule.is_split());
+  int visits = 0;
+  double z = 0;
+  schedule.forward(&z, 1, [&](int, double*, int split, int) {
+    EXPECT_LT(split, 0);
+    ++visits;
+  });
+  EXPECT_EQ(visits, n);
+}
+
+} // namespace
+
+#endif // CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
