@@ -26,6 +26,8 @@
 // Run single-threaded as the other benchmarks (OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1; the
 // default solver starts no thread anyway) and at `nice -n 10` on a shared machine.
 
+#include "bench_clock.h"
+
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
@@ -54,6 +56,9 @@
 
 namespace {
 
+using fas_benchmark::minor_faults;
+using fas_benchmark::thread_cpu_ms;
+
 namespace FAS = CGAL::Flow_aligned_surfaces;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
@@ -61,19 +66,7 @@ using Grid = FAS::Regular_grid_flow_field_3<K>;
 using Field = std::reference_wrapper<const Grid>;
 using Deformation = FAS::Flow_aligned_deformation<Mesh, Field>;
 
-double thread_cpu_ms()
-{
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
-}
 
-long minor_faults()
-{
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_minflt;
-}
 
 Grid make_grid()
 {

@@ -42,6 +42,8 @@
 // already set, so that CHOLMOD (which links OpenMP) and a threaded BLAS stay on one thread; it
 // records the BLAS it loaded, which the system chooses (Debian: update-alternatives libblas.so.3).
 
+#include "bench_clock.h"
+
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
@@ -83,6 +85,8 @@
 
 namespace {
 
+using fas_benchmark::thread_cpu_ms;
+
 namespace FAS = CGAL::Flow_aligned_surfaces;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point_3;
@@ -97,14 +101,6 @@ double ms_since(Clock::time_point start)
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// CPU time of the calling thread (ms): unlike the wall clock, it does not count the time the
-// thread waited for a core, which on a shared machine tells noise from cost.
-double thread_cpu_ms()
-{
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
-}
 
 double median(std::vector<double> v)
 {

@@ -23,6 +23,8 @@
 //
 //   bench_geodesic_distance [max_subdivisions (default 6)] [runs (default 9)]
 
+#include "bench_clock.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
@@ -49,6 +51,7 @@ using Vector = K::Vector_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Vertex = Mesh::Vertex_index;
 namespace FAS = CGAL::Flow_aligned_surfaces;
+using fas_benchmark::thread_cpu_ms;
 
 template <class F>
 double best_of_3_ms(const F& f)
@@ -63,12 +66,6 @@ double best_of_3_ms(const F& f)
   return best;
 }
 
-double thread_cpu_ms()
-{
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
-}
 
 double median(std::vector<double> v)
 {

@@ -20,6 +20,8 @@
 //
 //   OMP_NUM_THREADS=1 bench_grow --benchmark_repetitions=7 --benchmark_report_aggregates_only=true
 
+#include "bench_clock.h"
+
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
@@ -43,21 +45,10 @@
 
 namespace {
 
-// CPU time of the calling thread (ms): the work of grow() whatever else the machine runs.
-double thread_cpu_ms()
-{
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
-}
+using fas_benchmark::minor_faults;
+using fas_benchmark::thread_cpu_ms;
 
-// Minor page faults of the process: first touches of fresh memory, ~10 us each on this VM.
-long minor_faults()
-{
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_minflt;
-}
+
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;

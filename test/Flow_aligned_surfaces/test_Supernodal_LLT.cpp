@@ -218,14 +218,15 @@ TEST(EliminationSubtrees, ScheduleKeepsTheOrderOfTheSweepsOnAHandMadeTree)
   // Forward: every supernode once, after all its descendants.
   std::vector<int> forward_position(std::size_t(n), -1), group_of(std::size_t(n), -1), split_of(std::size_t(n), 0);
   int position = 0;
-  double z = 0;
-  schedule.forward(&z, 1, [&](int s, double* target, int split, int group) {
+  std::vector<double> right_hand_side(std::size_t(n), 0.); // one value per column
+  double* z = right_hand_side.data();
+  schedule.forward(z, 1, [&](int s, double* target, int split, int group) {
     EXPECT_EQ(forward_position[std::size_t(s)], -1) << "supernode " << s << " visited twice";
     forward_position[std::size_t(s)] = position++;
     group_of[std::size_t(s)] = group;
     split_of[std::size_t(s)] = split;
-    EXPECT_EQ(target == &z, group == 0) << "a grouped supernode writes its top rows to a private target";
-    if (target == &z) {
+    EXPECT_EQ(target == z, group == 0) << "a grouped supernode writes its top rows to a private target";
+    if (target == z) {
       EXPECT_LT(split, 0);
     }
   });
@@ -292,8 +293,8 @@ TEST(EliminationSubtrees, ATreeThatIsNotPostorderedIsSweptInSequence)
   FASI::Elimination_subtrees schedule(n, super.data(), pi.data(), rows.data(), px.data());
   EXPECT_FALSE(schedule.is_split());
   int visits = 0;
-  double z = 0;
-  schedule.forward(&z, 1, [&](int, double*, int split, int) {
+  std::vector<double> z(std::size_t(n), 0.);
+  schedule.forward(z.data(), 1, [&](int, double*, int split, int) {
     EXPECT_LT(split, 0);
     ++visits;
   });
