@@ -161,6 +161,34 @@ TEST(FlowAlignedDeformationResources, NoCopyOfTheField)
   EXPECT_EQ(Counting_grid_field::copies, 0) << "free functions";
 }
 
+// Where the preparation's time went: the constructor's two factorization phases are the whole
+// FACTOR that run(0) reports, and after grow() the report holds the refactorization only (the
+// check and the mesh arrays are grow()'s own).
+TEST(FlowAlignedDeformationResources, ConstructionReportAccountsForTheFactorizations)
+{
+  Mesh tm;
+  FAS::make_planar_patch(tm, Point(0, 0, 0.2), Vector(0.3, 0, 1), 1.0, 1.0, 2000);
+  auto field = &point_source;
+  FAS::Flow_aligned_deformation<Mesh, decltype(field)> deformation(tm, field, FAS::Alignment::ORTHOGONAL);
+  const FAS::Construction_report built = deformation.construction_report();
+  for (double phase : {built.check_ms, built.mesh_arrays_ms, built.operators_ms, built.constraints_ms,
+                       built.analyze_ms, built.factorize_ms}) {
+    EXPECT_TRUE(std::isfinite(phase));
+    EXPECT_GE(phase, 0);
+  }
+  const double constructor_factor_ms = deformation.run(0).factor_ms;
+  EXPECT_GT(constructor_factor_ms, 0);
+  EXPECT_DOUBLE_EQ(built.analyze_ms + built.factorize_ms, constructor_factor_ms);
+
+  deformation.step();
+  deformation.grow(0.02);
+  const FAS::Construction_report grown = deformation.construction_report();
+  EXPECT_EQ(grown.check_ms, 0);
+  EXPECT_EQ(grown.mesh_arrays_ms, 0);
+  EXPECT_NEAR(grown.analyze_ms + grown.factorize_ms, deformation.run(0).factor_ms - constructor_factor_ms,
+              1e-9 * deformation.run(0).factor_ms);
+}
+
 // Compile-time: a temporary field cannot be given to the deformation, which holds a reference.
 static_assert(!std::is_constructible_v<FAS::Flow_aligned_deformation<Mesh, Counting_grid_field>, Mesh&,
                                        Counting_grid_field, FAS::Alignment>);

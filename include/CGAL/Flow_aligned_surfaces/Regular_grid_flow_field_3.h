@@ -253,18 +253,18 @@ public:
       const double t = (x[a] - m_grid_lo[a]) * m_inv_h[a]; // >= 0, so truncation is floor
       // The upper boundary belongs to the last cell; rounding in t can only overshoot by ulps,
       // which the clamp on f absorbs.
-      std::size_t cell = (std::min)(static_cast<std::size_t>(t), m_grid_last_cell[a]);
+      const std::size_t cell = (std::min)(static_cast<std::size_t>(t), m_grid_last_cell[a]);
       f[a] = (std::min)(t - static_cast<double>(cell), 1.);
-      // A block has the whole grid's cells first .. first + n - 2, and the node after them:
-      // there (f = 0 in the next cell) it blends its last cell with f = 1, the same value.
-      if (cell < m_first[a] || cell > m_first[a] + m_dimensions[a] - 1 ||
-          (cell == m_first[a] + m_dimensions[a] - 1 && f[a] != 0.))
-        return std::nullopt;
-      if (cell == m_first[a] + m_dimensions[a] - 1) {
-        --cell;
+      // A block has the whole grid's cells first .. first + n - 2 (so `c`, which wraps around
+      // below first, is at most n - 2), and the node after them: there (f = 0 in the next cell)
+      // it blends its last cell with f = 1, the same value.
+      c[a] = cell - m_first[a];
+      if (c[a] >= m_dimensions[a] - 1) {
+        if (c[a] != m_dimensions[a] - 1 || f[a] != 0.)
+          return std::nullopt;
+        c[a] = m_dimensions[a] - 2;
         f[a] = 1.;
       }
-      c[a] = cell - m_first[a];
       g[a] = 1. - f[a];
     }
     if (m_interpolation == Grid_interpolation::TRICUBIC) {
