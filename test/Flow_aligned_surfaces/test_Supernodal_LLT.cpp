@@ -174,7 +174,7 @@ TEST(SupernodalLLT, ParallelSweepsGiveTheSerialSolutionBitForBit)
 // postorder, one column per supernode (super[s] = s), each supernode's rows its own column then
 // all its ancestors' columns in increasing order.
 struct Hand_made_tree {
-  std::vector<int> super, pi, px, rows, parent;
+  std::vector<int> super, pi, rows, parent;
 
   explicit Hand_made_tree(int depth)
   {
@@ -182,7 +182,6 @@ struct Hand_made_tree {
     const int n = int(parent.size());
     for (int s = 0; s <= n; ++s)
       super.push_back(s);
-    px.assign(std::size_t(n) + 1, 0);
     pi.assign(1, 0);
     for (int s = 0; s < n; ++s) {
       rows.push_back(s);
@@ -211,7 +210,7 @@ TEST(EliminationSubtrees, ScheduleKeepsTheOrderOfTheSweepsOnAHandMadeTree)
   const Hand_made_tree tree(7); // 255 supernodes
   const int n = int(tree.parent.size());
   ASSERT_EQ(n, 255);
-  FASI::Elimination_subtrees schedule(n, tree.super.data(), tree.pi.data(), tree.rows.data(), tree.px.data());
+  FASI::Elimination_subtrees schedule(n, tree.super.data(), tree.pi.data(), tree.rows.data());
   ASSERT_TRUE(schedule.is_split());
   EXPECT_LT(schedule.top_fraction(), 0.2);
 
@@ -280,7 +279,7 @@ TEST(EliminationSubtrees, ATreeThatIsNotPostorderedIsSweptInSequence)
   // first, which no postorder allows.  The same chain the other way round is split-able input
   // (and a chain is swept in sequence anyway, so only the refusal is checked here).
   const int n = 40;
-  std::vector<int> super, pi = {0}, px(n + 1, 0), rows;
+  std::vector<int> super, pi = {0}, rows;
   for (int s = 0; s <= n; ++s)
     super.push_back(s);
   for (int s = 0; s < n; ++s) {
@@ -290,7 +289,7 @@ TEST(EliminationSubtrees, ATreeThatIsNotPostorderedIsSweptInSequence)
     std::sort(rows.end() - (s + 1), rows.end());
     pi.push_back(int(rows.size()));
   }
-  FASI::Elimination_subtrees schedule(n, super.data(), pi.data(), rows.data(), px.data());
+  FASI::Elimination_subtrees schedule(n, super.data(), pi.data(), rows.data());
   EXPECT_FALSE(schedule.is_split());
   int visits = 0;
   std::vector<double> z(std::size_t(n), 0.);

@@ -99,8 +99,7 @@ public:
       this->m_info = Eigen::NumericalIssue;
       return;
     }
-    m_subtrees = Elimination_subtrees(int(m_super.size()) - 1, m_super.data(), m_pi.data(), m_rows.data(),
-                                      m_px.data());
+    m_subtrees = Elimination_subtrees(int(m_super.size()) - 1, m_super.data(), m_pi.data(), m_rows.data());
     m_subtrees.use_parallelism(m_parallel);
   }
 
