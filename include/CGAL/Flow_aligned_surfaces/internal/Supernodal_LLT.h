@@ -566,8 +566,9 @@ private:
     }
   };
 
-  // The supernodes of CHOLMOD's factor (their first columns, and n at the end); the factor
-  // itself stays where CHOLMOD put it, swept there in double, or copied in single precision.
+  // The supernodes of CHOLMOD's factor: their first columns (and n at the end), the offsets of
+  // their row lists in m_rows, the row lists (copies of their first columns' row indices).  The
+  // values stay where CHOLMOD put them, swept there in double, or copied in single precision.
   std::vector<int> m_super, m_pi, m_rows;
   std::vector<FactorScalar> m_single;
   double m_smallest_swept_factor = default_smallest_swept_factor;
