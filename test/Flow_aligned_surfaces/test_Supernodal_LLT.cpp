@@ -77,6 +77,100 @@ TEST(SupernodalLLT, SweepsSolveLikeCholmodForAnyNumberOfColumns)
   }
 }
 
+// The solver with its CHOLMOD factor in view.
+struct Inspected_LLT : FASI::Supernodal_LLT<double> {
+  const cholmod_factor& factor() const { return *this->m_cholmodFactor; }
+
+  // Whether some column of the factor has room after its entries.
+  bool has_unpacked_columns() const
+  {
+    const int* p = static_cast<const int*>(factor().p);
+    const int* count = static_cast<const int*>(factor().nz);
+    for (std::size_t j = 0; j < factor().n; ++j)
+      if (p[j + 1] - p[j] > count[j])
+        return true;
+    return false;
+  }
+};
+
+// A symmetric tridiagonal matrix, positive definite: its factor's columns have two entries,
+// the last one, so that nearly every supernode is one column wide.
+Sparse_matrix tridiagonal(int n)
+{
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int i = 0; i < n; ++i) {
+    triplets.emplace_back(i, i, 2.5);
+    if (i + 1 < n) {
+      triplets.emplace_back(i, i + 1, -1.);
+      triplets.emplace_back(i + 1, i, -1.);
+    }
+  }
+  Sparse_matrix matrix(n, n);
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  return matrix;
+}
+
+TEST(SupernodalLLT, SweepsInPlaceMatchCholmodsSolveAtEverySize)
+{
+  for (int m : {2, 5, 12, 30, 70, 150}) {
+    const Sparse_matrix matrix = triangulated_grid_laplacian(m);
+    Inspected_LLT solver;
+    solver.sweep_from(0);
+    solver.compute(matrix);
+    ASSERT_EQ(solver.info(), Eigen::Success);
+    ASSERT_TRUE(solver.uses_supernodal_sweeps());
+    EXPECT_FALSE(solver.has_unpacked_columns()) << m; // CHOLMOD allocates each column tight
+    Eigen::CholmodSimplicialLDLT<Sparse_matrix> peer;
+    peer.compute(matrix);
+    const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), 3);
+    EXPECT_LT(relative_difference(solver.solve(b), peer.solve(b)), 1e-12) << m << " x " << m;
+  }
+}
+
+TEST(SupernodalLLT, ColumnsMovedWithRoomToGrowAreSweptWhereTheyAre)
+{
+  const Sparse_matrix matrix = triangulated_grid_laplacian(90);
+  Inspected_LLT solver;
+  solver.sweep_from(0);
+  solver.compute(matrix);
+  ASSERT_EQ(solver.info(), Eigen::Success);
+  ASSERT_FALSE(solver.has_unpacked_columns());
+  const std::size_t n = solver.factor().n;
+  // CHOLMOD moves a column it gives more room to the end of its storage: the factor is then
+  // neither packed nor in column order, as after an update of the factor.
+  cholmod_factor& factor = const_cast<cholmod_factor&>(solver.factor());
+  const int* count = static_cast<const int*>(factor.nz);
+  for (std::size_t j : {std::size_t(0), n / 3, n / 2, n / 2 + 1, n - 2})
+    ASSERT_TRUE(cholmod_reallocate_column(j, std::size_t(count[j]) + 7, &factor, &solver.cholmod()));
+  ASSERT_TRUE(solver.has_unpacked_columns());
+  ASSERT_FALSE(factor.is_monotonic);
+  Eigen::CholmodSimplicialLDLT<Sparse_matrix> peer;
+  peer.compute(matrix);
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), 3);
+  EXPECT_LT(relative_difference(solver.solve(b), peer.solve(b)), 1e-12);
+}
+
+TEST(SupernodalLLT, SupernodesOfOneColumnAreSwept)
+{
+  Sparse_matrix diagonal(300, 300);
+  diagonal.setIdentity();
+  diagonal *= 1.5;
+  for (const Sparse_matrix& matrix : {tridiagonal(500), diagonal}) {
+    FASI::Supernodal_LLT<double> solver;
+    solver.sweep_from(0);
+    solver.compute(matrix);
+    ASSERT_EQ(solver.info(), Eigen::Success);
+    ASSERT_TRUE(solver.uses_supernodal_sweeps());
+    EXPECT_GE(solver.number_of_supernodes(), std::size_t(matrix.rows() - 1));
+    Eigen::CholmodSimplicialLDLT<Sparse_matrix> peer;
+    peer.compute(matrix);
+    for (int columns : {1, 3}) {
+      const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), columns);
+      EXPECT_LT(relative_difference(solver.solve(b), peer.solve(b)), 1e-12) << matrix.rows() << " rows";
+    }
+  }
+}
+
 TEST(SupernodalLLT, SmallFactorsUseCholmodsSolveAndLargeOnesTheSweeps)
 {
   FASI::Supernodal_LLT<double> small, large;
@@ -174,7 +268,7 @@ TEST(SupernodalLLT, ParallelSweepsGiveTheSerialSolutionBitForBit)
 // postorder, one column per supernode (super[s] = s), each supernode's rows its own column then
 // all its ancestors' columns in increasing order.
 struct Hand_made_tree {
-  std::vector<int> super, pi, px, rows, parent;
+  std::vector<int> super, pi, rows, parent;
 
   explicit Hand_made_tree(int depth)
   {
@@ -182,7 +276,6 @@ struct Hand_made_tree {
     const int n = int(parent.size());
     for (int s = 0; s <= n; ++s)
       super.push_back(s);
-    px.assign(std::size_t(n) + 1, 0);
     pi.assign(1, 0);
     for (int s = 0; s < n; ++s) {
       rows.push_back(s);
@@ -211,7 +304,7 @@ TEST(EliminationSubtrees, ScheduleKeepsTheOrderOfTheSweepsOnAHandMadeTree)
   const Hand_made_tree tree(7); // 255 supernodes
   const int n = int(tree.parent.size());
   ASSERT_EQ(n, 255);
-  FASI::Elimination_subtrees schedule(n, tree.super.data(), tree.pi.data(), tree.rows.data(), tree.px.data());
+  FASI::Elimination_subtrees schedule(n, tree.super.data(), tree.pi.data(), tree.rows.data());
   ASSERT_TRUE(schedule.is_split());
   EXPECT_LT(schedule.top_fraction(), 0.2);
 
@@ -280,7 +373,7 @@ TEST(EliminationSubtrees, ATreeThatIsNotPostorderedIsSweptInSequence)
   // first, which no postorder allows.  The same chain the other way round is split-able input
   // (and a chain is swept in sequence anyway, so only the refusal is checked here).
   const int n = 40;
-  std::vector<int> super, pi = {0}, px(n + 1, 0), rows;
+  std::vector<int> super, pi = {0}, rows;
   for (int s = 0; s <= n; ++s)
     super.push_back(s);
   for (int s = 0; s < n; ++s) {
@@ -290,7 +383,7 @@ TEST(EliminationSubtrees, ATreeThatIsNotPostorderedIsSweptInSequence)
     std::sort(rows.end() - (s + 1), rows.end());
     pi.push_back(int(rows.size()));
   }
-  FASI::Elimination_subtrees schedule(n, super.data(), pi.data(), rows.data(), px.data());
+  FASI::Elimination_subtrees schedule(n, super.data(), pi.data(), rows.data());
   EXPECT_FALSE(schedule.is_split());
   int visits = 0;
   std::vector<double> z(std::size_t(n), 0.);

@@ -40,9 +40,9 @@ public:
   Elimination_subtrees() = default;
 
   /// The supernodes of a CHOLMOD supernodal factor: `super` (first column of each supernode, size
-  /// nsuper + 1), `pi` (offsets of their row lists in `rows`), `px` (unused here).  A factor whose
-  /// supernodes are not in postorder or whose row lists are not sorted is swept in sequence.
-  Elimination_subtrees(int nsuper, const int* super, const int* pi, const int* rows, const int* /*px*/)
+  /// nsuper + 1), `pi` (offsets of their row lists in `rows`).  A factor whose supernodes are not
+  /// in postorder or whose row lists are not sorted is swept in sequence.
+  Elimination_subtrees(int nsuper, const int* super, const int* pi, const int* rows)
       : m_nsuper(nsuper), m_super(super), m_pi(pi), m_rows(rows)
   {
     cut();

@@ -66,8 +66,9 @@ public:
 };
 
 /// CHOLMOD's simplicial LDL^T (fill-reducing ordering by CHOLMOD's default strategy): one thread,
-/// no BLAS; repacked into supernodes whose back-substitutions sweep the three coordinate columns
-/// at once, in parallel over independent subtrees when asked (Supernodal_LLT.h).
+/// no BLAS; on large factors, its back-substitutions sweep the factor by supernodes where CHOLMOD
+/// stores it, the three coordinate columns at once, in parallel over independent subtrees when
+/// asked (Supernodal_LLT.h).
 using Default_sparse_linear_solver = CGAL::Eigen_solver_traits<Supernodal_LLT<double>>;
 #else
 using Default_sparse_linear_solver =

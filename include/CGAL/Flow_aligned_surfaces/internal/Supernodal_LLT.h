@@ -2,17 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The default sparse Cholesky of the package: CHOLMOD's simplicial LDL^T factorization
-// (one thread, no BLAS: see Sparse_cholesky.h), repacked into supernodes for the
-// back-substitutions, which the deformation pays every iteration (three coordinate columns)
-// while it pays the factorization once.
+// (one thread, no BLAS: see Sparse_cholesky.h), whose back-substitutions, which the deformation
+// pays every iteration (three coordinate columns) while it pays the factorization once, are
+// swept here by supernodes on large factors.
 //
 // On these surfaces (2D meshes) the solve reads the whole factor twice, forward and backward.
-// CHOLMOD's simplicial solve reads a row index with every value and walks the factor one column
-// at a time.  Here the columns that share their pattern below the diagonal (the fundamental
-// supernodes of the elimination tree: separators of the ordering, chains) are stored as one
-// dense block with one list of row indices, so that each sweep reads each block's values in
-// order for the three right-hand sides at once (supernodal LL^T, L scaled by sqrt(D)), in
-// double or, with `FactorScalar = float`, in a single-precision copy (half the bytes; the
+// CHOLMOD's simplicial solve reads a row index with every value.  Here the columns that share
+// their pattern below the diagonal (the fundamental supernodes of the elimination tree:
+// separators of the ordering, chains) are swept as one lower trapezoid, where CHOLMOD stores
+// them (column by column, D then the unit L below it), with one list of row indices per
+// supernode (the only copy: about 15 % of the factor's entries, as ints), so that each sweep
+// reads the values in order for the three right-hand sides at once, in double or, with
+// `FactorScalar = float`, in a single-precision copy of the values (half the bytes; the
 // solution's relative error grows from about 1e-15 to about 1e-7).  With `use_parallelism()`
 // the independent subtrees of the elimination tree are swept on the threads of the caller's
 // TBB arena (Elimination_subtrees.h); the result is the same bit for bit.
@@ -86,21 +87,20 @@ public:
     Base::factorize(matrix);
     m_subtrees = Elimination_subtrees();
     m_super.clear();
+    m_single.clear();
     if (this->m_info != Eigen::Success)
       return;
-    // A factor below the threshold is solved by CHOLMOD: no copy (fresh memory costs a page
-    // fault per 4 KiB, 10 us each on the benchmark's virtual machine).
-    if (this->cholmod().lnz < m_smallest_swept_factor) {
-      if (!has_positive_pivots(*this->m_cholmodFactor))
-        this->m_info = Eigen::NumericalIssue;
-      return;
-    }
-    if (!pack(*this->m_cholmodFactor)) {
+    const cholmod_factor& factor = *this->m_cholmodFactor;
+    if (!has_positive_pivots(factor)) {
       this->m_info = Eigen::NumericalIssue;
       return;
     }
-    m_subtrees = Elimination_subtrees(int(m_super.size()) - 1, m_super.data(), m_pi.data(), m_rows.data(),
-                                      m_px.data());
+    if (this->cholmod().lnz < m_smallest_swept_factor)
+      return;
+    find_supernodes(factor);
+    if constexpr (!std::is_same<FactorScalar, double>::value)
+      copy_values(factor);
+    m_subtrees = Elimination_subtrees(int(number_of_supernodes()), m_super.data(), m_pi.data(), m_rows.data());
     m_subtrees.use_parallelism(m_parallel);
   }
 
@@ -112,17 +112,18 @@ public:
     m_subtrees.use_parallelism(parallel);
   }
 
-  /// From this many nonzeros of the factor on (by default), the factor is repacked and solve()
-  /// sweeps the supernodes; below, CHOLMOD's own simplicial solve is used.  On the benchmark's
-  /// patches the sweeps are 5 % faster than CHOLMOD's solve at 1.5e6 nonzeros (8e4 faces) and
-  /// 15 % at 7e6 (3.2e5 faces), and the copy costs the factorization the page faults of its
-  /// fresh memory (about 30 ms at 8e4 faces): so from about 1.5e5 faces on
-  /// (benchmark/Flow_aligned_surfaces/RESULTS.md, issue 18).  The choice does not depend on
-  /// `use_parallelism()`, so that the solutions do not either.
+  /// From this many nonzeros of the factor on (by default), solve() sweeps the supernodes;
+  /// below, CHOLMOD's own simplicial solve is used.  Sweeping CHOLMOD's factor in place copies
+  /// only the row lists (5 MB instead of 63 MB at 3.2e5 faces), but the sweeps are no faster
+  /// than CHOLMOD's solve below about 1e5 faces: 25 to 35 % slower at 5e3 and 2e4 faces (the
+  /// factor in the caches, CHOLMOD's kernel does less per entry), as fast within the noise at 8e4
+  /// (1.5e6 nonzeros), 0 to 30 % faster at 3.2e5 (7e6 nonzeros); so from about 1.5e5 faces on
+  /// (benchmark/Flow_aligned_surfaces/RESULTS.md, issue 18, stop 25).  The choice does not
+  /// depend on `use_parallelism()`, so that the solutions do not either.
   static constexpr double default_smallest_swept_factor = 3e6;
 
-  /// Sets the number of nonzeros of the factor from which the next factorizations are repacked
-  /// and solved by the supernodal sweeps.
+  /// Sets the number of nonzeros of the factor from which the next factorizations are solved by
+  /// the supernodal sweeps.
   void sweep_from(double entries) { m_smallest_swept_factor = entries; }
 
   /// Whether solve() uses the supernodal sweeps (else CHOLMOD's simplicial solve).
@@ -138,21 +139,20 @@ public:
   std::size_t number_of_supernodes() const { return m_super.empty() ? 0 : m_super.size() - 1; }
 
   /// The nonzeros of the factor, which each sweep reads once.
-  double number_of_entries() const
-  {
-    return uses_supernodal_sweeps() ? m_entries : this->m_cholmodFactor ? double(this->m_cholmod.lnz) : 0.;
-  }
+  double number_of_entries() const { return this->m_cholmodFactor ? double(this->m_cholmod.lnz) : 0.; }
 
-  /// The bytes one sweep of solve() reads from the factor: the values and the row indices of the
-  /// supernodes, or, when CHOLMOD's simplicial solve is used, its values and a row index per value.
+  /// The bytes one sweep of solve() reads from the factor: its values, the row indices of the
+  /// first column of each supernode and the start of every column, or, when CHOLMOD's simplicial
+  /// solve is used, its values and a row index per value.
   double bytes_per_sweep() const
   {
     if (!this->m_cholmodFactor)
       return 0;
+    const double columns = double(this->m_cholmodFactor->n);
     if (!uses_supernodal_sweeps())
-      return number_of_entries() * (sizeof(double) + sizeof(int)) + 2. * double(this->m_cholmodFactor->n) * sizeof(int);
+      return number_of_entries() * (sizeof(double) + sizeof(int)) + 2. * columns * sizeof(int);
     return number_of_entries() * sizeof(FactorScalar) + double(m_rows.size()) * sizeof(int) +
-           double(m_super.size() + m_pi.size() + m_px.size()) * sizeof(int);
+           (columns + 2. * double(m_super.size())) * sizeof(int);
   }
 
   /// \internal Eigen's solve() expression ends here.
@@ -193,19 +193,17 @@ private:
     return true;
   }
 
-  // Copies the simplicial LDL^T factor into supernodes of L sqrt(D); false if a pivot of D is
-  // not positive (the matrix is not positive definite).
-  bool pack(const cholmod_factor& factor)
+  // The fundamental supernodes of the simplicial factor: column j + 1 continues one when it is
+  // j's parent (the first row below j's diagonal) and has j's pattern minus j (one entry fewer:
+  // the pattern of a column less its diagonal is contained in its parent's).
+  void find_supernodes(const cholmod_factor& factor)
   {
     const int n = int(factor.n);
     const int* p = static_cast<const int*>(factor.p);
     const int* index = static_cast<const int*>(factor.i);
     const int* count = static_cast<const int*>(factor.nz);
-    const double* value = static_cast<const double*>(factor.x);
-    // The supernodes: column j + 1 continues one when it is j's parent and has j's pattern minus j.
-    m_super.clear();
     m_pi.assign(1, 0);
-    m_px.assign(1, 0);
+    m_largest_supernode_rows = 0;
     for (int c0 = 0; c0 < n;) {
       int k = 1;
       while (c0 + k < n && count[c0 + k - 1] == count[c0 + k] + 1 && count[c0 + k - 1] > 1 &&
@@ -213,34 +211,34 @@ private:
         ++k;
       m_super.push_back(c0);
       m_pi.push_back(m_pi.back() + count[c0]);
-      m_px.push_back(m_px.back() + count[c0] * k);
+      m_largest_supernode_rows = (std::max)(m_largest_supernode_rows, std::size_t(count[c0]));
       c0 += k;
     }
     m_super.push_back(n);
-    // Their row lists and dense blocks.
-    const std::size_t nsuper = m_super.size() - 1;
     m_rows.resize(std::size_t(m_pi.back()));
-    m_values.assign(std::size_t(m_px.back()), FactorScalar(0));
-    m_largest_supernode_rows = 0;
-    m_entries = 0;
-    for (std::size_t s = 0; s < nsuper; ++s) {
-      const int c0 = m_super[s], k = m_super[s + 1] - c0, nrows = m_pi[s + 1] - m_pi[s];
-      std::copy(index + p[c0], index + p[c0] + nrows, m_rows.begin() + m_pi[s]);
-      for (int b = 0; b < k; ++b) {
-        const int column = c0 + b;
-        const double d = value[p[column]]; // the diagonal comes first
-        if (!(d > 0) || !std::isfinite(d))
-          return false;
-        const double root = std::sqrt(d);
-        FactorScalar* target = m_values.data() + m_px[s] + std::size_t(b) * nrows + b;
-        target[0] = FactorScalar(root);
-        for (int t = 1; t < count[column]; ++t)
-          target[t] = FactorScalar(value[p[column] + t] * root);
-      }
-      m_largest_supernode_rows = (std::max)(m_largest_supernode_rows, std::size_t(nrows));
-      m_entries += double(k) * nrows - double(k) * (k - 1) / 2;
-    }
-    return true;
+    for (std::size_t s = 0; s + 1 < m_super.size(); ++s)
+      std::copy_n(index + p[m_super[s]], m_pi[s + 1] - m_pi[s], m_rows.begin() + m_pi[s]);
+  }
+
+  // The single-precision copy of the values, at the places CHOLMOD's factor has them.
+  void copy_values(const cholmod_factor& factor)
+  {
+    const int* p = static_cast<const int*>(factor.p);
+    const int* count = static_cast<const int*>(factor.nz);
+    const double* value = static_cast<const double*>(factor.x);
+    m_single.resize(factor.nzmax);
+    for (std::size_t j = 0; j < factor.n; ++j)
+      std::transform(value + p[j], value + p[j] + count[j], m_single.begin() + p[j],
+                     [](double v) { return FactorScalar(v); });
+  }
+
+  // The values the sweeps read: CHOLMOD's, or their single-precision copy.
+  const FactorScalar* values() const
+  {
+    if constexpr (std::is_same<FactorScalar, double>::value)
+      return static_cast<const double*>(this->m_cholmodFactor->x);
+    else
+      return m_single.data();
   }
 
   // Columns [first, first + R) of b, solved into the same columns of dest.
@@ -262,12 +260,13 @@ private:
         dest(perm[i], first + c) = z[std::size_t(i) * R + c];
   }
 
-  // L L^T z = z in place (z interleaved, permuted).
+  // L D L^T z = z in place (z interleaved, permuted).
   template <int R>
   void sweeps(double* z) const
   {
-    const Supernode_sweeper<R> sweeper{m_super.data(), m_pi.data(), m_px.data(), m_rows.data(), m_values.data(),
-                                       int(number_of_supernodes())};
+    const cholmod_factor& factor = *this->m_cholmodFactor;
+    const Supernode_sweeper<R> sweeper{m_super.data(), m_pi.data(), m_rows.data(), static_cast<const int*>(factor.p),
+                                       static_cast<const int*>(factor.nz), values(), int(number_of_supernodes())};
     // One gather buffer per group of subtrees (and one more for the top).
     m_buffers.resize(std::size_t(Elimination_subtrees::number_of_groups + 1));
     for (std::vector<double>& buffer : m_buffers)
@@ -278,13 +277,15 @@ private:
     m_subtrees.backward([&](int s, int group) { sweeper.backward(s, z, m_buffers[std::size_t(group)].data()); });
   }
 
-  // The dense work of one supernode: its block is nrows x k, column-major, the first k rows the
-  // supernode's own columns (lower triangle used), the other rows scattered below.  The rows of
-  // the right-hand side it touches are gathered into `buffer`, one contiguous array of nrows
-  // values per right-hand side, and the block is swept in panels of `panel_width` columns: the
-  // panel's small triangle, then all the rows below it at once, so that each gathered row is
-  // read and written once per panel, on pairs of consecutive rows (two lanes a compiler
-  // vectorizes).
+  // The dense work of one supernode of k columns, a lower trapezoid stored as CHOLMOD stores it:
+  // column c0 + j holds D_jj then the entries of the unit L below it, at the rows of positions
+  // j, j + 1, ... of the supernode's row list (that of its first column), so that column(s, j)[i]
+  // is the entry at position i >= j.  Forward: z1 := L11^{-1} z1, z2 -= L21 z1, then z1 := D^{-1} z1;
+  // backward: z1 := L11^{-T} (z1 - L21^T z2).  Wide supernodes gather the rows of the right-hand
+  // side they touch into `buffer`, one contiguous array of nrows values per right-hand side, and
+  // are swept in panels of `panel_width` columns: the panel's small triangle, then all the rows
+  // below it at once, so that each gathered row is read and written once per panel, on pairs of
+  // consecutive rows (two lanes a compiler vectorizes).
   template <int R>
   struct Supernode_sweeper {
     static constexpr int panel_width = 4;
@@ -311,35 +312,49 @@ private:
       }
     }
 
+    /// The buffer a supernode of `nrows` rows needs.
+    static std::size_t buffer_size(std::size_t nrows) { return nrows * R; }
+
+    const int *super, *pi, *rows, *start, *count;
+    const FactorScalar* x;
+    int super_count;
+
+    int columns_of(int s) const { return super[s + 1] - super[s]; }
+    int rows_of(int s) const { return pi[s + 1] - pi[s]; }
+    const int* row_list(int s) const { return rows + pi[s]; }
+    // Column j of supernode s, indexed by the position in the row list (valid from j on).
+    const FactorScalar* column(int s, int j) const
+    {
+      return x + (std::ptrdiff_t(start[super[s] + j]) - j);
+    }
+
     // forward() of a supernode of K columns, in place.
     template <int K>
     void forward_narrow(int s, double* z, double* target, int split) const
     {
       const int c0 = super[s];
-      const int nrows = pi[s + 1] - pi[s];
-      const int* row = rows + pi[s];
-      const FactorScalar* block = x + px[s];
+      const int nrows = rows_of(s);
+      const int* row = row_list(s);
+      const FactorScalar* column_of[K];
+      for (int j = 0; j < K; ++j)
+        column_of[j] = column(s, j);
       double v[K][R];
       for (int j = 0; j < K; ++j)
         for (int c = 0; c < R; ++c)
           v[j][c] = z[std::size_t(c0 + j) * R + c];
-      for (int j = 0; j < K; ++j) {
-        const FactorScalar* column = block + std::size_t(j) * nrows;
-        for (int c = 0; c < R; ++c)
-          v[j][c] /= double(column[j]);
+      for (int j = 0; j < K; ++j)
         for (int i = j + 1; i < K; ++i)
           for (int c = 0; c < R; ++c)
-            v[i][c] -= double(column[i]) * v[j][c];
-      }
+            v[i][c] -= double(column_of[j][i]) * v[j][c];
       for (int j = 0; j < K; ++j)
         for (int c = 0; c < R; ++c)
-          z[std::size_t(c0 + j) * R + c] = v[j][c];
+          z[std::size_t(c0 + j) * R + c] = v[j][c] / double(column_of[j][j]);
       const int end_z = split < 0 ? nrows : (std::max)(split, K);
       for (int i = K; i < nrows; ++i) {
         double* out = (i < end_z ? z : target) + std::size_t(row[i]) * R;
         double update[R] = {};
         for (int j = 0; j < K; ++j) {
-          const double l = double(block[std::size_t(j) * nrows + i]);
+          const double l = double(column_of[j][i]);
           for (int c = 0; c < R; ++c)
             update[c] += l * v[j][c];
         }
@@ -353,52 +368,44 @@ private:
     void backward_narrow(int s, double* z) const
     {
       const int c0 = super[s];
-      const int nrows = pi[s + 1] - pi[s];
-      const int* row = rows + pi[s];
-      const FactorScalar* block = x + px[s];
+      const int nrows = rows_of(s);
+      const int* row = row_list(s);
+      const FactorScalar* column_of[K];
+      for (int j = 0; j < K; ++j)
+        column_of[j] = column(s, j);
       if (s > 0) {
-        prefetch(x + px[s - 1], x + px[s]);
+        prefetch_values(s - 1);
         prefetch_rows(z, s - 1);
       }
       double sum[K][R] = {};
       for (int i = K; i < nrows; ++i) {
         const double* in = z + std::size_t(row[i]) * R;
         for (int j = 0; j < K; ++j) {
-          const double l = double(block[std::size_t(j) * nrows + i]);
+          const double l = double(column_of[j][i]);
           for (int c = 0; c < R; ++c)
             sum[j][c] += l * in[c];
         }
       }
       double v[K][R];
-      for (int j = K - 1; j >= 0; --j) {
-        const FactorScalar* column = block + std::size_t(j) * nrows;
+      for (int j = K - 1; j >= 0; --j)
         for (int c = 0; c < R; ++c) {
           double value = z[std::size_t(c0 + j) * R + c] - sum[j][c];
           for (int i = j + 1; i < K; ++i)
-            value -= double(column[i]) * v[i][c];
-          v[j][c] = value / double(column[j]);
+            value -= double(column_of[j][i]) * v[i][c];
+          v[j][c] = value;
         }
-      }
       for (int j = 0; j < K; ++j)
         for (int c = 0; c < R; ++c)
           z[std::size_t(c0 + j) * R + c] = v[j][c];
     }
-    /// The buffer a supernode of `nrows` rows needs.
-    static std::size_t buffer_size(std::size_t nrows) { return nrows * R; }
 
-    const int *super, *pi, *px, *rows;
-    const FactorScalar* x;
-    int super_count;
-
-    // z := L11^{-1} z on the supernode's columns; then the updates -L21 z1 are added to the rows
-    // below: those at positions [k, split) to z, those at [split, nrows) to `target` (a private
-    // copy of the top rows, or z itself when split < 0).
+    // The updates of the rows at positions [k, split) go to z, those at [split, nrows) to
+    // `target` (a private copy of the top rows, or z itself when split < 0).
     void forward(int s, double* z, double* target, int split, double* buffer) const
     {
-      const int c0 = super[s], k = super[s + 1] - c0;
-      const int nrows = pi[s + 1] - pi[s];
-      const int* row = rows + pi[s];
-      const FactorScalar* block = x + px[s];
+      const int c0 = super[s], k = columns_of(s);
+      const int nrows = rows_of(s);
+      const int* row = row_list(s);
       if (k <= narrow_width) {
         with_width(k, [&](auto width) { forward_narrow<decltype(width)::value>(s, z, target, split); });
         return;
@@ -417,18 +424,18 @@ private:
       for (int j0 = 0; j0 < k; j0 += panel_width) {
         const int width = (std::min)(panel_width, k - j0);
         for (int j = j0; j < j0 + width; ++j) {
-          const FactorScalar* column = block + std::size_t(j) * nrows;
-          for (int c = 0; c < R; ++c) {
-            v[c][j] /= double(column[j]);
+          const FactorScalar* l = column(s, j);
+          for (int c = 0; c < R; ++c)
             for (int i = j + 1; i < j0 + width; ++i)
-              v[c][i] -= double(column[i]) * v[c][j];
-          }
+              v[c][i] -= double(l[i]) * v[c][j];
         }
-        with_width(width, [&](auto b) { subtract_panel<decltype(b)::value>(block, nrows, j0, v); });
+        with_width(width, [&](auto b) { subtract_panel<decltype(b)::value>(s, nrows, j0, v); });
       }
-      for (int i = 0; i < k; ++i)
+      for (int i = 0; i < k; ++i) {
+        const double d = double(column(s, i)[i]);
         for (int c = 0; c < R; ++c)
-          z[std::size_t(c0 + i) * R + c] = v[c][i];
+          z[std::size_t(c0 + i) * R + c] = v[c][i] / d;
+      }
       const int end_z = split < 0 ? nrows : (std::max)(split, k);
       for (int i = k; i < end_z; ++i)
         for (int c = 0; c < R; ++c)
@@ -438,22 +445,20 @@ private:
           target[std::size_t(row[i]) * R + c] += v[c][i];
     }
 
-    // z := L11^{-T} (z1 - L21^T z2) on the supernode's columns, z2 the final rows below.
     void backward(int s, double* z, double* buffer) const
     {
-      const int c0 = super[s], k = super[s + 1] - c0;
-      const int nrows = pi[s + 1] - pi[s];
-      const int* row = rows + pi[s];
-      const FactorScalar* block = x + px[s];
+      const int c0 = super[s], k = columns_of(s);
+      const int nrows = rows_of(s);
+      const int* row = row_list(s);
       if (k <= narrow_width) {
         with_width(k, [&](auto width) { backward_narrow<decltype(width)::value>(s, z); });
         return;
       }
       // The sweep runs down through memory, where the hardware prefetchers of common processors
-      // do not follow: ask for the block and the rows of the supernode visited next (most often
+      // do not follow: ask for the values and the rows of the supernode visited next (most often
       // s - 1) while this one is computed.
       if (s > 0) {
-        prefetch(x + px[s - 1], x + px[s]);
+        prefetch_values(s - 1);
         prefetch_rows(z, s - 1);
       }
       double* v[R];
@@ -467,14 +472,14 @@ private:
       // The panels of forward(), last first: all the rows below the panel, then its triangle.
       for (int j0 = (k - 1) / panel_width * panel_width; j0 >= 0; j0 -= panel_width) {
         const int width = (std::min)(panel_width, k - j0);
-        with_width(width, [&](auto b) { dot_panel<decltype(b)::value>(block, nrows, j0, v); });
+        with_width(width, [&](auto b) { dot_panel<decltype(b)::value>(s, nrows, j0, v); });
         for (int j = j0 + width - 1; j >= j0; --j) {
-          const FactorScalar* column = block + std::size_t(j) * nrows;
+          const FactorScalar* l = column(s, j);
           for (int c = 0; c < R; ++c) {
             double sum = 0;
             for (int i = j + 1; i < j0 + width; ++i)
-              sum += double(column[i]) * v[c][i];
-            v[c][j] = (v[c][j] - sum) / double(column[j]);
+              sum += double(l[i]) * v[c][i];
+            v[c][j] -= sum;
           }
         }
       }
@@ -487,35 +492,37 @@ private:
     void prefetch_rows(const double* z, int s) const
     {
 #if defined(__GNUC__) || defined(__clang__)
-      const int k = super[s + 1] - super[s];
-      for (const int* row = rows + pi[s] + k; row < rows + pi[s + 1]; ++row)
-        __builtin_prefetch(z + std::size_t(*row) * R);
+      const int* row = row_list(s);
+      for (int i = columns_of(s); i < rows_of(s); ++i)
+        __builtin_prefetch(z + std::size_t(row[i]) * R);
 #else
       (void)z;
       (void)s;
 #endif
     }
 
-    static void prefetch(const FactorScalar* begin, const FactorScalar* end)
+    // The values of supernode s.
+    void prefetch_values(int s) const
     {
 #if defined(__GNUC__) || defined(__clang__)
-      for (const char* p = reinterpret_cast<const char*>(begin); p < reinterpret_cast<const char*>(end); p += 64)
-        __builtin_prefetch(p);
+      for (int j = super[s]; j < super[s + 1]; ++j)
+        for (const char* p = reinterpret_cast<const char*>(x + start[j]);
+             p < reinterpret_cast<const char*>(x + start[j] + count[j]); p += 64)
+          __builtin_prefetch(p);
 #else
-      (void)begin;
-      (void)end;
+      (void)s;
 #endif
     }
 
     // v[c][i] -= sum over the panel's columns b of L(i, j + b) v[c][j + b], for the rows i below
     // the panel: no sum runs across rows, so the loop over i vectorizes as it stands.
     template <int B>
-    static void subtract_panel(const FactorScalar* block, int nrows, int j, double* const* v)
+    void subtract_panel(int s, int nrows, int j, double* const* v) const
     {
-      const FactorScalar* __restrict column[B];
+      const FactorScalar* __restrict l[B];
       double p[B][R];
       for (int b = 0; b < B; ++b) {
-        column[b] = block + std::size_t(j + b) * nrows;
+        l[b] = column(s, j + b);
         for (int c = 0; c < R; ++c)
           p[b][c] = v[c][j + b];
       }
@@ -524,7 +531,7 @@ private:
         for (int i = j + B; i < nrows; ++i) {
           double update = 0;
           for (int b = 0; b < B; ++b)
-            update += double(column[b][i]) * p[b][c];
+            update += double(l[b][i]) * p[b][c];
           vc[i] -= update;
         }
       }
@@ -534,36 +541,36 @@ private:
     // columns b: even and odd rows summed apart, two lanes written out so that a compiler that
     // may not reorder a floating-point sum still pairs them.
     template <int B>
-    static void dot_panel(const FactorScalar* block, int nrows, int j, double* const* v)
+    void dot_panel(int s, int nrows, int j, double* const* v) const
     {
-      const FactorScalar* __restrict column[B];
+      const FactorScalar* __restrict l[B];
       for (int b = 0; b < B; ++b)
-        column[b] = block + std::size_t(j + b) * nrows;
+        l[b] = column(s, j + b);
       double sum[B][R][2] = {};
       int i = j + B;
       for (; i + 1 < nrows; i += 2)
         for (int c = 0; c < R; ++c) {
           const double* __restrict vc = v[c];
           for (int b = 0; b < B; ++b) {
-            sum[b][c][0] += double(column[b][i]) * vc[i];
-            sum[b][c][1] += double(column[b][i + 1]) * vc[i + 1];
+            sum[b][c][0] += double(l[b][i]) * vc[i];
+            sum[b][c][1] += double(l[b][i + 1]) * vc[i + 1];
           }
         }
       if (i < nrows)
         for (int c = 0; c < R; ++c)
           for (int b = 0; b < B; ++b)
-            sum[b][c][0] += double(column[b][i]) * v[c][i];
+            sum[b][c][0] += double(l[b][i]) * v[c][i];
       for (int b = 0; b < B; ++b)
         for (int c = 0; c < R; ++c)
           v[c][j + b] -= sum[b][c][0] + sum[b][c][1];
     }
   };
 
-  // The factor L sqrt(D) by supernodes: first column, offsets of the row lists and of the dense
-  // blocks (nrows x k, column-major), the row lists, the blocks.
-  std::vector<int> m_super, m_pi, m_px, m_rows;
-  std::vector<FactorScalar> m_values;
-  double m_entries = 0;
+  // The supernodes of CHOLMOD's factor: their first columns (and n at the end), the offsets of
+  // their row lists in m_rows, the row lists (copies of their first columns' row indices).  The
+  // values stay where CHOLMOD put them, swept there in double, or copied in single precision.
+  std::vector<int> m_super, m_pi, m_rows;
+  std::vector<FactorScalar> m_single;
   double m_smallest_swept_factor = default_smallest_swept_factor;
   int m_ordering = -1;
   Elimination_subtrees m_subtrees;
