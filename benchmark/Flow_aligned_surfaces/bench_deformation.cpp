@@ -256,8 +256,8 @@ public:
 };
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
-// The package's default solver (internal::Supernodal_LLT: CHOLMOD's simplicial LDL^T repacked
-// into supernodes for the solves), in double or single precision, with the ordering chosen by
+// The package's default solver (internal::Supernodal_LLT: CHOLMOD's simplicial LDL^T swept in
+// place by supernodes for the solves), in double or single precision, with the ordering chosen by
 // size (Ordering < 0) or forced, its solves swept in sequence or over the threads of TBB's
 // default arena (Parallel).
 template <class FactorScalar, int Ordering, bool Parallel = false>
@@ -507,7 +507,7 @@ std::vector<Solver_config> solver_configs()
   typedef Eigen::CholmodSimplicialLDLT<Sparse_matrix> Cholmod_simplicial;
   configs.push_back({"supernodal_llt",
                      "the package's Supernodal_LLT: CHOLMOD simplicial LDL^T (default ordering strategy) "
-                     "repacked into supernodes for the solves, double, solves in sequence",
+                     "swept in place by supernodes for the solves, double, solves in sequence",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1>>>});
   configs.push_back({"supernodal_llt_metis", "the same with METIS's nested dissection at every size",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, CHOLMOD_METIS>>>});

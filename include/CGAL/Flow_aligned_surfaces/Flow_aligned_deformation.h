@@ -90,8 +90,9 @@ discretized; iterations never accumulate errors because they always reconstruct 
         sparse Cholesky solver, such as `CGAL::Eigen_solver_traits<S>`; its `solver()` is used to
         factor once and solve the three coordinates at once.  Default: when CHOLMOD was found
         (the macro `CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD`), CHOLMOD's simplicial \f$ LDL^T \f$
-        factorization, whose factor the package repacks by supernodes for its own
-        back-substitutions (swept over independent subtrees in parallel with `use_parallelism`),
+        factorization, whose factor the package sweeps in place by supernodes for its own
+        back-substitutions on large surfaces (over independent subtrees in parallel with
+        `use_parallelism`),
         else `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`;
         both run on the calling thread only unless parallelism is asked for (see \ref fas_threads).
 
