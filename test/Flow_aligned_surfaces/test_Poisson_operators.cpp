@@ -99,6 +99,39 @@ TEST(PoissonOperators, LaplacianEqualsCotangentFormula)
             1e-10 * expected.cwiseAbs().maxCoeff());
 }
 
+// Each face keeps its stiffness K_j = A_j grad^T grad as three numbers (its rows sum to zero);
+// its entries and its product with a matrix are those of the dense K_j built from the closed-form
+// gradients, and each off-diagonal entry is -cot/2 of the angle opposite its edge.
+TEST(PoissonOperators, FaceStiffnessIsTheDenseStiffnessOfTheGradients)
+{
+  const Curved_patch patch = make_curved_patch(300);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (const FASI::Reference_face& face : patch.ops.faces) {
+    const Eigen::Vector3d a = patch.x.row(face.vertices[0]).transpose(), b = patch.x.row(face.vertices[1]).transpose(),
+                          c = patch.x.row(face.vertices[2]).transpose();
+    const auto t = FASI::triangle_gradients(a, b, c);
+    ASSERT_TRUE(t);
+    const Eigen::Matrix3d dense = t->area * t->gradients.transpose() * t->gradients;
+    const double scale = dense.cwiseAbs().maxCoeff();
+    Eigen::Matrix3d entries;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k)
+        entries(i, k) = face.stiffness(i, k);
+    EXPECT_LE((entries - dense).cwiseAbs().maxCoeff(), 1e-13 * scale);
+    const std::array<Eigen::Vector3d, 3> p = {a, b, c};
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector3d e1 = p[std::size_t((i + 1) % 3)] - p[std::size_t(i)];
+      const Eigen::Vector3d e2 = p[std::size_t((i + 2) % 3)] - p[std::size_t(i)];
+      EXPECT_NEAR(face.edge_stiffness[std::size_t(i)], -0.5 * e1.dot(e2) / e1.cross(e2).norm(), 1e-13 * scale);
+    }
+    Eigen::Matrix3d m;
+    for (int i = 0; i < 9; ++i)
+      m(i / 3, i % 3) = uniform(random);
+    EXPECT_LE((face.times_stiffness(m) - dense * m).cwiseAbs().maxCoeff(), 1e-13 * scale);
+  }
+}
+
 // L is assembled column by column without triplets (issue 18); it must be the matrix that
 // Eigen's setFromTriplets() makes of the faces' stiffness matrices, entry for entry and bit for
 // bit (the same sums in the same order), also with the vertices in a random order and on a mesh
@@ -150,7 +183,7 @@ void expect_same_operators(const FASI::Poisson_operators& got, const FASI::Poiss
   for (std::size_t j = 0; j < expected.faces.size(); ++j) {
     ASSERT_EQ(got.faces[j].vertices, expected.faces[j].vertices) << "face " << j;
     ASSERT_EQ(got.faces[j].area, expected.faces[j].area) << "face " << j;
-    ASSERT_EQ(got.faces[j].stiffness, expected.faces[j].stiffness) << "face " << j;
+    ASSERT_EQ(got.faces[j].edge_stiffness, expected.faces[j].edge_stiffness) << "face " << j;
   }
   ASSERT_EQ(got.face_areas, expected.face_areas);
   ASSERT_TRUE(got.L.isCompressed());

@@ -904,7 +904,7 @@ private:
     Eigen::Matrix3d local;
     for (int i = 0; i < 3; ++i)
       local.row(i) = x.row(face.vertices[i]);
-    return face.stiffness * local * t.transpose();
+    return face.times_stiffness(local * t.transpose());
   }
 
 #ifdef CGAL_LINKED_WITH_TBB

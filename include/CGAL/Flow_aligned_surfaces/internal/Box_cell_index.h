@@ -26,6 +26,8 @@ namespace Flow_aligned_surfaces {
 namespace internal {
 
 class Box_cell_index {
+  using Index = std::uint32_t; // boxes, entries and queries: a few thousand of each in a growth
+
 public:
   /// Indexes `boxes` (kept by reference: they must outlive the index).
   explicit Box_cell_index(const std::vector<CGAL::Bbox_3>& boxes) : m_boxes(boxes)
@@ -44,16 +46,15 @@ public:
       capacity *= 2;
     m_mask = capacity - 1;
     m_keys.assign(capacity, empty_key);
+    // Counted, then listed from each slot's end down (a box whose cells share a slot is listed
+    // there twice: the queries skip what they tested already).
     m_first.assign(capacity + 1, 0);
-    // Counted, then listed, each box once per slot even where several of its cells share one.
-    std::vector<std::size_t> last(capacity, std::size_t(-1));
-    for_each_slot_of_boxes(last, [&](std::size_t slot, std::size_t) { ++m_first[slot + 1]; });
-    for (std::size_t s = 0; s < capacity; ++s)
-      m_first[s + 1] += m_first[s];
+    for_each_slot_of_boxes([&](std::size_t slot, std::size_t) { ++m_first[slot]; });
+    for (std::size_t s = 1; s < capacity; ++s)
+      m_first[s] += m_first[s - 1]; // the end of slot s
+    m_first[capacity] = m_first[capacity - 1];
     m_listed.resize(m_first[capacity]);
-    std::vector<std::size_t> fill(m_first.begin(), m_first.end() - 1);
-    last.assign(capacity, std::size_t(-1));
-    for_each_slot_of_boxes(last, [&](std::size_t slot, std::size_t j) { m_listed[fill[slot]++] = j; });
+    for_each_slot_of_boxes([&](std::size_t slot, std::size_t j) { m_listed[--m_first[slot]] = Index(j); });
     m_visited.assign(boxes.size(), 0);
   }
 
@@ -145,21 +146,16 @@ private:
     return s;
   }
 
-  // Calls f(slot, box) for every box and every slot of the cells it reaches, once per pair.
+  // Calls f(slot, box) for every box and every cell it reaches.
   template <class F>
-  void for_each_slot_of_boxes(std::vector<std::size_t>& last, const F& f)
+  void for_each_slot_of_boxes(const F& f)
   {
     for (std::size_t b = 0; b < m_boxes.size(); ++b) {
       const Cell_range r = cell_range(m_boxes[b]);
       for (std::int64_t i = r.lo[0]; i <= r.hi[0]; ++i)
         for (std::int64_t j = r.lo[1]; j <= r.hi[1]; ++j)
-          for (std::int64_t k = r.lo[2]; k <= r.hi[2]; ++k) {
-            const std::size_t slot = insert(key(i, j, k));
-            if (last[slot] != b) {
-              last[slot] = b;
-              f(slot, b);
-            }
-          }
+          for (std::int64_t k = r.lo[2]; k <= r.hi[2]; ++k)
+            f(insert(key(i, j, k)), b);
     }
   }
 
@@ -168,9 +164,9 @@ private:
   double m_cell = 0;
   std::size_t m_mask = 0;
   std::vector<std::int64_t> m_keys;
-  std::vector<std::size_t> m_first, m_listed;
-  std::vector<std::size_t> m_visited; // the last query that tested each box
-  std::size_t m_query = 0;
+  std::vector<Index> m_first, m_listed; // slot s lists m_listed[m_first[s]], ... before m_first[s + 1]
+  std::vector<Index> m_visited;         // the last query that tested each box
+  Index m_query = 0;
 };
 
 } // namespace internal

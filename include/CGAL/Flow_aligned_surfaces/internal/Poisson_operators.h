@@ -10,8 +10,8 @@
 //   D  (m x 3n)  = G^T A, the divergence of a per-face vector field
 //
 // Each face also keeps what an iteration needs without touching the sparse
-// matrices: its vertex indices, its basis gradients and its local stiffness
-// K_j = A_j grad^T grad (3 x 3), so that the face's share of D Y' is K_j X_j T_j^T.
+// matrices: its vertex indices and its local stiffness K_j = A_j grad^T grad (3 x 3, kept as its
+// three entries off the diagonal), so that the face's share of D Y' is K_j X_j T_j^T.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_POISSON_OPERATORS_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_POISSON_OPERATORS_H
@@ -62,8 +62,30 @@ triangle_gradients(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
 /// Per-face data of the reference mesh M_0.
 struct Reference_face {
   std::array<Eigen::Index, 3> vertices;
-  Eigen::Matrix3d stiffness; // K_j = A_j grad^T grad
+  // The local stiffness K_j = A_j grad^T grad by its entries off the diagonal: entry i for the
+  // edge opposite corner i, K(k, l) with {i, k, l} = {0, 1, 2}.  The basis functions sum to one,
+  // so the gradients sum to zero and so do K's rows: K(i, i) = -(K(i, k) + K(i, l)).  Three
+  // numbers instead of nine, and L = sum_j K_j has L 1 = 0 exactly.
+  std::array<double, 3> edge_stiffness{};
   double area = 0;
+
+  /// The entry (i, k) of K_j.
+  double stiffness(int i, int k) const
+  {
+    return i == k ? -(edge_stiffness[std::size_t((i + 1) % 3)] + edge_stiffness[std::size_t((i + 2) % 3)])
+                  : edge_stiffness[std::size_t(3 - i - k)];
+  }
+
+  /// K_j m, for m with one row per corner: row i is sum over k != i of K(i, k) (m_k - m_i).
+  Eigen::Matrix3d times_stiffness(const Eigen::Matrix3d& m) const
+  {
+    const Eigen::RowVector3d d01 = m.row(1) - m.row(0), d02 = m.row(2) - m.row(0), d12 = m.row(2) - m.row(1);
+    Eigen::Matrix3d result;
+    result.row(0) = edge_stiffness[2] * d01 + edge_stiffness[1] * d02;
+    result.row(1) = edge_stiffness[0] * d12 - edge_stiffness[2] * d01;
+    result.row(2) = -edge_stiffness[1] * d02 - edge_stiffness[0] * d12;
+    return result;
+  }
 };
 
 /// The operators of Section 3 assembled on one mesh.
@@ -98,7 +120,9 @@ make_reference_face(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
   Reference_face face;
   face.vertices = fv;
   face.area = t->area;
-  face.stiffness = t->area * t->gradients.transpose() * t->gradients;
+  for (int i = 0; i < 3; ++i)
+    face.edge_stiffness[std::size_t(i)] =
+        t->area * t->gradients.col((i + 1) % 3).dot(t->gradients.col((i + 2) % 3));
   if (gradients)
     *gradients = t->gradients;
   return face;
