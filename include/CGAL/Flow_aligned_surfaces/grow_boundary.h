@@ -642,16 +642,55 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
   result.report.number_of_grown_edges = report.grown_edges.size();
   result.report.grown_edges = std::move(report.grown_edges);
   auto index = strip.add_property_map<strip_vertex, Eigen::Index>("v:fas_index", -1).first;
+  // The closest point of the raw strip to a new vertex (which the relaxation moved off the raw
+  // strip by a fraction of the target length at most, most often): among the raw faces whose
+  // boxes, dilated by a quarter of the target length, hold it, else by CGAL's AABB tree.
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Strip_mesh>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, Primitive>>;
   Tree tree;
   Strip_mesh raw_reference_mesh;
+  std::vector<Strip_mesh::Face_index> raw_faces;
+  std::vector<CGAL::Bbox_3> raw_boxes;
+  const double reach = 0.25 * target_length;
   if (reference) {
-    PMP::build_AABB_tree(raw, tree);
     raw_reference_mesh = raw;
     for (auto v : raw_reference_mesh.vertices())
       raw_reference_mesh.point(v) = to_point(raw_reference[v]);
+    for (auto f : raw.faces()) {
+      CGAL::Bbox_3 b;
+      for (auto v : vertices_around_face(raw.halfedge(f), raw))
+        b += raw.point(v).bbox();
+      raw_faces.push_back(f);
+      raw_boxes.emplace_back(b.xmin() - reach, b.ymin() - reach, b.zmin() - reach, b.xmax() + reach,
+                             b.ymax() + reach, b.zmax() + reach);
+    }
   }
+  std::optional<Box_cell_index> raw_cells;
+  if (reference)
+    raw_cells.emplace(raw_boxes);
+  auto closest_raw_point = [&](const Epick::Point_3& p) {
+    std::pair<Epick::Point_3, Strip_mesh::Face_index> best(p, Strip_mesh::null_face());
+    double best_distance = reach * reach;
+    raw_cells->find_meeting(p.bbox(), [&](std::size_t j) {
+      const auto h = raw.halfedge(raw_faces[j]);
+      const Epick::Triangle_3 t(raw.point(raw.source(h)), raw.point(raw.target(h)),
+                                raw.point(raw.target(raw.next(h))));
+      const Epick::Point_3 q = Epick::Construct_projected_point_3()(t, p);
+      const double d = CGAL::squared_distance(p, q);
+      if (d <= best_distance) {
+        best_distance = d;
+        best = {q, raw_faces[j]};
+      }
+      return false;
+    });
+    if (best.second == Strip_mesh::null_face()) {
+      if (tree.empty())
+        PMP::build_AABB_tree(raw, tree);
+      const auto found = tree.closest_point_and_primitive(p);
+      best = {found.first, found.second};
+    }
+    return best;
+  };
   for (auto v : strip.vertices()) {
     if (get(base, v) >= 0) {
       put(index, v, get(base, v));
@@ -661,8 +700,8 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
     const auto& p = strip.point(v);
     result.points.emplace_back(p.x(), p.y(), p.z());
     if (reference) {
-      const auto location = PMP::locate_with_AABB_tree(p, tree, raw);
-      const auto p0 = PMP::construct_point(location, raw_reference_mesh);
+      const auto [q, face] = closest_raw_point(p);
+      const auto p0 = PMP::construct_point(PMP::locate_in_face(q, face, raw), raw_reference_mesh);
       result.reference_points.emplace_back(p0.x(), p0.y(), p0.z());
     }
   }
