@@ -5,8 +5,8 @@
 #  1. Release: the core GoogleTest executable (no VTK), the VTK one, the examples and the demo
 #     programs (run as tests), the ParaView plugin (pvbatch scripts, the GUI under Xvfb, 2 MPI
 #     ranks), the Doxygen manual, the find_package consumer project, the install-deps guard.  The benchmarks are not built: scripts/build-benchmarks.sh builds them.
-#  2. AddressSanitizer + UndefinedBehaviorSanitizer: the core executable, and the readers'
-#     libFuzzer targets (clang++).  Rendering and VTK are not sanitized.
+#  2. AddressSanitizer + UndefinedBehaviorSanitizer, compiled by clang++ when there is one: the core
+#     executable, and the readers' libFuzzer targets (clang++).  Rendering and VTK are not sanitized.
 # Under CI=true a missing tool fails the run instead of skipping tests (FAS_REQUIRE_ALL_TOOLS).
 # FAS_SKIP_SANITIZERS=1 skips step 2.
 set -euo pipefail
@@ -26,10 +26,18 @@ cmake --build "$build" -j"$jobs"
 
 if [ "${FAS_SKIP_SANITIZERS:-0}" != 1 ]; then
   sanitized="$root/build/sanitize"
-  # -O0, no debug information: the core suite compiles in less than half the time of -O1
-  # (measured: one unity batch 245 s of CPU at -O0, over 540 s at -O1) and still runs in
+  # clang++ (installed for the fuzz targets) when there is one: the package is then compiled by
+  # both compilers in every run (clang rejects what GCC lets pass, a structured binding captured
+  # by a lambda for one), and clang's front end takes the suite's templates in a fraction of GCC's
+  # time (measured: the heaviest unity batch 80 s of CPU against 314 s).
+  sanitizer_compiler=()
+  if command -v clang++ > /dev/null && command -v clang > /dev/null; then
+    sanitizer_compiler=(-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang)
+  fi
+  # -O0, no debug information: the core suite compiles in a quarter of the time of -O1
+  # (measured with clang: one unity batch 80 s of CPU at -O0, 334 s at -O1) and still runs in
   # minutes.  ASan's reports name the functions from the symbols; add -g1 for line numbers.
-  cmake -S "$root" -B "$sanitized" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  cmake -S "$root" -B "$sanitized" "${sanitizer_compiler[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O0 -DNDEBUG" -DFAS_SANITIZE=ON \
     -DFAS_BUILD_EXAMPLES=OFF -DFAS_BUILD_DEMO=OFF -DFAS_BUILD_DOC_TEST=OFF
   cmake --build "$sanitized" --target test_flow_aligned_surfaces -j"$jobs"

@@ -12,6 +12,8 @@
 #include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <Eigen/QR>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,6 +21,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <random>
 #include <vector>
 
 // This file's tests and helpers in a namespace of their own: the suite is compiled in unity
@@ -230,6 +233,27 @@ Vector_3 gradient_at_vertex(const Mesh& tm, Scalar_map f, Vertex v)
 double angle_between(const Vector_3& a, const Vector_3& b)
 {
   return std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b);
+}
+
+// r_c's default is the second column of the Householder Q of n_c; the package computes it in
+// closed form, Eigen's HouseholderQR is the peer: random directions of all lengths, the axes in
+// both senses, and normals whose part off the first axis is tiny or underflows.
+TEST(Parametrize, HouseholderSecondColumnIsEigensHouseholderQ)
+{
+  using CGAL::Flow_aligned_surfaces::internal::householder_second_column;
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal;
+  std::vector<Eigen::Vector3d> normals = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1},
+                                          {1, 1e-200, 0}, {-1, 0, 1e-170}, {1, 1e-9, -1e-9}, {2e-300, 1, 1}};
+  for (int k = 0; k < 1000; ++k)
+    normals.emplace_back(std::ldexp(normal(random), k % 40 - 20), normal(random), normal(random));
+  for (const Eigen::Vector3d& n : normals) {
+    const Eigen::Matrix3d q = Eigen::HouseholderQR<Eigen::Vector3d>(n).householderQ();
+    const Eigen::Vector3d r = householder_second_column(n);
+    EXPECT_LE((r - q.col(1)).norm(), 4 * std::numeric_limits<double>::epsilon()) << "n = " << n.transpose();
+    EXPECT_NEAR(r.norm(), 1.0, 4 * std::numeric_limits<double>::epsilon()) << "n = " << n.transpose();
+    EXPECT_LE(std::abs(r.dot(n)), 8 * std::numeric_limits<double>::epsilon() * n.norm()) << "n = " << n.transpose();
+  }
 }
 
 TEST(Parametrize, OrthogonalGradientDirectionOnATiltedPlaneIsExact)

@@ -134,7 +134,8 @@ OutputIterator extract_iso_contours(const TriangleMesh& tm, ScalarMap scalar_map
                                   " is not finite");
   }
   const auto construct_point = gt.construct_point_3_object();
-  const auto coordinates = [&](auto v) {
+  // vpm by an init-capture: C++17 lambdas cannot capture a structured binding.
+  const auto coordinates = [vpm = vpm](auto v) {
     const auto& p = get(vpm, v);
     return std::array<double, 3>{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
   };

@@ -139,7 +139,7 @@ private:
     if (ns < 2 * number_of_groups)
       return;
     // The parent of each supernode: the supernode of its first row below its own columns.
-    std::vector<int> super_of_column(std::size_t(m_super[ns]));
+    std::vector<int> super_of_column(static_cast<std::size_t>(m_super[ns]));
     for (int s = 0; s < ns; ++s)
       std::fill(super_of_column.begin() + m_super[s], super_of_column.begin() + m_super[s + 1], s);
     std::vector<int> parent(ns, -1), first(ns), size(ns);

@@ -32,7 +32,6 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <Eigen/QR>
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -219,6 +218,24 @@ inline double flux_sign_at_vertex(const Mesh_arrays& arrays, const Surface_faces
   return flux < 0 ? -1.0 : 1.0;
 }
 
+/// The second column of the Householder Q of the 3-vector n, as Eigen's HouseholderQR gives it
+/// (its `makeHouseholder()` convention: Q = I - tau v v^T, v = (1, essential), beta = -sign(n_0)|n|),
+/// in closed form: instantiating HouseholderQR costs GCC about 3 s in every file that includes
+/// this header.  A unit vector orthogonal to n when n is not zero.
+inline Eigen::Vector3d householder_second_column(const Eigen::Vector3d& n)
+{
+  const double tail_squared_norm = n.tail<2>().squaredNorm();
+  if (tail_squared_norm <= (std::numeric_limits<double>::min)())
+    return Eigen::Vector3d::UnitY(); // Q = I: n is along the first axis already
+  double beta = std::sqrt(n(0) * n(0) + tail_squared_norm);
+  if (n(0) >= 0)
+    beta = -beta;
+  const Eigen::Vector2d essential = n.tail<2>() / (n(0) - beta);
+  const double tau = (beta - n(0)) / beta;
+  const double t = tau * essential(0);
+  return Eigen::Vector3d(-t, 1 - t * essential(0), -t * essential(1));
+}
+
 /// The direction r_c that the orthogonal guidance turns by alpha about n_c in the component of
 /// the constrained vertex i: by default the second column of the Householder Q of n_c; with
 /// `gradient_direction` g, sigma n_c x P g / |P g| (sigma the flux sign at i), for which
@@ -231,8 +248,7 @@ inline Eigen::Vector3d orthogonal_reference_direction(const Mesh_arrays& arrays,
 {
   const Eigen::Vector3d n_c = vertex_normal(arrays, s, i);
   if (!gradient_direction) {
-    const Eigen::Matrix3d q = Eigen::HouseholderQR<Eigen::Vector3d>(n_c).householderQ();
-    return q.col(1);
+    return householder_second_column(n_c);
   }
   const Eigen::Vector3d g = *gradient_direction - n_c.dot(*gradient_direction) * n_c;
   if (!(g.norm() > 1e-6 * gradient_direction->norm()))
