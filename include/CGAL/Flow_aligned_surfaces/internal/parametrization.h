@@ -220,7 +220,7 @@ inline double flux_sign_at_vertex(const Mesh_arrays& arrays, const Surface_faces
 
 /// The second column of the Householder Q of the 3-vector n, as Eigen's HouseholderQR gives it
 /// (its `makeHouseholder()` convention: Q = I - tau v v^T, v = (1, essential), beta = -sign(n_0)|n|),
-/// in closed form: instantiating HouseholderQR costs GCC about 3 s in every file that includes
+/// in closed form: instantiating HouseholderQR cost GCC 4.6 s in every file that included
 /// this header.  A unit vector orthogonal to n when n is not zero.
 inline Eigen::Vector3d householder_second_column(const Eigen::Vector3d& n)
 {
