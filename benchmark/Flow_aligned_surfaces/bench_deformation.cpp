@@ -149,11 +149,23 @@ struct Solve_stats {
 };
 Solve_stats last_solve_stats;
 
-// Hides the solver's solve() to time it; Flow_aligned_deformation calls solve() on the static
-// type.  The result has the right-hand side's shape, so no copy is added.
+// Hides the solver's solve() and, where it has one (the package's default solver),
+// solve_correction(), to time them; Flow_aligned_deformation calls them on the static type.  The
+// result has the right-hand side's shape, so no copy is added.
 template <class EigenSolver>
 class Timed_solve : public EigenSolver {
 public:
+  template <class Base, class Residual, class Dest, class S = EigenSolver>
+  auto solve_correction(const Base& base, const Residual& residual, Dest& dest) const
+      -> decltype(std::declval<const S&>().solve_correction(base, residual, dest), void())
+  {
+    const double cpu_start = thread_cpu_ms();
+    const auto start = Clock::now();
+    S::solve_correction(base, residual, dest);
+    last_solve_stats.wall_ms = ms_since(start);
+    last_solve_stats.cpu_ms = thread_cpu_ms() - cpu_start;
+  }
+
   template <class Rhs>
   Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Eigen::MatrixBase<Rhs>& b) const
   {
@@ -257,10 +269,12 @@ public:
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
 // The package's default solver (internal::Supernodal_LLT: CHOLMOD's simplicial LDL^T swept in
-// place by supernodes for the solves), in double or single precision, with the ordering chosen by
-// size (Ordering < 0) or forced, its solves swept in sequence or over the threads of TBB's
-// default arena (Parallel).
-template <class FactorScalar, int Ordering, bool Parallel = false>
+// place by supernodes for the solves, the iterations' corrections swept with a single-precision
+// copy on large factors), in double or single precision, with the ordering chosen by size
+// (Ordering < 0) or forced, its solves swept in sequence or over the threads of TBB's default
+// arena (Parallel), with the single-precision copy for the corrections where the package keeps
+// it or never (DoubleCorrections).
+template <class FactorScalar, int Ordering, bool Parallel = false, bool DoubleCorrections = false>
 class Instrumented_supernodal : public Timed_solve<FAS::internal::Supernodal_LLT<FactorScalar>> {
   using Base = FAS::internal::Supernodal_LLT<FactorScalar>;
 
@@ -269,6 +283,8 @@ public:
   {
     this->use_ordering(Ordering);
     this->use_parallelism(Parallel);
+    if (DoubleCorrections)
+      this->single_precision_from(std::numeric_limits<double>::infinity());
   }
 
   // Flow_aligned_deformation calls analyzePattern() then factorize(): both are timed here, in
@@ -283,45 +299,12 @@ public:
     last_factor_stats.flops = this->cholmod().fl;
     last_factor_stats.ordering = cholmod_ordering_name(this->ordering());
     last_factor_stats.supernodal = this->uses_supernodal_sweeps();
-    last_factor_stats.bytes_per_solve = 2 * this->bytes_per_sweep();
+    // The iterations solve corrections (two sweeps each).
+    last_factor_stats.bytes_per_solve = 2 * this->bytes_per_correction_sweep();
     return *this;
   }
 };
 
-// The single-precision factor with one step of iterative refinement in double: x = S(b), then
-// x += S(b - A x) (S the single-precision solve, A kept for the residual).  A lever measured,
-// not the default: it reads the single factor twice, as many bytes as the double one once.
-class Refined_single : public Instrumented_supernodal<float, -1> {
-public:
-  void analyzePattern(const Sparse_matrix&) {}
-  void factorize(const Sparse_matrix& matrix) { compute(matrix); }
-
-  Refined_single& compute(const Sparse_matrix& matrix)
-  {
-    m_matrix = matrix;
-    Instrumented_supernodal<float, -1>::compute(matrix);
-    last_factor_stats.bytes_per_solve *= 2;
-    return *this;
-  }
-
-  template <class Rhs>
-  Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Eigen::MatrixBase<Rhs>& b) const
-  {
-    const double cpu_start = thread_cpu_ms();
-    const auto start = Clock::now();
-    using Result = Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime>;
-    const FAS::internal::Supernodal_LLT<float>& single = *this;
-    Result x = single.solve(b);
-    const Result residual = b - m_matrix.selfadjointView<Eigen::Lower>() * x;
-    x += Result(single.solve(residual));
-    last_solve_stats.wall_ms = ms_since(start);
-    last_solve_stats.cpu_ms = thread_cpu_ms() - cpu_start;
-    return x;
-  }
-
-private:
-  Sparse_matrix m_matrix;
-};
 #endif
 
 // A warm-started preconditioned conjugate gradient (Eigen's, with an incomplete Cholesky
@@ -509,13 +492,14 @@ std::vector<Solver_config> solver_configs()
                      "the package's Supernodal_LLT: CHOLMOD simplicial LDL^T (default ordering strategy) "
                      "swept in place by supernodes for the solves, double, solves in sequence",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1>>>});
+  configs.push_back({"supernodal_llt_double_corrections",
+                     "supernodal_llt without the single-precision copy: the corrections swept in double "
+                     "(the default before stop 29)",
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1, false, true>>>});
   configs.push_back({"supernodal_llt_metis", "the same with METIS's nested dissection at every size",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, CHOLMOD_METIS>>>});
   configs.push_back({"supernodal_llt_float", "the same factor rounded to single precision (half the bytes)",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<float, -1>>>});
-  configs.push_back({"supernodal_llt_float_refined",
-                     "single precision with one step of iterative refinement in double (two single solves)",
-                     measure_solver<CGAL::Eigen_solver_traits<Refined_single>>});
 #ifdef CGAL_LINKED_WITH_TBB
   configs.push_back({"supernodal_llt_parallel",
                      "supernodal_llt with the solves swept over independent subtrees on TBB's threads (2 here)",

@@ -386,6 +386,51 @@ TEST(FlowAlignedDeformation, ParallelIterationsGiveTheSerialSurfaces)
 #endif
 }
 
+#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
+// The default solver with its single-precision copy forced on (or off) at every size.
+template <bool single>
+struct Single_precision_corrections : FAS::internal::Supernodal_LLT<double> {
+  Single_precision_corrections() { single_precision_from(single ? 0. : 1e300); }
+};
+template <class Flow, bool single>
+using Corrected_deformation = FAS::Flow_aligned_deformation<Mesh, Flow, CGAL::Default, CGAL::Default,
+                                                            CGAL::Eigen_solver_traits<Single_precision_corrections<single>>>;
+
+// Aligns `start` with the single-precision corrections and with the double factor's; the
+// positions of the two converged surfaces differ by at most `tolerance` times its diameter.
+template <class Flow>
+void expect_the_surface_of_the_double_factor(const Mesh& start, const Flow& flow, FAS::Alignment alignment)
+{
+  Mesh single = start, exact = start;
+  Corrected_deformation<Flow, true> in_single(single, flow, alignment);
+  Corrected_deformation<Flow, false> in_double(exact, flow, alignment);
+  const FAS::Alignment_report a = in_single.run(), b = in_double.run();
+  EXPECT_TRUE(a.converged);
+  EXPECT_TRUE(b.converged);
+  EXPECT_EQ(a.number_of_iterations, b.number_of_iterations);
+  EXPECT_NEAR(a.normalized_flux.value.value(), b.normalized_flux.value.value(), 1e-9);
+  double largest = 0;
+  auto q = exact.vertices().begin();
+  for (auto v : single.vertices())
+    largest = (std::max)(largest, std::sqrt((single.point(v) - exact.point(*q++)).squared_length()));
+  // A tenth of what single precision of the positions would give.
+  EXPECT_LT(largest, 1e-8 * diameter(exact));
+  EXPECT_GT(largest, 0.); // the single-precision sweeps were used
+}
+
+// Each step solves for the change of the positions (one step of iterative refinement from the
+// current surface), and the translation of that change, where a single-precision factor errs
+// most, is set exactly: the iterations and the converged surface are those of the double factor.
+TEST(FlowAlignedDeformation, SinglePrecisionCorrectionsReachTheDoublePrecisionSurface)
+{
+  expect_the_surface_of_the_double_factor(planar_patch(Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 8000),
+                                          FAS::Point_source_flow<K>(Point(0, 0, 0), 1.0),
+                                          FAS::Alignment::ORTHOGONAL);
+  expect_the_surface_of_the_double_factor(planar_patch(Point(1.0, 0.2, 0.0), Vector(1.0, 0.3, 0.2), 0.8, 8000),
+                                          FAS::Helical_flow<K>(0.5), FAS::Alignment::TANGENTIAL);
+}
+#endif
+
 // next_sample_points() names, bit for bit, every point the next step() samples: a field that
 // only knows the samples at those points (what a caller holding a distributed field fills in
 // one batch) gives the surfaces of the field itself, and is never asked for another point.

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -216,6 +217,73 @@ TEST(SupernodalLLT, SinglePrecisionCopyIsAccurateToSinglePrecision)
   // Really single precision: a double factor would agree to about 1e-14.
   EXPECT_GT(error, 1e-10);
   EXPECT_EQ(single.bytes_per_sweep() < 0.7 * exact.bytes_per_sweep(), true);
+}
+
+// One step of iterative refinement from a first approximation x0: the single-precision copy's
+// error is proportional to the correction x - x0, not to x.  It is largest, about cond(A) 1e-7 of
+// the correction, along the near-null space of A (here the constant vector, whose only stiffness
+// is the shift at the middle node: the structure of L + W); the component of the correction
+// along it is known exactly (sum of A c = shift c_middle = sum of the residual), and with it set,
+// what remains is about 1e-7 times the condition number of A on the other directions.
+TEST(SupernodalLLT, CorrectionsAreAccurateRelativeToTheCorrection)
+{
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  const int m = 80;
+  const double shift = 6e-3;
+  const Sparse_matrix matrix = triangulated_grid_laplacian(m, shift);
+  const Eigen::Index middle = (m / 2) * m + m / 2;
+  FASI::Supernodal_LLT<double> solver, without_copy;
+  solver.single_precision_from(0);
+  without_copy.single_precision_from(1e300);
+  solver.compute(matrix);
+  without_copy.compute(matrix);
+  ASSERT_EQ(solver.info(), Eigen::Success);
+  EXPECT_TRUE(solver.solves_corrections_in_single_precision());
+  EXPECT_FALSE(solver.uses_supernodal_sweeps()); // solve() is still CHOLMOD's, in double
+  EXPECT_FALSE(without_copy.solves_corrections_in_single_precision());
+  EXPECT_LT(solver.bytes_per_correction_sweep(), 0.7 * without_copy.bytes_per_correction_sweep());
+
+  const Rows b = Rows::Random(matrix.rows(), 3);
+  const Rows exact = without_copy.solve(b);
+  double error_by_correction[2] = {0, 0};
+  int k = 0;
+  for (double step : {1e-1, 1e-4}) {
+    // A first approximation off by `step` of the solution's entries.
+    const Rows start = exact + step * exact.norm() / std::sqrt(double(exact.size())) * Rows::Random(matrix.rows(), 3);
+    const Rows residual = b - matrix * start;
+    Rows corrected, reference;
+    solver.solve_correction(start, residual, corrected);
+    without_copy.solve_correction(start, residual, reference);
+    const double correction = (exact - start).norm();
+    // The double path: the solution to double precision (for this condition number).
+    EXPECT_LT((reference - exact).norm() / exact.norm(), 1e-8) << step;
+    // The single-precision path: really single precision (a double sweep would agree to about
+    // 1e-14 of the correction), its error a multiple of the correction.
+    error_by_correction[k++] = (corrected - exact).norm() / correction;
+    EXPECT_GT(error_by_correction[k - 1], 1e-11) << step;
+    // The correction's constant component set exactly: 1e-3 of the correction is left.
+    const Eigen::RowVector3d constant =
+        residual.colwise().sum() / shift - (corrected.row(middle) - start.row(middle));
+    corrected.rowwise() += constant;
+    EXPECT_LT((corrected - exact).norm(), 1e-3 * correction) << step;
+    EXPECT_GT((corrected - exact).norm(), 1e-11 * correction) << step;
+  }
+  // Proportional to the correction: the same ratio for corrections 1,000 times apart.
+  EXPECT_LT(error_by_correction[1], 10 * error_by_correction[0]);
+  EXPECT_GT(error_by_correction[1], 0.1 * error_by_correction[0]);
+}
+
+// Where the single-precision copy is kept: large factors of a double solver by default.
+TEST(SupernodalLLT, SinglePrecisionCopyOnlyOnLargeFactors)
+{
+  const Sparse_matrix matrix = triangulated_grid_laplacian(40);
+  FASI::Supernodal_LLT<double> by_default, forced;
+  by_default.compute(matrix);
+  EXPECT_LT(by_default.number_of_entries(), FASI::Supernodal_LLT<double>::default_smallest_single_precision_factor);
+  EXPECT_FALSE(by_default.solves_corrections_in_single_precision());
+  forced.single_precision_from(by_default.number_of_entries());
+  forced.compute(matrix);
+  EXPECT_TRUE(forced.solves_corrections_in_single_precision());
 }
 
 TEST(SupernodalLLT, NotPositiveDefiniteIsReported)

@@ -92,7 +92,8 @@ discretized; iterations never accumulate errors because they always reconstruct 
         (the macro `CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD`), CHOLMOD's simplicial \f$ LDL^T \f$
         factorization, whose factor the package sweeps in place by supernodes for its own
         back-substitutions on large surfaces (over independent subtrees in parallel with
-        `use_parallelism`),
+        `use_parallelism`), and of which it keeps a single-precision copy there for the
+        iterations, which solve for the change of the positions (see \ref fas_poisson_reconstruction),
         else `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`;
         both run on the calling thread only unless parallelism is asked for (see \ref fas_threads).
 
@@ -311,12 +312,16 @@ public:
     m_normals.resize(n);
     m_has_normal.assign(n, 0);
 
-    // Right-hand side D Y' + W X_c; face j contributes K_j X_j T_j^T (K_j its M_0 stiffness),
-    // T_j its local transformation, each face's term added as soon as T_j is known (one pass
-    // over the faces, nothing stored per face but its normal for the fold test).
-    m_rhs.setZero(x.rows(), 3);
-    for (Eigen::Index v : m_constrained_vertices)
-      m_rhs.row(v) = m_constraint_weight * x.row(v);
+    // The new positions solve (L + W) X' = D Y' + W X_c (X_c the constrained vertices' current
+    // positions), found as X' = X + C from the current positions X: the residual
+    // D Y' + W X_c - (L + W) X = D Y' - L X = sum_j K_j X_j (T_j - I)^T (K_j the M_0 stiffness of
+    // face j, T_j its local transformation) is assembled in double, each face's term added as
+    // soon as T_j is known (one pass over the faces, nothing stored per face but its normal for
+    // the fold test), and (L + W) C = residual is solved.  This is one step of iterative
+    // refinement from X: the default solver solves C with a single-precision copy of a large
+    // factor (half the bytes to read), whose relative error, about 1e-7, is that of C, the step,
+    // not of X' (RESULTS.md, issue 18).
+    m_residual.setZero(x.rows(), 3);
     Face_pass face_pass;
 #ifdef CGAL_LINKED_WITH_TBB
     // Faces are independent; below a few thousand the threads cost more than they save.  The
@@ -330,7 +335,7 @@ public:
       transform_faces(x, 0, n, face_pass, [this](std::size_t j, const Eigen::Matrix3d& term) {
         const auto& vertices = m_ops.faces[j].vertices;
         for (int i = 0; i < 3; ++i)
-          m_rhs.row(vertices[i]) += term.row(i);
+          m_residual.row(vertices[i]) += term.row(i);
       });
     }
     report.number_of_outside_samples = face_pass.outside;
@@ -341,7 +346,8 @@ public:
     report.number_of_folds = correct_folds(x);
     const auto transformed = Clock::now();
 
-    m_next = m_solver.solver().solve(m_rhs);
+    internal::solve_correction(m_solver.solver(), x, m_residual, m_next);
+    translate_as_the_exact_correction(x, m_next);
     const Row_positions& next = m_next;
     const auto solved = Clock::now();
     if (m_solver.solver().info() != Eigen::Success || !next.allFinite())
@@ -897,14 +903,41 @@ private:
     return t;
   }
 
-  // Face j's term K_j X_j T^T of the right-hand side, one row per corner.
+  // The correction C = next - x of step() translated so that each connected component's
+  // constrained vertices keep their mean, as the exact C does: the residual sums to zero over a
+  // component (so do the rows of every K_j), and the sum of (L + W) C over it is W's part alone.
+  // This is C's component along the constant vectors, the near-null space of L + W (its only
+  // stiffness the weak W), where a single-precision factor's error is largest by far: about 1e-7
+  // of the positions, against about 1e-7 of C in the other directions.
+  void translate_as_the_exact_correction(const Row_positions& x, Row_positions& next)
+  {
+    const std::size_t components = m_arrays.number_of_components;
+    m_component_shift.assign(components, Eigen::RowVector3d::Zero());
+    for (std::size_t k = 0; k < m_constrained_vertices.size(); ++k) {
+      const Eigen::Index v = m_constrained_vertices[k];
+      m_component_shift[k / 3] += (next.row(v) - x.row(v)) / 3;
+    }
+    if (components == 1) {
+      next.rowwise() -= m_component_shift[0];
+      return;
+    }
+    m_vertex_seen.assign(std::size_t(next.rows()), 0);
+    for (std::size_t j = 0; j < m_arrays.face_vertices.size(); ++j)
+      for (Eigen::Index v : m_arrays.face_vertices[j])
+        if (!m_vertex_seen[std::size_t(v)]) {
+          m_vertex_seen[std::size_t(v)] = 1;
+          next.row(v) -= m_component_shift[m_arrays.face_component[j]];
+        }
+  }
+
+  // Face j's term K_j X_j (T - I)^T of the residual, one row per corner.
   Eigen::Matrix3d face_term(const Row_positions& x, std::size_t j, const Eigen::Matrix3d& t) const
   {
     const internal::Reference_face& face = m_ops.faces[j];
     Eigen::Matrix3d local;
     for (int i = 0; i < 3; ++i)
       local.row(i) = x.row(face.vertices[i]);
-    return face.times_stiffness(local * t.transpose());
+    return face.times_stiffness(local * (t - Eigen::Matrix3d::Identity()).transpose());
   }
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -932,7 +965,7 @@ private:
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         for (std::size_t v = range.begin(); v != range.end(); ++v)
                           for (std::size_t c = m_corner_offsets[v]; c != m_corner_offsets[v + 1]; ++c)
-                            m_rhs.row(Eigen::Index(v)) += m_terms[m_corners[c] / 3].row(int(m_corners[c] % 3));
+                            m_residual.row(Eigen::Index(v)) += m_terms[m_corners[c] / 3].row(int(m_corners[c] % 3));
                       });
     return pass;
   }
@@ -1000,7 +1033,7 @@ private:
       const Eigen::Matrix3d t = transform_face(x, j, ignored);
       const Eigen::Matrix3d change = face_term(x, j, rotation * t) - face_term(x, j, t);
       for (int i = 0; i < 3; ++i)
-        m_rhs.row(m_ops.faces[j].vertices[i]) += change.row(i);
+        m_residual.row(m_ops.faces[j].vertices[i]) += change.row(i);
     }
     return folds;
   }
@@ -1166,11 +1199,11 @@ private:
     // the constrained face's orientation and leaves a kink there.  L + W is factored in place
     // of L (no copy of L: fresh memory is slow to touch, issue 18), and L's diagonal entries are
     // restored bit for bit afterwards.
-    m_constraint_weight = m_relative_constraint_weight * m_ops.L.diagonal().mean();
+    const double constraint_weight = m_relative_constraint_weight * m_ops.L.diagonal().mean();
     std::vector<double> unconstrained;
     for (Eigen::Index v : m_constrained_vertices) {
       unconstrained.push_back(m_ops.L.coeff(v, v));
-      m_ops.L.coeffRef(v, v) += m_constraint_weight;
+      m_ops.L.coeffRef(v, v) += constraint_weight;
     }
     const Eigen::SparseMatrix<double>& system = m_ops.L;
     const auto factoring = Clock::now();
@@ -1212,7 +1245,6 @@ private:
   internal::Mesh_arrays m_arrays;
   internal::Poisson_operators m_ops;
   std::vector<Eigen::Index> m_constrained_vertices;
-  double m_constraint_weight = 0;
   mutable Sparse_linear_solver m_solver; // mutable: CGAL's solver traits have no const solver()
   std::size_t m_number_of_factorizations = 0;
   double m_factor_ms = 0;
@@ -1223,12 +1255,14 @@ private:
   // Per-iteration buffers, kept to avoid reallocations.
   std::vector<Eigen::Vector3d> m_normals;
   std::vector<unsigned char> m_has_normal; // not vector<bool>: read in the hot loop
-  Row_positions m_positions, m_rhs, m_next;
+  Row_positions m_positions, m_residual, m_next;
   // With use_parallelism: the faces' terms of the right-hand side, and the corners of each vertex
   // (offsets into m_corners by vertex; corner 3 j + i is corner i of face j).
   std::vector<Eigen::Matrix3d> m_terms;
   std::vector<std::size_t> m_corner_offsets, m_corners;
   std::vector<std::ptrdiff_t> m_fold_slot; // -1 between iterations
+  std::vector<Eigen::RowVector3d> m_component_shift;
+  std::vector<unsigned char> m_vertex_seen;
 };
 
 } // namespace Flow_aligned_surfaces

@@ -89,6 +89,29 @@ void use_parallelism_in(Supernodal_LLT<FactorScalar>& solver, bool parallel)
 }
 #endif
 
+/// `dest = base + A^{-1} residual`, `residual = b - A base` computed by the caller in double: one
+/// step of iterative refinement from `base`, a first approximation of the solution of `A x = b`,
+/// with `solver`, an Eigen solver of A.  The package's default solver sweeps the correction with
+/// a single-precision copy of a large factor (Supernodal_LLT::solve_correction()); any other
+/// solves it as it solves everything.
+template <class EigenSolver, class Base, class Residual, class Dest>
+auto solve_correction(const EigenSolver& solver, const Base& base, const Residual& residual, Dest& dest, int)
+    -> decltype(solver.solve_correction(base, residual, dest), void())
+{
+  solver.solve_correction(base, residual, dest);
+}
+template <class EigenSolver, class Base, class Residual, class Dest>
+void solve_correction(const EigenSolver& solver, const Base& base, const Residual& residual, Dest& dest, long)
+{
+  dest = solver.solve(residual);
+  dest += base;
+}
+template <class EigenSolver, class Base, class Residual, class Dest>
+void solve_correction(const EigenSolver& solver, const Base& base, const Residual& residual, Dest& dest)
+{
+  solve_correction(solver, base, residual, dest, 0);
+}
+
 /// Throws std::runtime_error naming `what` when the last factorization of `solver` failed.
 template <class SparseLinearSolver>
 void throw_if_factorization_failed(SparseLinearSolver& solver, const std::string& what)

@@ -14,7 +14,11 @@
 // supernode (the only copy: about 15 % of the factor's entries, as ints), so that each sweep
 // reads the values in order for the three right-hand sides at once, in double or, with
 // `FactorScalar = float`, in a single-precision copy of the values (half the bytes; the
-// solution's relative error grows from about 1e-15 to about 1e-7).  With `use_parallelism()`
+// solution's relative error grows from about 1e-15 to about 1e-7).  A double factor also keeps
+// that copy on large factors for `solve_correction()`: one step of iterative refinement in double
+// from a first approximation the caller already has (the deformation's current surface), whose
+// correction the single-precision copy solves to a relative error of about 1e-7 of the
+// correction itself, not of the solution.  With `use_parallelism()`
 // the independent subtrees of the elimination tree are swept on the threads of the caller's
 // TBB arena (Elimination_subtrees.h); the result is the same bit for bit.
 
@@ -88,6 +92,7 @@ public:
     m_subtrees = Elimination_subtrees();
     m_super.clear();
     m_single.clear();
+    m_sweeps = false;
     if (this->m_info != Eigen::Success)
       return;
     const cholmod_factor& factor = *this->m_cholmodFactor;
@@ -95,10 +100,14 @@ public:
       this->m_info = Eigen::NumericalIssue;
       return;
     }
-    if (this->cholmod().lnz < m_smallest_swept_factor)
+    const double entries = this->cholmod().lnz;
+    m_sweeps = entries >= m_smallest_swept_factor;
+    const bool single_copy = std::is_same<FactorScalar, float>::value ? m_sweeps
+                                                                      : entries >= m_smallest_single_precision_factor;
+    if (!m_sweeps && !single_copy)
       return;
     find_supernodes(factor);
-    if constexpr (!std::is_same<FactorScalar, double>::value)
+    if (single_copy)
       copy_values(factor);
     m_subtrees = Elimination_subtrees(int(number_of_supernodes()), m_super.data(), m_pi.data(), m_rows.data());
     m_subtrees.use_parallelism(m_parallel);
@@ -127,7 +136,54 @@ public:
   void sweep_from(double entries) { m_smallest_swept_factor = entries; }
 
   /// Whether solve() uses the supernodal sweeps (else CHOLMOD's simplicial solve).
-  bool uses_supernodal_sweeps() const { return !m_super.empty(); }
+  bool uses_supernodal_sweeps() const { return m_sweeps; }
+
+  /// From this many nonzeros of the factor on (by default), a double factor also keeps its values
+  /// in single precision for `solve_correction()` (4 more bytes per nonzero, made by each
+  /// factorization).  Its sweeps read half the bytes of the double factor's and are faster than
+  /// both CHOLMOD's solve and the double sweeps from about 5e4 faces on
+  /// (benchmark/Flow_aligned_surfaces/RESULTS.md, issue 18, stop 29).
+  static constexpr double default_smallest_single_precision_factor = 1e6;
+
+  /// Sets the number of nonzeros of the factor from which the next factorizations keep the
+  /// single-precision copy (ignored by a single-precision factor, which is swept in single
+  /// precision whenever it is swept).
+  void single_precision_from(double entries) { m_smallest_single_precision_factor = entries; }
+
+  /// Whether `solve_correction()` sweeps a single-precision copy of the factor.
+  bool solves_corrections_in_single_precision() const { return !m_single.empty(); }
+
+  /// One step of iterative refinement from `base`, a first approximation of the solution:
+  /// `dest = base + A^{-1} residual`, where `residual` is `b - A base`, computed in double by the
+  /// caller.  The correction is solved by the single-precision copy of the factor when there is
+  /// one (its relative error, about 1e-7, is that of the correction only), else by `solve()`.
+  /// `residual`, `base` and `dest` have the same size; `dest` may be neither of the others.
+  template <class Base, class Residual, class Dest>
+  void solve_correction(const Eigen::MatrixBase<Base>& base, const Eigen::MatrixBase<Residual>& residual,
+                        Eigen::MatrixBase<Dest>& dest) const
+  {
+    if (!solves_corrections_in_single_precision()) {
+      dest.derived() = this->solve(residual);
+      dest.derived() += base;
+      return;
+    }
+    dest.derived().resize(residual.rows(), residual.cols());
+    for (Eigen::Index first = 0; first < residual.cols(); first += 3) {
+      const int columns = int((std::min)(Eigen::Index(3), residual.cols() - first));
+      const auto solve = [&](auto r) {
+        solve_block<decltype(r)::value, float>(residual, dest, first,
+                                               [&](Eigen::Index row, Eigen::Index column, double correction) {
+                                                 return base(row, column) + correction;
+                                               });
+      };
+      if (columns == 1)
+        solve(std::integral_constant<int, 1>());
+      else if (columns == 2)
+        solve(std::integral_constant<int, 2>());
+      else
+        solve(std::integral_constant<int, 3>());
+    }
+  }
 
   /// The fill-reducing ordering of the last analysis (CHOLMOD_AMD, CHOLMOD_METIS, ...; -1 if none).
   int ordering() const { return this->m_cholmodFactor ? this->m_cholmodFactor->ordering : -1; }
@@ -155,6 +211,16 @@ public:
            (columns + 2. * double(m_super.size())) * sizeof(int);
   }
 
+  /// The bytes one sweep of `solve_correction()` reads from the factor.
+  double bytes_per_correction_sweep() const
+  {
+    if (!solves_corrections_in_single_precision())
+      return bytes_per_sweep();
+    const double columns = double(this->m_cholmodFactor->n);
+    return number_of_entries() * sizeof(float) + double(m_rows.size()) * sizeof(int) +
+           (columns + 2. * double(m_super.size())) * sizeof(int);
+  }
+
   /// \internal Eigen's solve() expression ends here.
   template <class Rhs, class Dest>
   void _solve_impl(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest) const
@@ -164,17 +230,18 @@ public:
       return;
     }
     dest.derived().resize(b.rows(), b.cols());
+    const auto solution = [](Eigen::Index, Eigen::Index, double value) { return value; };
     for (Eigen::Index first = 0; first < b.cols(); first += 3) {
       const int columns = int((std::min)(Eigen::Index(3), b.cols() - first));
       switch (columns) {
       case 1:
-        solve_block<1>(b, dest, first);
+        solve_block<1, FactorScalar>(b, dest, first, solution);
         break;
       case 2:
-        solve_block<2>(b, dest, first);
+        solve_block<2, FactorScalar>(b, dest, first, solution);
         break;
       default:
-        solve_block<3>(b, dest, first);
+        solve_block<3, FactorScalar>(b, dest, first, solution);
       }
     }
   }
@@ -229,21 +296,24 @@ private:
     m_single.resize(factor.nzmax);
     for (std::size_t j = 0; j < factor.n; ++j)
       std::transform(value + p[j], value + p[j] + count[j], m_single.begin() + p[j],
-                     [](double v) { return FactorScalar(v); });
+                     [](double v) { return float(v); });
   }
 
-  // The values the sweeps read: CHOLMOD's, or their single-precision copy.
-  const FactorScalar* values() const
+  // The values the sweeps read in precision `Value`: CHOLMOD's, or their single-precision copy.
+  template <class Value>
+  const Value* values() const
   {
-    if constexpr (std::is_same<FactorScalar, double>::value)
+    if constexpr (std::is_same<Value, double>::value)
       return static_cast<const double*>(this->m_cholmodFactor->x);
     else
       return m_single.data();
   }
 
-  // Columns [first, first + R) of b, solved into the same columns of dest.
-  template <int R, class Rhs, class Dest>
-  void solve_block(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest, Eigen::Index first) const
+  // Columns [first, first + R) of b, solved by the factor's values in precision `Value`;
+  // dest(i, c) = result(i, c, the solution's entry).
+  template <int R, class Value, class Rhs, class Dest, class Result>
+  void solve_block(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest, Eigen::Index first,
+                   const Result& result) const
   {
     const cholmod_factor* factor = this->m_cholmodFactor;
     const int n = int(factor->n);
@@ -254,23 +324,28 @@ private:
     for (int i = 0; i < n; ++i)
       for (int c = 0; c < R; ++c)
         z[std::size_t(i) * R + c] = b(perm[i], first + c);
-    sweeps<R>(z);
+    sweeps<R, Value>(z);
     for (int i = 0; i < n; ++i)
       for (int c = 0; c < R; ++c)
-        dest(perm[i], first + c) = z[std::size_t(i) * R + c];
+        dest(perm[i], first + c) = result(perm[i], first + c, z[std::size_t(i) * R + c]);
   }
 
-  // L D L^T z = z in place (z interleaved, permuted).
-  template <int R>
+  // L D L^T z = z in place (z interleaved, permuted), with the factor's values in precision `Value`.
+  template <int R, class Value>
   void sweeps(double* z) const
   {
     const cholmod_factor& factor = *this->m_cholmodFactor;
-    const Supernode_sweeper<R> sweeper{m_super.data(), m_pi.data(), m_rows.data(), static_cast<const int*>(factor.p),
-                                       static_cast<const int*>(factor.nz), values(), int(number_of_supernodes())};
+    const Supernode_sweeper<R, Value> sweeper{m_super.data(),
+                                              m_pi.data(),
+                                              m_rows.data(),
+                                              static_cast<const int*>(factor.p),
+                                              static_cast<const int*>(factor.nz),
+                                              values<Value>(),
+                                              int(number_of_supernodes())};
     // One gather buffer per group of subtrees (and one more for the top).
     m_buffers.resize(std::size_t(Elimination_subtrees::number_of_groups + 1));
     for (std::vector<double>& buffer : m_buffers)
-      buffer.resize(Supernode_sweeper<R>::buffer_size(m_largest_supernode_rows));
+      buffer.resize(Supernode_sweeper<R, Value>::buffer_size(m_largest_supernode_rows));
     m_subtrees.forward(z, R, [&](int s, double* target, int split, int group) {
       sweeper.forward(s, z, target, split, m_buffers[std::size_t(group)].data());
     });
@@ -286,7 +361,7 @@ private:
   // are swept in panels of `panel_width` columns: the panel's small triangle, then all the rows
   // below it at once, so that each gathered row is read and written once per panel, on pairs of
   // consecutive rows (two lanes a compiler vectorizes).
-  template <int R>
+  template <int R, class Value>
   struct Supernode_sweeper {
     static constexpr int panel_width = 4;
     // Supernodes of at most this many columns (most of them: chains of the tree are short) are
@@ -316,14 +391,14 @@ private:
     static std::size_t buffer_size(std::size_t nrows) { return nrows * R; }
 
     const int *super, *pi, *rows, *start, *count;
-    const FactorScalar* x;
+    const Value* x;
     int super_count;
 
     int columns_of(int s) const { return super[s + 1] - super[s]; }
     int rows_of(int s) const { return pi[s + 1] - pi[s]; }
     const int* row_list(int s) const { return rows + pi[s]; }
     // Column j of supernode s, indexed by the position in the row list (valid from j on).
-    const FactorScalar* column(int s, int j) const
+    const Value* column(int s, int j) const
     {
       return x + (std::ptrdiff_t(start[super[s] + j]) - j);
     }
@@ -335,7 +410,7 @@ private:
       const int c0 = super[s];
       const int nrows = rows_of(s);
       const int* row = row_list(s);
-      const FactorScalar* column_of[K];
+      const Value* column_of[K];
       for (int j = 0; j < K; ++j)
         column_of[j] = column(s, j);
       double v[K][R];
@@ -370,7 +445,7 @@ private:
       const int c0 = super[s];
       const int nrows = rows_of(s);
       const int* row = row_list(s);
-      const FactorScalar* column_of[K];
+      const Value* column_of[K];
       for (int j = 0; j < K; ++j)
         column_of[j] = column(s, j);
       if (s > 0) {
@@ -424,7 +499,7 @@ private:
       for (int j0 = 0; j0 < k; j0 += panel_width) {
         const int width = (std::min)(panel_width, k - j0);
         for (int j = j0; j < j0 + width; ++j) {
-          const FactorScalar* l = column(s, j);
+          const Value* l = column(s, j);
           for (int c = 0; c < R; ++c)
             for (int i = j + 1; i < j0 + width; ++i)
               v[c][i] -= double(l[i]) * v[c][j];
@@ -474,7 +549,7 @@ private:
         const int width = (std::min)(panel_width, k - j0);
         with_width(width, [&](auto b) { dot_panel<decltype(b)::value>(s, nrows, j0, v); });
         for (int j = j0 + width - 1; j >= j0; --j) {
-          const FactorScalar* l = column(s, j);
+          const Value* l = column(s, j);
           for (int c = 0; c < R; ++c) {
             double sum = 0;
             for (int i = j + 1; i < j0 + width; ++i)
@@ -519,7 +594,7 @@ private:
     template <int B>
     void subtract_panel(int s, int nrows, int j, double* const* v) const
     {
-      const FactorScalar* __restrict l[B];
+      const Value* __restrict l[B];
       double p[B][R];
       for (int b = 0; b < B; ++b) {
         l[b] = column(s, j + b);
@@ -543,7 +618,7 @@ private:
     template <int B>
     void dot_panel(int s, int nrows, int j, double* const* v) const
     {
-      const FactorScalar* __restrict l[B];
+      const Value* __restrict l[B];
       for (int b = 0; b < B; ++b)
         l[b] = column(s, j + b);
       double sum[B][R][2] = {};
@@ -570,8 +645,10 @@ private:
   // their row lists in m_rows, the row lists (copies of their first columns' row indices).  The
   // values stay where CHOLMOD put them, swept there in double, or copied in single precision.
   std::vector<int> m_super, m_pi, m_rows;
-  std::vector<FactorScalar> m_single;
+  std::vector<float> m_single;
+  bool m_sweeps = false;
   double m_smallest_swept_factor = default_smallest_swept_factor;
+  double m_smallest_single_precision_factor = default_smallest_single_precision_factor;
   int m_ordering = -1;
   Elimination_subtrees m_subtrees;
   bool m_parallel = false;
