@@ -428,6 +428,11 @@ TEST(FlowAlignedDeformation, SinglePrecisionCorrectionsReachTheDoublePrecisionSu
                                           FAS::Alignment::ORTHOGONAL);
   expect_the_surface_of_the_double_factor(planar_patch(Point(1.0, 0.2, 0.0), Vector(1.0, 0.3, 0.2), 0.8, 8000),
                                           FAS::Helical_flow<K>(0.5), FAS::Alignment::TANGENTIAL);
+  // Two connected components, each translated by its own constrained vertices.
+  Mesh two = planar_patch(Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 5000);
+  FAS::make_planar_patch(two, Point(-1.5, 0.4, 2.5), Vector(0.1, -0.3, 1.0), 0.8, 0.8, 5000);
+  expect_the_surface_of_the_double_factor(two, FAS::Point_source_flow<K>(Point(0, 0, 0), 1.0),
+                                          FAS::Alignment::ORTHOGONAL);
 }
 #endif
 

@@ -319,8 +319,9 @@ public:
     // soon as T_j is known (one pass over the faces, nothing stored per face but its normal for
     // the fold test), and (L + W) C = residual is solved.  This is one step of iterative
     // refinement from X: the default solver solves C with a single-precision copy of a large
-    // factor (half the bytes to read), whose relative error, about 1e-7, is that of C, the step,
-    // not of X' (RESULTS.md, issue 18).
+    // factor (half the bytes to read), whose error is proportional to C, the step, not to X'
+    // (and is largest in C's translation, which translate_as_the_exact_correction() sets;
+    // RESULTS.md, issue 18, stop 29).
     m_residual.setZero(x.rows(), 3);
     Face_pass face_pass;
 #ifdef CGAL_LINKED_WITH_TBB
@@ -907,8 +908,9 @@ private:
   // constrained vertices keep their mean, as the exact C does: the residual sums to zero over a
   // component (so do the rows of every K_j), and the sum of (L + W) C over it is W's part alone.
   // This is C's component along the constant vectors, the near-null space of L + W (its only
-  // stiffness the weak W), where a single-precision factor's error is largest by far: about 1e-7
-  // of the positions, against about 1e-7 of C in the other directions.
+  // stiffness the weak W), where a single-precision factor's error is largest by far (about 1e-7
+  // of the positions there, 1e-9 with the translation set, on 8e3 faces: test
+  // SinglePrecisionCorrectionsReachTheDoublePrecisionSurface).
   void translate_as_the_exact_correction(const Row_positions& x, Row_positions& next)
   {
     const std::size_t components = m_arrays.number_of_components;

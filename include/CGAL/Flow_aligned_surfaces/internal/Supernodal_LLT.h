@@ -17,8 +17,8 @@
 // solution's relative error grows from about 1e-15 to about 1e-7).  A double factor also keeps
 // that copy on large factors for `solve_correction()`: one step of iterative refinement in double
 // from a first approximation the caller already has (the deformation's current surface), whose
-// correction the single-precision copy solves to a relative error of about 1e-7 of the
-// correction itself, not of the solution.  With `use_parallelism()`
+// correction the single-precision copy solves to an error proportional to the correction, not to
+// the solution (about 1e-7 times the condition number).  With `use_parallelism()`
 // the independent subtrees of the elimination tree are swept on the threads of the caller's
 // TBB arena (Elimination_subtrees.h); the result is the same bit for bit.
 
@@ -140,9 +140,11 @@ public:
 
   /// From this many nonzeros of the factor on (by default), a double factor also keeps its values
   /// in single precision for `solve_correction()` (4 more bytes per nonzero, made by each
-  /// factorization).  Its sweeps read half the bytes of the double factor's and are faster than
-  /// both CHOLMOD's solve and the double sweeps from about 5e4 faces on
-  /// (benchmark/Flow_aligned_surfaces/RESULTS.md, issue 18, stop 29).
+  /// factorization: 25 to 35 ms of the first construction at 8e4 faces, most of it page faults).
+  /// Its sweeps read half the bytes of the double factor's: the iterations' SOLVE takes 20 % less
+  /// time than CHOLMOD's solve at 8e4 faces (1.5e6 nonzeros) and 17 % less than the double sweeps
+  /// at 3.2e5 (benchmark/Flow_aligned_surfaces/RESULTS.md, issue 18, stop 29); below 1e6
+  /// nonzeros (about 5e4 faces) the copy would cost more than a short alignment saves.
   static constexpr double default_smallest_single_precision_factor = 1e6;
 
   /// Sets the number of nonzeros of the factor from which the next factorizations keep the
@@ -156,7 +158,9 @@ public:
   /// One step of iterative refinement from `base`, a first approximation of the solution:
   /// `dest = base + A^{-1} residual`, where `residual` is `b - A base`, computed in double by the
   /// caller.  The correction is solved by the single-precision copy of the factor when there is
-  /// one (its relative error, about 1e-7, is that of the correction only), else by `solve()`.
+  /// one, else by `solve()`.  The copy's error, about 1e-7 times the condition number of A, is
+  /// relative to the correction, not to the solution; it is largest along the near-null space of
+  /// A, which a caller that knows it sets exactly (the deformation sets the translation).
   /// `residual`, `base` and `dest` have the same size; `dest` may be neither of the others.
   template <class Base, class Residual, class Dest>
   void solve_correction(const Eigen::MatrixBase<Base>& base, const Eigen::MatrixBase<Residual>& residual,
