@@ -320,8 +320,10 @@ TEST(SupernodalLLT, ParallelSweepsGiveTheSerialSolutionBitForBit)
   const Sparse_matrix matrix = triangulated_grid_laplacian(120);
   FASI::Supernodal_LLT<double> serial, parallel;
   serial.sweep_from(0);
+  serial.single_precision_from(0);
   serial.compute(matrix);
   parallel.sweep_from(0);
+  parallel.single_precision_from(0);
   parallel.use_parallelism(true);
   parallel.compute(matrix);
   ASSERT_TRUE(parallel.subtrees().is_split());
@@ -329,6 +331,14 @@ TEST(SupernodalLLT, ParallelSweepsGiveTheSerialSolutionBitForBit)
   const Eigen::MatrixXd x = serial.solve(b), y = parallel.solve(b);
   EXPECT_EQ((x - y).cwiseAbs().maxCoeff(), 0.);
   EXPECT_LT((matrix * y - b).norm() / b.norm(), 1e-9);
+  // The single-precision sweeps of the corrections too.
+  const Eigen::MatrixXd start = Eigen::MatrixXd::Zero(matrix.rows(), 3);
+  Eigen::MatrixXd serial_correction, parallel_correction;
+  serial.solve_correction(start, b, serial_correction);
+  parallel.solve_correction(start, b, parallel_correction);
+  ASSERT_TRUE(parallel.solves_corrections_in_single_precision());
+  EXPECT_EQ((serial_correction - parallel_correction).cwiseAbs().maxCoeff(), 0.);
+  EXPECT_GT((serial_correction - x).cwiseAbs().maxCoeff(), 0.);
 }
 #endif
 
