@@ -923,13 +923,8 @@ private:
       next.rowwise() -= m_component_shift[0];
       return;
     }
-    m_vertex_seen.assign(std::size_t(next.rows()), 0);
-    for (std::size_t j = 0; j < m_arrays.face_vertices.size(); ++j)
-      for (Eigen::Index v : m_arrays.face_vertices[j])
-        if (!m_vertex_seen[std::size_t(v)]) {
-          m_vertex_seen[std::size_t(v)] = 1;
-          next.row(v) -= m_component_shift[m_arrays.face_component[j]];
-        }
+    for (Eigen::Index v = 0; v < next.rows(); ++v)
+      next.row(v) -= m_component_shift[m_vertex_component[std::size_t(v)]];
   }
 
   // Face j's term K_j X_j (T - I)^T of the residual, one row per corner.
@@ -1196,6 +1191,9 @@ private:
 
     m_constrained_vertices =
         central_face_vertices(m_ops.faces, reference, m_arrays.face_component, m_arrays.number_of_components);
+    m_vertex_component.clear();
+    if (m_arrays.number_of_components > 1)
+      m_vertex_component = internal::vertex_components(m_arrays, std::size_t(reference.rows()));
 
     // Small weight: it only has to remove the translational null space.  A large one pins
     // the constrained face's orientation and leaves a kink there.  L + W is factored in place
@@ -1247,6 +1245,7 @@ private:
   internal::Mesh_arrays m_arrays;
   internal::Poisson_operators m_ops;
   std::vector<Eigen::Index> m_constrained_vertices;
+  std::vector<std::size_t> m_vertex_component; // of each vertex, when there are several components
   mutable Sparse_linear_solver m_solver; // mutable: CGAL's solver traits have no const solver()
   std::size_t m_number_of_factorizations = 0;
   double m_factor_ms = 0;
@@ -1264,7 +1263,6 @@ private:
   std::vector<std::size_t> m_corner_offsets, m_corners;
   std::vector<std::ptrdiff_t> m_fold_slot; // -1 between iterations
   std::vector<Eigen::RowVector3d> m_component_shift;
-  std::vector<unsigned char> m_vertex_seen;
 };
 
 } // namespace Flow_aligned_surfaces

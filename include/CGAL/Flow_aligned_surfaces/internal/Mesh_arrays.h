@@ -43,6 +43,17 @@ struct Mesh_arrays {
   std::size_t number_of_components = 0;
 };
 
+/// The connected component of each of the first `number_of_vertices` vertices: that of its
+/// faces (0 for a vertex on no face).
+inline std::vector<std::size_t> vertex_components(const Mesh_arrays& arrays, std::size_t number_of_vertices)
+{
+  std::vector<std::size_t> component(number_of_vertices, 0);
+  for (std::size_t j = 0; j < arrays.face_vertices.size(); ++j)
+    for (Eigen::Index v : arrays.face_vertices[j])
+      component[std::size_t(v)] = arrays.face_component[j];
+  return component;
+}
+
 /// The vertices of `tm` in the order of the index map `vim`.
 template <class TriangleMesh, class VertexIndexMap>
 std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>

@@ -69,7 +69,7 @@ inline Surface_faces make_surface_faces(const Mesh_arrays& arrays, Positions pos
   s.face_normals.resize(n, 3);
   s.face_centroids.resize(n, 3);
   s.face_areas.resize(n);
-  s.vertex_component.assign(std::size_t(s.positions.rows()), 0);
+  s.vertex_component = vertex_components(arrays, std::size_t(s.positions.rows()));
   degenerate_face = -1;
   for (Eigen::Index j = 0; j < n; ++j) {
     const auto& fv = arrays.face_vertices[std::size_t(j)];
@@ -81,8 +81,6 @@ inline Surface_faces make_surface_faces(const Mesh_arrays& arrays, Positions pos
     s.face_normals.row(j) = twice_area > 0 ? Eigen::Vector3d(cross / twice_area) : Eigen::Vector3d::Zero();
     s.face_centroids.row(j) = (a + b + c) / 3;
     s.face_areas[j] = 0.5 * twice_area;
-    for (Eigen::Index v : fv)
-      s.vertex_component[std::size_t(v)] = arrays.face_component[std::size_t(j)];
   }
   return s;
 }
