@@ -171,22 +171,9 @@ public:
       dest.derived() += base;
       return;
     }
-    dest.derived().resize(residual.rows(), residual.cols());
-    for (Eigen::Index first = 0; first < residual.cols(); first += 3) {
-      const int columns = int((std::min)(Eigen::Index(3), residual.cols() - first));
-      const auto solve = [&](auto r) {
-        solve_block<decltype(r)::value, float>(residual, dest, first,
-                                               [&](Eigen::Index row, Eigen::Index column, double correction) {
-                                                 return base(row, column) + correction;
-                                               });
-      };
-      if (columns == 1)
-        solve(std::integral_constant<int, 1>());
-      else if (columns == 2)
-        solve(std::integral_constant<int, 2>());
-      else
-        solve(std::integral_constant<int, 3>());
-    }
+    solve_blocks<float>(residual, dest, [&](Eigen::Index row, Eigen::Index column, double correction) {
+      return base(row, column) + correction;
+    });
   }
 
   /// The fill-reducing ordering of the last analysis (CHOLMOD_AMD, CHOLMOD_METIS, ...; -1 if none).
@@ -211,8 +198,7 @@ public:
     const double columns = double(this->m_cholmodFactor->n);
     if (!uses_supernodal_sweeps())
       return number_of_entries() * (sizeof(double) + sizeof(int)) + 2. * columns * sizeof(int);
-    return number_of_entries() * sizeof(FactorScalar) + double(m_rows.size()) * sizeof(int) +
-           (columns + 2. * double(m_super.size())) * sizeof(int);
+    return bytes_per_supernodal_sweep(sizeof(FactorScalar));
   }
 
   /// The bytes one sweep of `solve_correction()` reads from the factor.
@@ -220,9 +206,7 @@ public:
   {
     if (!solves_corrections_in_single_precision())
       return bytes_per_sweep();
-    const double columns = double(this->m_cholmodFactor->n);
-    return number_of_entries() * sizeof(float) + double(m_rows.size()) * sizeof(int) +
-           (columns + 2. * double(m_super.size())) * sizeof(int);
+    return bytes_per_supernodal_sweep(sizeof(float));
   }
 
   /// \internal Eigen's solve() expression ends here.
@@ -233,24 +217,39 @@ public:
       Base::_solve_impl(b, dest);
       return;
     }
+    solve_blocks<FactorScalar>(b, dest, [](Eigen::Index, Eigen::Index, double value) { return value; });
+  }
+
+private:
+  // The bytes one supernodal sweep reads: the values, in `value_size` bytes each, the row indices
+  // of the first column of each supernode and the start of every column.
+  double bytes_per_supernodal_sweep(std::size_t value_size) const
+  {
+    const double columns = double(this->m_cholmodFactor->n);
+    return number_of_entries() * double(value_size) + double(m_rows.size()) * sizeof(int) +
+           (columns + 2. * double(m_super.size())) * sizeof(int);
+  }
+
+  // All columns of b, three at a time, solved by the sweeps with the factor's values in precision
+  // `Value`; dest(i, c) = result(i, c, the solution's entry).
+  template <class Value, class Rhs, class Dest, class Result>
+  void solve_blocks(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest, const Result& result) const
+  {
     dest.derived().resize(b.rows(), b.cols());
-    const auto solution = [](Eigen::Index, Eigen::Index, double value) { return value; };
     for (Eigen::Index first = 0; first < b.cols(); first += 3) {
-      const int columns = int((std::min)(Eigen::Index(3), b.cols() - first));
-      switch (columns) {
+      switch (int((std::min)(Eigen::Index(3), b.cols() - first))) {
       case 1:
-        solve_block<1, FactorScalar>(b, dest, first, solution);
+        solve_block<1, Value>(b, dest, first, result);
         break;
       case 2:
-        solve_block<2, FactorScalar>(b, dest, first, solution);
+        solve_block<2, Value>(b, dest, first, result);
         break;
       default:
-        solve_block<3, FactorScalar>(b, dest, first, solution);
+        solve_block<3, Value>(b, dest, first, result);
       }
     }
   }
 
-private:
   // Whether every pivot of D is positive and finite (CHOLMOD's LDL^T accepts indefinite matrices).
   static bool has_positive_pivots(const cholmod_factor& factor)
   {
