@@ -7,9 +7,10 @@
 //
 // A supernode updates only its ancestors.  The tree is cut at its top (the "top" supernodes,
 // few: the separators of a fill-reducing ordering) into subtrees of about equal work, packed
-// into a fixed number of groups.  Forward sweep: the groups one per task, each writing its
-// updates of the top rows into a private buffer, then the buffers added in group order and the
-// top swept; backward sweep: the top first, then the groups.  The cut and the order of every
+// into a fixed number of groups.  Forward sweep: the groups, heaviest first, each on the next
+// free thread, each writing its updates of the top rows into a private buffer, then the buffers
+// added in group order and the top swept; backward sweep: the top first, then the groups in the
+// same way.  The cut and the order of every
 // addition are fixed by the factor alone, so the result is the same bit for bit on one thread
 // or many.
 
@@ -17,8 +18,10 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_ELIMINATION_SUBTREES_H
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
 #endif
 
 #include <algorithm>
@@ -113,16 +116,23 @@ private:
     int first, last;
   };
 
+  // f(g) for every group; in parallel, each thread takes the heaviest group not yet taken
+  // whenever it is free.  The groups' work is uneven when the cut stops at the top's share
+  // (at 3.2e5 faces the four hold 36, 33, 10 and 11 % of the work); splitting the range of
+  // groups in halves gave both heavy ones to one thread (SOLVE 1.43x on two threads, against
+  // 1.8x this way; RESULTS.md, issue 18, stop 30).  The order does not change the result: each
+  // group writes its own rows and its own buffer.
   template <class Function>
   void for_each_group(const Function& f) const
   {
 #ifdef CGAL_LINKED_WITH_TBB
     if (m_parallel) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m_groups.size(), 1),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t g = r.begin(); g != r.end(); ++g)
-                            f(g);
-                        });
+      std::atomic<std::size_t> next(0);
+      const int threads = (std::min)(tbb::this_task_arena::max_concurrency(), int(m_groups.size()));
+      tbb::parallel_for(0, threads, [&](int) {
+        for (std::size_t k = next++; k < m_heaviest_first.size(); k = next++)
+          f(m_heaviest_first[k]);
+      });
       return;
     }
 #endif
@@ -180,11 +190,12 @@ private:
     std::vector<int> candidates = roots, top;
     double top_work = 0;
     std::vector<std::vector<int>> packed;
+    std::vector<double> load;
     for (;;) {
       std::sort(candidates.begin(), candidates.end(),
                 [&](int a, int b) { return subtree_work[a] > subtree_work[b] || (subtree_work[a] == subtree_work[b] && a < b); });
       packed.assign(number_of_groups, {});
-      std::vector<double> load(number_of_groups, 0.);
+      load.assign(number_of_groups, 0.);
       for (int c : candidates) {
         const std::size_t g = std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
         packed[g].push_back(c);
@@ -226,6 +237,10 @@ private:
       }
       m_groups.push_back(std::move(ranges));
     }
+    m_heaviest_first.resize(m_groups.size());
+    std::iota(m_heaviest_first.begin(), m_heaviest_first.end(), std::size_t(0));
+    std::stable_sort(m_heaviest_first.begin(), m_heaviest_first.end(),
+                     [&](std::size_t a, std::size_t b) { return load[a] > load[b]; });
   }
 
   int m_nsuper = 0;
@@ -233,6 +248,7 @@ private:
   std::vector<int> m_top;         // the supernodes above the groups, in increasing order
   std::vector<int> m_top_columns; // their columns
   std::vector<std::vector<Range>> m_groups;
+  std::vector<std::size_t> m_heaviest_first; // the groups by decreasing work
   std::vector<int> m_split; // per supernode of a group: first position of a row outside its subtree
   double m_top_fraction = 0;
   bool m_parallel = false;
