@@ -19,7 +19,11 @@
 //   shuffled       as `second`, with the vertices and faces indexed in a random order (a mesh
 //                  read from a file or built by another tool is rarely in make_planar_patch's
 //                  row-by-row order)
-// For each: wall ms, thread CPU ms, minor page faults, and the phases (wall ms).
+// For each: wall ms, thread CPU ms, minor page faults, and the phases (wall ms).  Each child also
+// measures what a first touch of fresh memory costs on this machine (a page of 4 KiB of a new
+// anonymous mapping written once, 32 MiB of them): the faults times that cost estimate how much
+// of the constructor is the operating system's, not the package's (item 2's "measured reason";
+// on the benchmarks' virtual machine a first touch costs about 10 us, on bare metal about 0.3).
 //
 //   bench_construction [--sizes 800,5000,20000,80000,320000] [--processes 5]
 //
@@ -56,6 +60,7 @@
 
 namespace {
 
+using fas_benchmark::first_touch_us;
 using fas_benchmark::minor_faults;
 using fas_benchmark::thread_cpu_ms;
 
@@ -119,6 +124,7 @@ void print(const std::string& name, const Figures& f)
 // The child: one fresh process, one size, every case that can share it.
 int child(std::size_t target_faces, const std::string& mode)
 {
+  std::cout << "first_touch_us " << first_touch_us() << '\n';
   const Grid grid = make_grid();
   const Field field = std::cref(grid);
   if (mode == "after_small") {
@@ -200,11 +206,15 @@ int main(int argc, char** argv)
 
   std::cout
       << "Medians over " << processes << " fresh processes per case; wall/phase ms, CPU = thread CPU ms, "
-      << "faults = minor page faults\n\n"
+      << "faults = minor page faults; first touch = faults x the cost of a first touch measured in the "
+      << "same process (us per page below the table)\n\n"
       << "| faces | case | wall ms | CPU ms | faults | check | arrays | operators | constraints | analyze | "
-         "factorize |\n|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "factorize | first touch ms | wall - first touch |\n"
+         "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::vector<double> touch_costs;
   for (std::size_t size : sizes) {
     std::map<std::string, std::vector<Figures>> runs;
+    std::map<std::string, std::vector<double>> first_touch_ms;
     std::size_t face_count = 0;
     for (int p = 0; p < processes; ++p)
       for (const char* mode : {"all", "after_small"}) {
@@ -215,6 +225,7 @@ int main(int argc, char** argv)
           return 1;
         }
         char line[1024];
+        double touch_us = std::nan("");
         while (fgets(line, sizeof line, pipe)) {
           std::istringstream in(line);
           std::string name;
@@ -223,10 +234,16 @@ int main(int argc, char** argv)
             in >> face_count;
             continue;
           }
+          if (name == "first_touch_us") {
+            in >> touch_us;
+            touch_costs.push_back(touch_us);
+            continue;
+          }
           Figures f;
           for (double& x : f)
             in >> x;
           runs[name].push_back(f);
+          first_touch_ms[name].push_back(f[2] * touch_us * 1e-3);
         }
         if (pclose(pipe) != 0) {
           std::cerr << command << " failed\n";
@@ -243,8 +260,18 @@ int main(int argc, char** argv)
         std::snprintf(cell, sizeof cell, k == 2 ? "%.0f" : "%.3g", median(values));
         std::cout << " | " << cell;
       }
-      std::cout << " |\n";
+      std::vector<double> rest;
+      for (std::size_t r = 0; r < runs[name].size(); ++r)
+        rest.push_back(runs[name][r][0] - first_touch_ms[name][r]);
+      char touch[32], without[32];
+      std::snprintf(touch, sizeof touch, "%.3g", median(first_touch_ms[name]));
+      std::snprintf(without, sizeof without, "%.3g", median(rest));
+      std::cout << " | " << touch << " | " << without << " |\n";
     }
   }
+  if (!touch_costs.empty())
+    std::cout << "\nA first touch of a page of fresh memory: " << median(touch_costs)
+              << " us (median over the processes; min " << *std::min_element(touch_costs.begin(), touch_costs.end())
+              << ", max " << *std::max_element(touch_costs.begin(), touch_costs.end()) << ")\n";
   return 0;
 }

@@ -16,7 +16,9 @@
 // OMP_NUM_THREADS=1 (CHOLMOD links OpenMP).  With CHOLMOD, the same with the supernodal LL^T
 // solver (template parameter SparseLinearSolver), which factors faster at 8e4 faces.  grow_cpu_ms is the thread CPU time of grow(), the
 // figure to trust on a shared machine; construct_ms the constructor (operators and the first
-// factorization), for comparison with the refactorization.
+// factorization), for comparison with the refactorization; first_touch_ms the page faults of
+// grow() times the cost of one first touch of fresh memory measured on this machine
+// (fas_benchmark::first_touch_us()).
 //
 //   OMP_NUM_THREADS=1 bench_grow --benchmark_repetitions=7 --benchmark_report_aggregates_only=true
 
@@ -45,6 +47,7 @@
 
 namespace {
 
+using fas_benchmark::first_touch_us;
 using fas_benchmark::minor_faults;
 using fas_benchmark::thread_cpu_ms;
 
@@ -111,6 +114,8 @@ void BM_grow_and_refactor(benchmark::State& state)
   state.counters["check_ms"] = check / n;
   state.counters["factor_ms"] = factor / n;
   state.counters["minor_faults"] = faults / n;
+  // The share of grow() that is first touches of fresh memory, at this machine's cost per touch.
+  state.counters["first_touch_ms"] = faults / n * first_touch_us() * 1e-3;
   state.counters["operators_ms"] = operators / n;
   state.counters["constraints_ms"] = constraints / n;
   state.counters["analyze_ms"] = analyze / n;
