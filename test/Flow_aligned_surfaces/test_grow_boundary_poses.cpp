@@ -296,6 +296,20 @@ TEST(GrowBoundaryCorners, OverlapAcrossASlitIsRefusedSayingWhere)
   EXPECT_FALSE(PMP::does_self_intersect(tm));
 }
 
+// Two blocks of cells one cell apart, grown toward +x only: the left block's strip reaches
+// across the gap into the right block's faces, which do not grow.  The refusal names an old
+// face, the pair the guard finds from the old face's side.
+TEST(GrowBoundaryCorners, StripIntoOldFacesIsRefusedNamingThem)
+{
+  Mesh tm = cells(5, [](int i, int) { return i != 2; });
+  expect_refused_untouched(tm, [&] { FAS::grow_boundary(tm, 1.5, FAS::parameters::growth_direction(Vector(1, 0, 0))); },
+                           {"grow_boundary()", "would cut through an old face of the surface", "at (", "untouched"});
+  // Within the gap it grows.
+  const FAS::Growth_report report = FAS::grow_boundary(tm, 0.5, FAS::parameters::growth_direction(Vector(1, 0, 0)));
+  EXPECT_GT(report.number_of_new_faces, 0u);
+  EXPECT_FALSE(PMP::does_self_intersect(tm));
+}
+
 // An arrowhead whose notch has an inside angle of 58 degrees: its two sides cannot both grow.
 TEST(GrowBoundaryCorners, TooSharpConcaveCornerIsRefusedNamingTheVertex)
 {

@@ -250,9 +250,16 @@ void check_grown_surface(const TriangleMesh& tm, VertexIndexMap vim, const Posit
   for (const auto& f : new_faces)
     new_boxes.push_back(box(f));
   Box_cell_index new_cells(new_boxes);
+  // The old faces near the new ones, and the pairs (old face, new face) whose boxes meet, in
+  // the order of the old faces: found once, tested exactly once the local mesh is made.
   std::vector<char> near(old_faces.size(), 0);
-  for (std::size_t f = 0; f < old_faces.size(); ++f)
-    near[f] = new_cells.meets_any(box(old_faces[f]));
+  std::vector<std::pair<std::size_t, std::size_t>> old_new_pairs;
+  for (std::size_t j = 0; j < old_faces.size(); ++j)
+    new_cells.find_meeting(box(old_faces[j]), [&](std::size_t k) {
+      near[j] = 1;
+      old_new_pairs.emplace_back(j, k);
+      return false;
+    });
 
   // The local mesh: the near old faces, then the new ones.  A subset of a manifold mesh may be
   // one that Surface_mesh cannot assemble in this order (a vertex whose faces touch in several
@@ -315,15 +322,14 @@ void check_grown_surface(const TriangleMesh& tm, VertexIndexMap vim, const Posit
   for (const auto& f : new_faces)
     if (CGAL::collinear(point(f[0]), point(f[1]), point(f[2])))
       refuse(f, "another new face");
-  for (std::size_t j = 0; j < old_faces.size(); ++j) {
+  bool old_face_degenerate = false;
+  for (std::size_t p = 0; p < old_new_pairs.size(); ++p) {
+    const auto [j, k] = old_new_pairs[p];
     const auto& f = old_faces[j];
-    if (!near[j] || CGAL::collinear(point(f[0]), point(f[1]), point(f[2])))
-      continue;
-    new_cells.find_meeting(box(f), [&](std::size_t k) {
-      if (faces_cross(f, new_faces[k], point))
-        refuse(new_faces[k], "an old face of the surface");
-      return false;
-    });
+    if (p == 0 || j != old_new_pairs[p - 1].first) // the first pair of old face j
+      old_face_degenerate = CGAL::collinear(point(f[0]), point(f[1]), point(f[2]));
+    if (!old_face_degenerate && faces_cross(f, new_faces[k], point))
+      refuse(new_faces[k], "an old face of the surface");
   }
   for (std::size_t j = 0; j < new_faces.size(); ++j)
     new_cells.find_meeting(new_boxes[j], [&](std::size_t k) {
@@ -652,6 +658,7 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
   std::vector<Strip_mesh::Face_index> raw_faces;
   std::vector<CGAL::Bbox_3> raw_boxes;
   const double reach = 0.25 * target_length;
+  std::optional<Box_cell_index> raw_cells;
   if (reference) {
     raw_reference_mesh = raw;
     for (auto v : raw_reference_mesh.vertices())
@@ -664,10 +671,8 @@ Boundary_strip make_boundary_strip(const TriangleMesh& tm, VertexIndexMap vim, c
       raw_boxes.emplace_back(b.xmin() - reach, b.ymin() - reach, b.zmin() - reach, b.xmax() + reach,
                              b.ymax() + reach, b.zmax() + reach);
     }
-  }
-  std::optional<Box_cell_index> raw_cells;
-  if (reference)
     raw_cells.emplace(raw_boxes);
+  }
   auto closest_raw_point = [&](const Epick::Point_3& p) {
     std::pair<Epick::Point_3, Strip_mesh::Face_index> best(p, Strip_mesh::null_face());
     double best_distance = reach * reach;
