@@ -269,9 +269,10 @@ int main(int argc, char** argv)
       std::cout << " | " << touch << " | " << without << " |\n";
     }
   }
-  if (!touch_costs.empty())
+  if (!touch_costs.empty()) {
+    const auto range = std::minmax_element(touch_costs.begin(), touch_costs.end());
     std::cout << "\nA first touch of a page of fresh memory: " << median(touch_costs)
-              << " us (median over the processes; min " << *std::min_element(touch_costs.begin(), touch_costs.end())
-              << ", max " << *std::max_element(touch_costs.begin(), touch_costs.end()) << ")\n";
+              << " us (median over the processes; min " << *range.first << ", max " << *range.second << ")\n";
+  }
   return 0;
 }

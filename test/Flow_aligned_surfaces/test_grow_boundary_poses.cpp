@@ -302,10 +302,11 @@ TEST(GrowBoundaryCorners, OverlapAcrossASlitIsRefusedSayingWhere)
 TEST(GrowBoundaryCorners, StripIntoOldFacesIsRefusedNamingThem)
 {
   Mesh tm = cells(5, [](int i, int) { return i != 2; });
-  expect_refused_untouched(tm, [&] { FAS::grow_boundary(tm, 1.5, FAS::parameters::growth_direction(Vector(1, 0, 0))); },
+  const auto toward_x = FAS::parameters::growth_direction(Vector(1, 0, 0));
+  expect_refused_untouched(tm, [&] { FAS::grow_boundary(tm, 1.5, toward_x); },
                            {"grow_boundary()", "would cut through an old face of the surface", "at (", "untouched"});
   // Within the gap it grows.
-  const FAS::Growth_report report = FAS::grow_boundary(tm, 0.5, FAS::parameters::growth_direction(Vector(1, 0, 0)));
+  const FAS::Growth_report report = FAS::grow_boundary(tm, 0.5, toward_x);
   EXPECT_GT(report.number_of_new_faces, 0u);
   EXPECT_FALSE(PMP::does_self_intersect(tm));
 }

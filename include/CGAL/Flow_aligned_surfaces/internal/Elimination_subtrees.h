@@ -10,9 +10,8 @@
 // into a fixed number of groups.  Forward sweep: the groups, heaviest first, each on the next
 // free thread, each writing its updates of the top rows into a private buffer, then the buffers
 // added in group order and the top swept; backward sweep: the top first, then the groups in the
-// same way.  The cut and the order of every
-// addition are fixed by the factor alone, so the result is the same bit for bit on one thread
-// or many.
+// same way.  The cut and the order of every addition are fixed by the factor alone, so the
+// result is the same bit for bit on one thread or many.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_ELIMINATION_SUBTREES_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_ELIMINATION_SUBTREES_H
@@ -120,8 +119,8 @@ private:
   // whenever it is free.  The groups' work is uneven when the cut stops at the top's share
   // (at 3.2e5 faces the four hold 36, 33, 10 and 11 % of the work); splitting the range of
   // groups in halves gave both heavy ones to one thread (SOLVE 1.4x faster on two threads than
-  // on one, against 1.7x this way; RESULTS.md, issue 18, stop 30).  The order does not change the result: each
-  // group writes its own rows and its own buffer.
+  // on one, against 1.7x this way; RESULTS.md, issue 18, stop 30).  The order does not change
+  // the result: each group writes its own rows and its own buffer.
   template <class Function>
   void for_each_group(const Function& f) const
   {
