@@ -318,7 +318,7 @@ public:
     // face j, T_j its local transformation) is assembled in double, each face's term added as
     // soon as T_j is known (one pass over the faces, nothing stored per face but its normal for
     // the fold test), and (L + W) C = residual is solved.  This is one step of iterative
-    // refinement from X: the default solver solves C with a single-precision copy of a large
+    // refinement from X: the default solver solves C in single precision with a copy of a large
     // factor (half the bytes to read), whose error is proportional to C, the step, not to X'
     // (and is largest in C's translation, which translate_as_the_exact_correction() sets;
     // RESULTS.md, issue 18, stop 29).

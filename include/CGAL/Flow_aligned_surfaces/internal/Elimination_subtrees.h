@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <numeric>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -56,12 +57,13 @@ public:
   /// Whether `forward()` and `backward()` run the groups on the threads of the caller's TBB arena.
   void use_parallelism(bool parallel) { m_parallel = parallel; }
 
-  /// The forward sweep over the interleaved right-hand side `z` (`width` values per row):
+  /// The forward sweep over the interleaved right-hand side `z` (`width` values of `Scalar`,
+  /// double or float, per row):
   /// `visit(s, target, split, group)` processes supernode s, adding its updates of the rows at
   /// positions [split, nrows) of its row list to `target` instead of `z` (split < 0: all to `z`);
   /// `group` (in [0, number_of_groups]) tells the visits that may run at the same time apart.
-  template <class Visit>
-  void forward(double* z, int width, const Visit& visit) const
+  template <class Scalar, class Visit>
+  void forward(Scalar* z, int width, const Visit& visit) const
   {
     if (!is_split()) {
       for (int s = 0; s < m_nsuper; ++s)
@@ -69,18 +71,19 @@ public:
       return;
     }
     const std::size_t n = std::size_t(m_super[m_nsuper]) * std::size_t(width);
-    m_private.resize(m_groups.size());
+    std::vector<std::vector<Scalar>>& private_rows = private_rows_in<Scalar>();
+    private_rows.resize(m_groups.size());
     for_each_group([&](std::size_t g) {
-      std::vector<double>& buffer = m_private[g];
+      std::vector<Scalar>& buffer = private_rows[g];
       if (buffer.size() != n)
-        buffer.assign(n, 0.);
+        buffer.assign(n, Scalar(0));
       for (int column : m_top_columns)
-        std::fill_n(buffer.data() + std::size_t(column) * width, width, 0.);
+        std::fill_n(buffer.data() + std::size_t(column) * width, width, Scalar(0));
       for (const Range& range : m_groups[g])
         for (int s = range.first; s <= range.last; ++s)
           visit(s, buffer.data(), m_split[s], int(g) + 1);
     });
-    for (const std::vector<double>& buffer : m_private)
+    for (const std::vector<Scalar>& buffer : private_rows)
       for (int column : m_top_columns)
         for (int c = 0; c < width; ++c)
           z[std::size_t(column) * width + c] += buffer[std::size_t(column) * width + c];
@@ -141,6 +144,16 @@ private:
 
   int rows_of(int s) const { return m_pi[s + 1] - m_pi[s]; }
   int columns_of(int s) const { return m_super[s + 1] - m_super[s]; }
+
+  // The groups' private copies of the rows, in `Scalar` (double or float).
+  template <class Scalar>
+  std::vector<std::vector<Scalar>>& private_rows_in() const
+  {
+    if constexpr (std::is_same<Scalar, float>::value)
+      return m_private_single;
+    else
+      return m_private;
+  }
 
   void cut()
   {
@@ -252,6 +265,7 @@ private:
   double m_top_fraction = 0;
   bool m_parallel = false;
   mutable std::vector<std::vector<double>> m_private;
+  mutable std::vector<std::vector<float>> m_private_single;
 };
 
 } // namespace internal

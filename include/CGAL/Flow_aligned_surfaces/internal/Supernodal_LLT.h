@@ -17,8 +17,9 @@
 // solution's relative error grows from about 1e-15 to about 1e-7).  A double factor also keeps
 // that copy on large factors for `solve_correction()`: one step of iterative refinement in double
 // from a first approximation the caller already has (the deformation's current surface), whose
-// correction the single-precision copy solves to an error proportional to the correction, not to
-// the solution (about 1e-7 times the condition number).  With `use_parallelism()`
+// correction is swept in single precision, the copy's values and the arithmetic (four floats per
+// row: one SIMD register), to an error proportional to the correction, not to the solution (about
+// 1e-7 times the condition number).  With `use_parallelism()`
 // the independent subtrees of the elimination tree are swept on the threads of the caller's
 // TBB arena (Elimination_subtrees.h); the result is the same bit for bit.
 
@@ -141,9 +142,10 @@ public:
   /// From this many nonzeros of the factor on (by default), a double factor also keeps its values
   /// in single precision for `solve_correction()` (4 more bytes per nonzero, made by each
   /// factorization: 25 to 35 ms of the first construction at 8e4 faces, most of it page faults).
-  /// Its sweeps read half the bytes of the double factor's: the iterations' SOLVE takes 20 % less
-  /// time than CHOLMOD's solve at 8e4 faces (1.5e6 nonzeros) and 17 % less than the double sweeps
-  /// at 3.2e5 (benchmark/Flow_aligned_surfaces/RESULTS.md, issue 18, stop 29); below 1e6
+  /// Its sweeps read half the bytes of the double factor's and compute in single precision: the
+  /// iterations' SOLVE takes half the time of CHOLMOD's solve at 8e4 faces (1.5e6 nonzeros) and
+  /// 40 % less than the double sweeps at 3.2e5 (benchmark/Flow_aligned_surfaces/RESULTS.md,
+  /// issue 18, stops 29 and 31); below 1e6
   /// nonzeros (about 5e4 faces) the copy would cost more than a short alignment saves.
   static constexpr double default_smallest_single_precision_factor = 1e6;
 
@@ -157,10 +159,15 @@ public:
 
   /// One step of iterative refinement from `base`, a first approximation of the solution:
   /// `dest = base + A^{-1} residual`, where `residual` is `b - A base`, computed in double by the
-  /// caller.  The correction is solved by the single-precision copy of the factor when there is
-  /// one, else by `solve()`.  The copy's error, about 1e-7 times the condition number of A, is
-  /// relative to the correction, not to the solution; it is largest along the near-null space of
-  /// A, which a caller that knows it sets exactly (the deformation sets the translation).
+  /// caller.  The correction is solved by the single-precision copy of the factor, in
+  /// single-precision arithmetic, when there is one, else by `solve()`.  Its error, about 1e-7
+  /// times the condition number of A, is relative to the correction, not to the solution; it is
+  /// largest along the near-null space of A, which a caller that knows it sets exactly (the
+  /// deformation sets the translation).  Sweeping in float rather than in double arithmetic
+  /// halves the time of the sweeps (four floats per row in one SIMD register against two of two
+  /// doubles) and leaves 1 to 10 times the error of the double arithmetic, at most 4e-4 of the
+  /// correction on a 400 x 400 grid once the translation is set
+  /// (benchmark/Flow_aligned_surfaces/RESULTS.md, issue 18, stop 31).
   /// `residual`, `base` and `dest` have the same size; `dest` may be neither of the others.
   template <class Base, class Residual, class Dest>
   void solve_correction(const Eigen::MatrixBase<Base>& base, const Eigen::MatrixBase<Residual>& residual,
@@ -171,7 +178,7 @@ public:
       dest.derived() += base;
       return;
     }
-    solve_blocks<float>(residual, dest, [&](Eigen::Index row, Eigen::Index column, double correction) {
+    solve_blocks<float, float>(residual, dest, [&](Eigen::Index row, Eigen::Index column, double correction) {
       return base(row, column) + correction;
     });
   }
@@ -217,7 +224,8 @@ public:
       Base::_solve_impl(b, dest);
       return;
     }
-    solve_blocks<FactorScalar>(b, dest, [](Eigen::Index, Eigen::Index, double value) { return value; });
+    solve_blocks<FactorScalar, double>(b, dest,
+                                       [](Eigen::Index, Eigen::Index, double value) { return value; });
   }
 
 private:
@@ -231,21 +239,21 @@ private:
   }
 
   // All columns of b, three at a time, solved by the sweeps with the factor's values in precision
-  // `Value`; dest(i, c) = result(i, c, the solution's entry).
-  template <class Value, class Rhs, class Dest, class Result>
+  // `Value` and arithmetic in `Scalar`; dest(i, c) = result(i, c, the solution's entry).
+  template <class Value, class Scalar, class Rhs, class Dest, class Result>
   void solve_blocks(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest, const Result& result) const
   {
     dest.derived().resize(b.rows(), b.cols());
     for (Eigen::Index first = 0; first < b.cols(); first += 3) {
       switch (int((std::min)(Eigen::Index(3), b.cols() - first))) {
       case 1:
-        solve_block<1, Value>(b, dest, first, result);
+        solve_block<1, Value, Scalar>(b, dest, first, result);
         break;
       case 2:
-        solve_block<2, Value>(b, dest, first, result);
+        solve_block<2, Value, Scalar>(b, dest, first, result);
         break;
       default:
-        solve_block<3, Value>(b, dest, first, result);
+        solve_block<3, Value, Scalar>(b, dest, first, result);
       }
     }
   }
@@ -312,66 +320,101 @@ private:
       return m_single.data();
   }
 
-  // Columns [first, first + R) of b, solved by the factor's values in precision `Value`;
-  // dest(i, c) = result(i, c, the solution's entry).
-  template <int R, class Value, class Rhs, class Dest, class Result>
+  // The number of values the sweeps keep per row of the right-hand side for R columns: three
+  // columns are padded to four, so that a row is one SIMD packet of four floats (or two of two
+  // doubles) for Eigen's fixed-size arrays.  (Left to themselves, compilers vectorized the
+  // sweeps' loops over the rows, transposing the interleaved rows at every step.)
+  static constexpr int row_width(int R) { return R == 3 ? 4 : R; }
+
+  // The rows of the right-hand side being swept and the gather buffers, in `Scalar`: kept from
+  // one solve to the next (no allocation per solve), one set per arithmetic.
+  template <class Scalar>
+  struct Workspace {
+    std::vector<Scalar> rows;
+    std::vector<std::vector<Scalar>> buffers; // one per group of subtrees, one more for the top
+  };
+
+  template <class Scalar>
+  Workspace<Scalar>& workspace() const
+  {
+    if constexpr (std::is_same<Scalar, float>::value)
+      return m_single_workspace;
+    else
+      return m_double_workspace;
+  }
+
+  // Columns [first, first + R) of b, solved by the factor's values in precision `Value` with
+  // arithmetic in `Scalar`; dest(i, c) = result(i, c, the solution's entry).
+  template <int R, class Value, class Scalar, class Rhs, class Dest, class Result>
   void solve_block(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest, Eigen::Index first,
                    const Result& result) const
   {
+    constexpr int W = row_width(R);
     const cholmod_factor* factor = this->m_cholmodFactor;
     const int n = int(factor->n);
     const int* perm = static_cast<const int*>(factor->Perm);
-    // Interleaved: the R values of a row side by side, as the sweeps use them.
-    m_work.resize(std::size_t(n) * R);
-    double* z = m_work.data();
+    // Interleaved: the values of a row side by side, as the sweeps use them.
+    std::vector<Scalar>& rows = workspace<Scalar>().rows;
+    rows.resize(std::size_t(n) * W);
+    Scalar* z = rows.data();
+    for (int i = 0; i < n; ++i) {
+      for (int c = 0; c < R; ++c)
+        z[std::size_t(i) * W + c] = Scalar(b(perm[i], first + c));
+      for (int c = R; c < W; ++c)
+        z[std::size_t(i) * W + c] = Scalar(0);
+    }
+    sweeps<W, Value>(z);
     for (int i = 0; i < n; ++i)
       for (int c = 0; c < R; ++c)
-        z[std::size_t(i) * R + c] = b(perm[i], first + c);
-    sweeps<R, Value>(z);
-    for (int i = 0; i < n; ++i)
-      for (int c = 0; c < R; ++c)
-        dest(perm[i], first + c) = result(perm[i], first + c, z[std::size_t(i) * R + c]);
+        dest(perm[i], first + c) = result(perm[i], first + c, double(z[std::size_t(i) * W + c]));
   }
 
-  // L D L^T z = z in place (z interleaved, permuted), with the factor's values in precision `Value`.
-  template <int R, class Value>
-  void sweeps(double* z) const
+  // L D L^T z = z in place (z interleaved, W values per row, permuted), with the factor's values
+  // in precision `Value`.
+  template <int W, class Value, class Scalar>
+  void sweeps(Scalar* z) const
   {
     const cholmod_factor& factor = *this->m_cholmodFactor;
-    const Supernode_sweeper<R, Value> sweeper{m_super.data(),
-                                              m_pi.data(),
-                                              m_rows.data(),
-                                              static_cast<const int*>(factor.p),
-                                              static_cast<const int*>(factor.nz),
-                                              values<Value>(),
-                                              int(number_of_supernodes())};
+    using Sweeper = Supernode_sweeper<W, Value, Scalar>;
+    const Sweeper sweeper{m_super.data(),
+                          m_pi.data(),
+                          m_rows.data(),
+                          static_cast<const int*>(factor.p),
+                          static_cast<const int*>(factor.nz),
+                          values<Value>(),
+                          int(number_of_supernodes())};
     // One gather buffer per group of subtrees (and one more for the top).
-    m_buffers.resize(std::size_t(Elimination_subtrees::number_of_groups + 1));
-    for (std::vector<double>& buffer : m_buffers)
-      buffer.resize(Supernode_sweeper<R, Value>::buffer_size(m_largest_supernode_rows));
-    m_subtrees.forward(z, R, [&](int s, double* target, int split, int group) {
-      sweeper.forward(s, z, target, split, m_buffers[std::size_t(group)].data());
+    std::vector<std::vector<Scalar>>& buffers = workspace<Scalar>().buffers;
+    buffers.resize(std::size_t(Elimination_subtrees::number_of_groups + 1));
+    for (std::vector<Scalar>& buffer : buffers)
+      buffer.resize(Sweeper::buffer_size(m_largest_supernode_rows));
+    m_subtrees.forward(z, W, [&](int s, Scalar* target, int split, int group) {
+      sweeper.forward(s, z, target, split, buffers[std::size_t(group)].data());
     });
-    m_subtrees.backward([&](int s, int group) { sweeper.backward(s, z, m_buffers[std::size_t(group)].data()); });
+    m_subtrees.backward(
+        [&](int s, int group) { sweeper.backward(s, z, buffers[std::size_t(group)].data()); });
   }
 
   // The dense work of one supernode of k columns, a lower trapezoid stored as CHOLMOD stores it:
   // column c0 + j holds D_jj then the entries of the unit L below it, at the rows of positions
   // j, j + 1, ... of the supernode's row list (that of its first column), so that column(s, j)[i]
   // is the entry at position i >= j.  Forward: z1 := L11^{-1} z1, z2 -= L21 z1, then z1 := D^{-1} z1;
-  // backward: z1 := L11^{-T} (z1 - L21^T z2).  Wide supernodes gather the rows of the right-hand
-  // side they touch into `buffer`, one contiguous array of nrows values per right-hand side, and
-  // are swept in panels of `panel_width` columns: the panel's small triangle, then all the rows
-  // below it at once, so that each gathered row is read and written once per panel, on pairs of
-  // consecutive rows (two lanes a compiler vectorizes).
-  template <int R, class Value>
+  // backward: z1 := L11^{-T} (z1 - L21^T z2).  Each row of the right-hand side is W values of
+  // `Scalar` side by side, handled as one Eigen array (one or two SIMD registers), times one entry
+  // of the factor at a time.  Wide supernodes gather the rows they touch into `buffer` and are
+  // swept in panels of `panel_width` columns: the panel's small triangle, then all the rows below
+  // it at once, so that each gathered row is read and written once per panel.
+  template <int W, class Value, class Scalar>
   struct Supernode_sweeper {
     static constexpr int panel_width = 4;
     // Supernodes of at most this many columns (most of them: chains of the tree are short) are
-    // swept in place, row by row of the right-hand side, without the gather buffer.
+    // swept in place, without the gather buffer.
     static constexpr int narrow_width = 4;
 
-    // Calls f with std::integral_constant<int, width>, width in [1, narrow_width].
+    using Row = Eigen::Array<Scalar, W, 1>;
+    using Row_map = Eigen::Map<Row>;
+
+    // Calls f with std::integral_constant<int, width>, width in [1, panel_width].
     template <class F>
     static void with_width(int width, const F& f)
     {
@@ -391,7 +434,7 @@ private:
     }
 
     /// The buffer a supernode of `nrows` rows needs.
-    static std::size_t buffer_size(std::size_t nrows) { return nrows * R; }
+    static std::size_t buffer_size(std::size_t nrows) { return nrows * W; }
 
     const int *super, *pi, *rows, *start, *count;
     const Value* x;
@@ -401,85 +444,78 @@ private:
     int rows_of(int s) const { return pi[s + 1] - pi[s]; }
     const int* row_list(int s) const { return rows + pi[s]; }
     // Column j of supernode s, indexed by the position in the row list (valid from j on).
-    const Value* column(int s, int j) const
-    {
-      return x + (std::ptrdiff_t(start[super[s] + j]) - j);
-    }
+    const Value* column(int s, int j) const { return x + (std::ptrdiff_t(start[super[s] + j]) - j); }
+    // Row i of the interleaved rows z.
+    static Row_map row_at(Scalar* z, int i) { return Row_map(z + std::size_t(i) * W); }
+
+    // The K columns of supernode s from column j on, and the entry of column b at position i.
+    template <int K>
+    struct Columns {
+      const Value* l[K];
+      Columns(const Supernode_sweeper& sweeper, int s, int j)
+      {
+        for (int b = 0; b < K; ++b)
+          l[b] = sweeper.column(s, j + b);
+      }
+      Scalar operator()(int b, int i) const { return Scalar(l[b][i]); }
+      // The sum over b of L(i, b) p[b].
+      Row combination(int i, const Row (&p)[K]) const
+      {
+        Row update = (*this)(0, i) * p[0];
+        for (int b = 1; b < K; ++b)
+          update += (*this)(b, i) * p[b];
+        return update;
+      }
+    };
 
     // forward() of a supernode of K columns, in place.
     template <int K>
-    void forward_narrow(int s, double* z, double* target, int split) const
+    void forward_narrow(int s, Scalar* z, Scalar* target, int split) const
     {
       const int c0 = super[s];
       const int nrows = rows_of(s);
       const int* row = row_list(s);
-      const Value* column_of[K];
+      const Columns<K> l(*this, s, 0);
+      Row v[K];
       for (int j = 0; j < K; ++j)
-        column_of[j] = column(s, j);
-      double v[K][R];
-      for (int j = 0; j < K; ++j)
-        for (int c = 0; c < R; ++c)
-          v[j][c] = z[std::size_t(c0 + j) * R + c];
+        v[j] = row_at(z, c0 + j);
       for (int j = 0; j < K; ++j)
         for (int i = j + 1; i < K; ++i)
-          for (int c = 0; c < R; ++c)
-            v[i][c] -= double(column_of[j][i]) * v[j][c];
+          v[i] -= l(j, i) * v[j];
       for (int j = 0; j < K; ++j)
-        for (int c = 0; c < R; ++c)
-          z[std::size_t(c0 + j) * R + c] = v[j][c] / double(column_of[j][j]);
+        row_at(z, c0 + j) = v[j] / l(j, j);
       const int end_z = split < 0 ? nrows : (std::max)(split, K);
-      for (int i = K; i < nrows; ++i) {
-        double* out = (i < end_z ? z : target) + std::size_t(row[i]) * R;
-        double update[R] = {};
-        for (int j = 0; j < K; ++j) {
-          const double l = double(column_of[j][i]);
-          for (int c = 0; c < R; ++c)
-            update[c] += l * v[j][c];
-        }
-        for (int c = 0; c < R; ++c)
-          out[c] -= update[c];
-      }
+      for (int i = K; i < nrows; ++i)
+        row_at(i < end_z ? z : target, row[i]) -= l.combination(i, v);
     }
 
     // backward() of a supernode of K columns, in place.
     template <int K>
-    void backward_narrow(int s, double* z) const
+    void backward_narrow(int s, Scalar* z) const
     {
       const int c0 = super[s];
       const int nrows = rows_of(s);
       const int* row = row_list(s);
-      const Value* column_of[K];
+      const Columns<K> l(*this, s, 0);
+      Row sum[K];
       for (int j = 0; j < K; ++j)
-        column_of[j] = column(s, j);
-      if (s > 0) {
-        prefetch_values(s - 1);
-        prefetch_rows(z, s - 1);
-      }
-      double sum[K][R] = {};
+        sum[j].setZero();
       for (int i = K; i < nrows; ++i) {
-        const double* in = z + std::size_t(row[i]) * R;
-        for (int j = 0; j < K; ++j) {
-          const double l = double(column_of[j][i]);
-          for (int c = 0; c < R; ++c)
-            sum[j][c] += l * in[c];
-        }
+        const Row in = row_at(z, row[i]);
+        for (int j = 0; j < K; ++j)
+          sum[j] += l(j, i) * in;
       }
-      double v[K][R];
-      for (int j = K - 1; j >= 0; --j)
-        for (int c = 0; c < R; ++c) {
-          double value = z[std::size_t(c0 + j) * R + c] - sum[j][c];
-          for (int i = j + 1; i < K; ++i)
-            value -= double(column_of[j][i]) * v[i][c];
-          v[j][c] = value;
-        }
-      for (int j = 0; j < K; ++j)
-        for (int c = 0; c < R; ++c)
-          z[std::size_t(c0 + j) * R + c] = v[j][c];
+      for (int j = K - 1; j >= 0; --j) {
+        Row value = row_at(z, c0 + j) - sum[j];
+        for (int i = j + 1; i < K; ++i)
+          value -= l(j, i) * row_at(z, c0 + i);
+        row_at(z, c0 + j) = value;
+      }
     }
 
     // The updates of the rows at positions [k, split) go to z, those at [split, nrows) to
     // `target` (a private copy of the top rows, or z itself when split < 0).
-    void forward(int s, double* z, double* target, int split, double* buffer) const
+    void forward(int s, Scalar* z, Scalar* target, int split, Scalar* buffer) const
     {
       const int c0 = super[s], k = columns_of(s);
       const int nrows = rows_of(s);
@@ -492,46 +528,23 @@ private:
       // in the elimination tree): ask for those of the next supernode while this one is computed.
       if (s + 1 < super_count)
         prefetch_rows(z, s + 1);
-      double* v[R];
-      for (int c = 0; c < R; ++c) {
-        v[c] = buffer + std::size_t(c) * nrows;
-        for (int i = 0; i < k; ++i)
-          v[c][i] = z[std::size_t(c0 + i) * R + c];
-        std::fill(v[c] + k, v[c] + nrows, 0.);
-      }
-      for (int j0 = 0; j0 < k; j0 += panel_width) {
-        const int width = (std::min)(panel_width, k - j0);
-        for (int j = j0; j < j0 + width; ++j) {
-          const Value* l = column(s, j);
-          for (int c = 0; c < R; ++c)
-            for (int i = j + 1; i < j0 + width; ++i)
-              v[c][i] -= double(l[i]) * v[c][j];
-        }
-        with_width(width, [&](auto b) { subtract_panel<decltype(b)::value>(s, nrows, j0, v); });
-      }
-      for (int i = 0; i < k; ++i) {
-        const double d = double(column(s, i)[i]);
-        for (int c = 0; c < R; ++c)
-          z[std::size_t(c0 + i) * R + c] = v[c][i] / d;
-      }
+      std::copy_n(z + std::size_t(c0) * W, std::size_t(k) * W, buffer);
+      std::fill(buffer + std::size_t(k) * W, buffer + std::size_t(nrows) * W, Scalar(0));
+      for (int j0 = 0; j0 < k; j0 += panel_width)
+        with_width((std::min)(panel_width, k - j0),
+                   [&](auto b) { forward_panel<decltype(b)::value>(s, nrows, j0, buffer); });
+      for (int i = 0; i < k; ++i)
+        row_at(z, c0 + i) = row_at(buffer, i) / Scalar(column(s, i)[i]);
       const int end_z = split < 0 ? nrows : (std::max)(split, k);
-      for (int i = k; i < end_z; ++i)
-        for (int c = 0; c < R; ++c)
-          z[std::size_t(row[i]) * R + c] += v[c][i];
-      for (int i = end_z; i < nrows; ++i)
-        for (int c = 0; c < R; ++c)
-          target[std::size_t(row[i]) * R + c] += v[c][i];
+      for (int i = k; i < nrows; ++i)
+        row_at(i < end_z ? z : target, row[i]) += row_at(buffer, i);
     }
 
-    void backward(int s, double* z, double* buffer) const
+    void backward(int s, Scalar* z, Scalar* buffer) const
     {
       const int c0 = super[s], k = columns_of(s);
       const int nrows = rows_of(s);
       const int* row = row_list(s);
-      if (k <= narrow_width) {
-        with_width(k, [&](auto width) { backward_narrow<decltype(width)::value>(s, z); });
-        return;
-      }
       // The sweep runs down through memory, where the hardware prefetchers of common processors
       // do not follow: ask for the values and the rows of the supernode visited next (most often
       // s - 1) while this one is computed.
@@ -539,40 +552,27 @@ private:
         prefetch_values(s - 1);
         prefetch_rows(z, s - 1);
       }
-      double* v[R];
-      for (int c = 0; c < R; ++c) {
-        v[c] = buffer + std::size_t(c) * nrows;
-        for (int i = 0; i < k; ++i)
-          v[c][i] = z[std::size_t(c0 + i) * R + c];
-        for (int i = k; i < nrows; ++i)
-          v[c][i] = z[std::size_t(row[i]) * R + c];
+      if (k <= narrow_width) {
+        with_width(k, [&](auto width) { backward_narrow<decltype(width)::value>(s, z); });
+        return;
       }
-      // The panels of forward(), last first: all the rows below the panel, then its triangle.
-      for (int j0 = (k - 1) / panel_width * panel_width; j0 >= 0; j0 -= panel_width) {
-        const int width = (std::min)(panel_width, k - j0);
-        with_width(width, [&](auto b) { dot_panel<decltype(b)::value>(s, nrows, j0, v); });
-        for (int j = j0 + width - 1; j >= j0; --j) {
-          const Value* l = column(s, j);
-          for (int c = 0; c < R; ++c) {
-            double sum = 0;
-            for (int i = j + 1; i < j0 + width; ++i)
-              sum += double(l[i]) * v[c][i];
-            v[c][j] -= sum;
-          }
-        }
-      }
-      for (int i = 0; i < k; ++i)
-        for (int c = 0; c < R; ++c)
-          z[std::size_t(c0 + i) * R + c] = v[c][i];
+      std::copy_n(z + std::size_t(c0) * W, std::size_t(k) * W, buffer);
+      for (int i = k; i < nrows; ++i)
+        row_at(buffer, i) = row_at(z, row[i]);
+      // The panels of forward(), last first.
+      for (int j0 = (k - 1) / panel_width * panel_width; j0 >= 0; j0 -= panel_width)
+        with_width((std::min)(panel_width, k - j0),
+                   [&](auto b) { backward_panel<decltype(b)::value>(s, nrows, j0, buffer); });
+      std::copy_n(buffer, std::size_t(k) * W, z + std::size_t(c0) * W);
     }
 
     // The rows of supernode s below its own columns.
-    void prefetch_rows(const double* z, int s) const
+    void prefetch_rows(const Scalar* z, int s) const
     {
 #if defined(__GNUC__) || defined(__clang__)
       const int* row = row_list(s);
       for (int i = columns_of(s); i < rows_of(s); ++i)
-        __builtin_prefetch(z + std::size_t(row[i]) * R);
+        __builtin_prefetch(z + std::size_t(row[i]) * W);
 #else
       (void)z;
       (void)s;
@@ -592,55 +592,42 @@ private:
 #endif
     }
 
-    // v[c][i] -= sum over the panel's columns b of L(i, j + b) v[c][j + b], for the rows i below
-    // the panel: no sum runs across rows, so the loop over i vectorizes as it stands.
+    // The panel of columns [j, j + B) of the gathered rows v: its triangle, then
+    // v[i] -= sum over b of L(i, j + b) v[j + b] for every row i below it.
     template <int B>
-    void subtract_panel(int s, int nrows, int j, double* const* v) const
+    void forward_panel(int s, int nrows, int j, Scalar* v) const
     {
-      const Value* __restrict l[B];
-      double p[B][R];
-      for (int b = 0; b < B; ++b) {
-        l[b] = column(s, j + b);
-        for (int c = 0; c < R; ++c)
-          p[b][c] = v[c][j + b];
-      }
-      for (int c = 0; c < R; ++c) {
-        double* __restrict vc = v[c];
-        for (int i = j + B; i < nrows; ++i) {
-          double update = 0;
-          for (int b = 0; b < B; ++b)
-            update += double(l[b][i]) * p[b][c];
-          vc[i] -= update;
-        }
-      }
+      const Columns<B> l(*this, s, j);
+      for (int b = 0; b < B; ++b)
+        for (int i = b + 1; i < B; ++i)
+          row_at(v, j + i) -= l(b, j + i) * row_at(v, j + b);
+      Row p[B];
+      for (int b = 0; b < B; ++b)
+        p[b] = row_at(v, j + b);
+      for (int i = j + B; i < nrows; ++i)
+        row_at(v, i) -= l.combination(i, p);
     }
 
-    // v[c][j + b] -= sum over the rows i below the panel of L(i, j + b) v[c][i], for the panel's
-    // columns b: even and odd rows summed apart, two lanes written out so that a compiler that
-    // may not reorder a floating-point sum still pairs them.
+    // backward of the panel of columns [j, j + B): v[j + b] -= sum over the rows i below the
+    // panel of L(i, j + b) v[i], then the panel's triangle, last column first.
     template <int B>
-    void dot_panel(int s, int nrows, int j, double* const* v) const
+    void backward_panel(int s, int nrows, int j, Scalar* v) const
     {
-      const Value* __restrict l[B];
+      const Columns<B> l(*this, s, j);
+      Row sum[B];
       for (int b = 0; b < B; ++b)
-        l[b] = column(s, j + b);
-      double sum[B][R][2] = {};
-      int i = j + B;
-      for (; i + 1 < nrows; i += 2)
-        for (int c = 0; c < R; ++c) {
-          const double* __restrict vc = v[c];
-          for (int b = 0; b < B; ++b) {
-            sum[b][c][0] += double(l[b][i]) * vc[i];
-            sum[b][c][1] += double(l[b][i + 1]) * vc[i + 1];
-          }
-        }
-      if (i < nrows)
-        for (int c = 0; c < R; ++c)
-          for (int b = 0; b < B; ++b)
-            sum[b][c][0] += double(l[b][i]) * v[c][i];
-      for (int b = 0; b < B; ++b)
-        for (int c = 0; c < R; ++c)
-          v[c][j + b] -= sum[b][c][0] + sum[b][c][1];
+        sum[b].setZero();
+      for (int i = j + B; i < nrows; ++i) {
+        const Row in = row_at(v, i);
+        for (int b = 0; b < B; ++b)
+          sum[b] += l(b, i) * in;
+      }
+      for (int b = B - 1; b >= 0; --b) {
+        Row value = row_at(v, j + b) - sum[b];
+        for (int i = b + 1; i < B; ++i)
+          value -= l(b, j + i) * row_at(v, j + i);
+        row_at(v, j + b) = value;
+      }
     }
   };
 
@@ -656,8 +643,8 @@ private:
   Elimination_subtrees m_subtrees;
   bool m_parallel = false;
   std::size_t m_largest_supernode_rows = 0;
-  mutable std::vector<double> m_work;
-  mutable std::vector<std::vector<double>> m_buffers;
+  mutable Workspace<double> m_double_workspace;
+  mutable Workspace<float> m_single_workspace;
 };
 
 } // namespace internal
