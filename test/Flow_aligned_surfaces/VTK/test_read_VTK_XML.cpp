@@ -724,6 +724,28 @@ TEST(ReadVTKXML, ShortAppendedCompressionHeadersAreRefused)
        "corrupt file"});
 }
 
+// Found by the fuzzer (fuzz/corpus/VTK_XML/vts_appended_offset_beyond_long_long.vts, which VTK
+// 9.1 parses and ParaView's VTK 9.2 refuses for its byte_order): an appended offset of 61 digits
+// saturated strtoll, and adding it to the appended data's position overflowed.  An offset outside
+// the file is refused with its value, whatever its size.
+TEST(ReadVTKXML, AppendedOffsetsOutsideTheFileAreRefused)
+{
+  const std::string file = temporary("compressed_offsets.vtu");
+  write_with_VTK<vtkXMLUnstructuredGridWriter>(mixed_mesh().grid, file); // zlib, base64 appended
+  const std::string good = read_bytes(file);
+  const std::size_t first = good.find("offset=\"0\"");
+  ASSERT_NE(first, std::string::npos);
+  const std::string beyond = temporary("offset_beyond_the_file.vtu");
+  for (const std::string& offset : {std::string("99999999"), "4" + std::string(59, '2') + "40"}) {
+    write_bytes(beyond, good.substr(0, first) + "offset=\"" + offset + "\"" + good.substr(first + 10));
+    const std::string size = std::to_string(good.size() + offset.size() - 1);
+    // At most 40 digits are shown.
+    const std::string shown = offset.size() > 40 ? offset.substr(0, 40) + "..." : offset;
+    expect_read_fails<Cells>(beyond, {"the compressed DataArray 'velocity' has the offset \"" + shown +
+                                      "\", outside the " + size + " bytes of the file (corrupt file)"});
+  }
+}
+
 TEST(ReadVTKXML, UnsupportedCellsAreNamed)
 {
   Mixed_mesh m = mixed_mesh();

@@ -38,6 +38,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -386,8 +387,20 @@ inline void check_VTK_XML_compression_headers(const VTK_XML_context& c, vtkXMLDa
       const char* offset = e->GetAttribute("offset");
       if (appended == nullptr || offset == nullptr)
         continue; // VTK reports what is missing
-      position =
-          static_cast<long long>(parser->GetAppendedDataPosition()) + std::strtoll(offset, nullptr, 10);
+      // An offset outside the file holds no header; one beyond long long (found by fuzzing: 61
+      // digits) saturates strtoll, and the sum would overflow.
+      const long long start = static_cast<long long>(parser->GetAppendedDataPosition());
+      errno = 0;
+      const long long shift = std::strtoll(offset, nullptr, 10);
+      const double where_in_file = double(start) + double(shift);
+      if (errno == ERANGE || where_in_file < 0. || where_in_file > file_bytes) {
+        const std::string shown = std::string(offset).substr(0, 40);
+        c.fail("byte " + std::to_string(e->GetXMLByteIndex()) + ": the compressed DataArray '" +
+               (e->GetAttribute("Name") ? e->GetAttribute("Name") : "") + "' has the offset \"" + shown +
+               (shown.size() < std::strlen(offset) ? "...\"" : "\"") + ", outside the " +
+               std::to_string(static_cast<long long>(file_bytes)) + " bytes of the file (corrupt file)");
+      }
+      position = start + shift;
       base64 = appended_base64;
     }
     else {
