@@ -26,7 +26,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <numeric>
-#include <type_traits>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -71,7 +71,7 @@ public:
       return;
     }
     const std::size_t n = std::size_t(m_super[m_nsuper]) * std::size_t(width);
-    std::vector<std::vector<Scalar>>& private_rows = private_rows_in<Scalar>();
+    std::vector<std::vector<Scalar>>& private_rows = std::get<std::vector<std::vector<Scalar>>>(m_private);
     private_rows.resize(m_groups.size());
     for_each_group([&](std::size_t g) {
       std::vector<Scalar>& buffer = private_rows[g];
@@ -144,16 +144,6 @@ private:
 
   int rows_of(int s) const { return m_pi[s + 1] - m_pi[s]; }
   int columns_of(int s) const { return m_super[s + 1] - m_super[s]; }
-
-  // The groups' private copies of the rows, in `Scalar` (double or float).
-  template <class Scalar>
-  std::vector<std::vector<Scalar>>& private_rows_in() const
-  {
-    if constexpr (std::is_same<Scalar, float>::value)
-      return m_private_single;
-    else
-      return m_private;
-  }
 
   void cut()
   {
@@ -264,8 +254,8 @@ private:
   std::vector<int> m_split; // per supernode of a group: first position of a row outside its subtree
   double m_top_fraction = 0;
   bool m_parallel = false;
-  mutable std::vector<std::vector<double>> m_private;
-  mutable std::vector<std::vector<float>> m_private_single;
+  // The groups' private copies of the rows, in double or in float.
+  mutable std::tuple<std::vector<std::vector<double>>, std::vector<std::vector<float>>> m_private;
 };
 
 } // namespace internal

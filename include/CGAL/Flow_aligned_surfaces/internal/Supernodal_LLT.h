@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -327,21 +328,12 @@ private:
   static constexpr int row_width(int R) { return R == 3 ? 4 : R; }
 
   // The rows of the right-hand side being swept and the gather buffers, in `Scalar`: kept from
-  // one solve to the next (no allocation per solve), one set per arithmetic.
+  // one solve to the next (no allocation per solve), one set per arithmetic (m_workspaces).
   template <class Scalar>
   struct Workspace {
     std::vector<Scalar> rows;
     std::vector<std::vector<Scalar>> buffers; // one per group of subtrees, one more for the top
   };
-
-  template <class Scalar>
-  Workspace<Scalar>& workspace() const
-  {
-    if constexpr (std::is_same<Scalar, float>::value)
-      return m_single_workspace;
-    else
-      return m_double_workspace;
-  }
 
   // Columns [first, first + R) of b, solved by the factor's values in precision `Value` with
   // arithmetic in `Scalar`; dest(i, c) = result(i, c, the solution's entry).
@@ -354,7 +346,7 @@ private:
     const int n = int(factor->n);
     const int* perm = static_cast<const int*>(factor->Perm);
     // Interleaved: the values of a row side by side, as the sweeps use them.
-    std::vector<Scalar>& rows = workspace<Scalar>().rows;
+    std::vector<Scalar>& rows = std::get<Workspace<Scalar>>(m_workspaces).rows;
     rows.resize(std::size_t(n) * W);
     Scalar* z = rows.data();
     for (int i = 0; i < n; ++i) {
@@ -384,7 +376,7 @@ private:
                           values<Value>(),
                           int(number_of_supernodes())};
     // One gather buffer per group of subtrees (and one more for the top).
-    std::vector<std::vector<Scalar>>& buffers = workspace<Scalar>().buffers;
+    std::vector<std::vector<Scalar>>& buffers = std::get<Workspace<Scalar>>(m_workspaces).buffers;
     buffers.resize(std::size_t(Elimination_subtrees::number_of_groups + 1));
     for (std::vector<Scalar>& buffer : buffers)
       buffer.resize(Sweeper::buffer_size(m_largest_supernode_rows));
@@ -643,8 +635,7 @@ private:
   Elimination_subtrees m_subtrees;
   bool m_parallel = false;
   std::size_t m_largest_supernode_rows = 0;
-  mutable Workspace<double> m_double_workspace;
-  mutable Workspace<float> m_single_workspace;
+  mutable std::tuple<Workspace<double>, Workspace<float>> m_workspaces;
 };
 
 } // namespace internal
