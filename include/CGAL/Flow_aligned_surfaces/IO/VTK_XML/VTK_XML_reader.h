@@ -381,6 +381,9 @@ inline void check_VTK_XML_compression_headers(const VTK_XML_context& c, vtkXMLDa
       continue;
     if (std::string(format) == "ascii")
       continue;
+    const std::string array = "byte " + std::to_string(e->GetXMLByteIndex()) +
+                              ": the compressed DataArray '" +
+                              (e->GetAttribute("Name") ? e->GetAttribute("Name") : "") + "'";
     long long position = 0;
     bool base64 = true;
     if (std::string(format) == "appended") {
@@ -395,10 +398,9 @@ inline void check_VTK_XML_compression_headers(const VTK_XML_context& c, vtkXMLDa
       const double where_in_file = double(start) + double(shift);
       if (errno == ERANGE || where_in_file < 0. || where_in_file > file_bytes) {
         const std::string shown = std::string(offset).substr(0, 40);
-        c.fail("byte " + std::to_string(e->GetXMLByteIndex()) + ": the compressed DataArray '" +
-               (e->GetAttribute("Name") ? e->GetAttribute("Name") : "") + "' has the offset \"" + shown +
-               (shown.size() < std::strlen(offset) ? "...\"" : "\"") + ", outside the " +
-               std::to_string(static_cast<long long>(file_bytes)) + " bytes of the file (corrupt file)");
+        c.fail(array + " has the offset \"" + shown + (shown.size() < std::strlen(offset) ? "...\"" : "\"") +
+               ", outside the " + std::to_string(static_cast<long long>(file_bytes)) +
+               " bytes of the file (corrupt file)");
       }
       position = start + shift;
       base64 = appended_base64;
@@ -414,15 +416,11 @@ inline void check_VTK_XML_compression_headers(const VTK_XML_context& c, vtkXMLDa
     if (head.size() < 3 * word) {
       // Inline, VTK would decode a header from what follows; appended, it allocates from the
       // words of a short read (found by fuzzing: padding inside the header, 3e9 blocks).
-      c.fail("byte " + std::to_string(e->GetXMLByteIndex()) + ": the compressed DataArray '" +
-             (e->GetAttribute("Name") ? e->GetAttribute("Name") : "") +
-             "' has no complete compression header in its " + (inline_array ? "inline" : "appended") +
+      c.fail(array + " has no complete compression header in its " + (inline_array ? "inline" : "appended") +
              " data (corrupt file)");
     }
     const double blocks = number(head, 0), block_size = number(head, 1), last_size = number(head, 2);
-    const std::string where = "byte " + std::to_string(e->GetXMLByteIndex()) +
-                              ": the compressed DataArray '" +
-                              (e->GetAttribute("Name") ? e->GetAttribute("Name") : "") + "' announces ";
+    const std::string where = array + " announces ";
     std::ostringstream msg;
     if (blocks * double(word) > file_bytes) {
       msg << where << blocks << " blocks, whose sizes alone need more than the " << file_bytes
