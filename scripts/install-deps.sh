@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Usage: scripts/install-deps.sh [--debian-vtk]
+# Usage: scripts/install-deps.sh [--debian-vtk] [--check]
 #
 # Installs every dependency of Flow_aligned_surfaces from Debian's packages.
 #
@@ -8,11 +8,21 @@
 #   scripts/install-deps.sh --debian-vtk  Debian's VTK 9.1 (libvtk9-dev) instead of ParaView: the
 #                                         same without the plugin, for a machine that keeps
 #                                         python3-vtk9
+#   scripts/install-deps.sh --check       lists what is missing or outdated, installs nothing
+#                                         (exit status 1 when something is); with --debian-vtk,
+#                                         for that set
 #
 #   scripts/install-deps.sh --help        this help
 #
 # Idempotent: packages already present are skipped, and apt is not touched at all when
 # everything is there (one dpkg-query call checks them all, in a fraction of a second).
+#
+# Current, not only present: libexpat1 is brought to the distribution's current version (an
+# upgrade, never a removal).  Its security updates change what ParaView 5.11's VTK can parse
+# (2.5.0-1+deb12u2 and later: no VTK XML file with appended data), and a fresh machine gets the
+# current one, so the project's own machines must see what its users' machines see.  "Current"
+# is the version apt's package lists offer; they are refreshed (apt-get update) whenever this
+# script installs something.
 #
 # It never removes a package.  apt-get install can remove packages silently to resolve a
 # conflict: on Debian bookworm, python3-paraview (ParaView's Python, needed to build a plugin)
@@ -25,11 +35,14 @@ source "$(dirname "$0")/lib/help.sh"
 exit_if_help_asked "$@"
 
 vtk_set=paraview
-case "${1:-}" in
-  "") ;;
-  --debian-vtk) vtk_set=debian ;;
-  *) echo "usage: scripts/install-deps.sh [--debian-vtk] (--help says more)" >&2; exit 2 ;;
-esac
+check_only=0
+for arg in "$@"; do
+  case "$arg" in
+    --debian-vtk) vtk_set=debian ;;
+    --check) check_only=1 ;;
+    *) echo "usage: scripts/install-deps.sh [--debian-vtk] [--check] (--help says more)" >&2; exit 2 ;;
+  esac
+done
 
 packages=(
   cmake g++ make pkg-config ccache
@@ -42,7 +55,7 @@ packages=(
   libsuitesparse-dev                    # CHOLMOD sparse Cholesky
   libopenblas-dev                       # an optimized BLAS for CHOLMOD (Debian defaults to the reference one)
   libtbb-dev                            # parallel loops
-  zlib1g-dev                            # compressed AmiraMesh (HxZip) and NRRD (gzip) data, optional
+  zlib1g-dev liblz4-dev liblzma-dev     # compressed VTK XML (zlib, LZ4, LZMA), AmiraMesh (HxZip) and NRRD (gzip) data
   libpng-dev                            # PNG textures, optional
   libx11-dev xvfb xauth                 # the demo's pictures off screen (VTK under Xvfb where no display exists)
   libgtest-dev libgmock-dev libbenchmark-dev
@@ -58,20 +71,40 @@ if [ "$vtk_set" = paraview ]; then
     libqt5svg5                               # the GUI's icons
     # What ParaView's CMake package and its VTK modules look for (paraview-dev does not depend on them):
     libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev
-    libexpat1-dev liblzma-dev liblz4-dev libdouble-conversion-dev libutfcpp-dev python3-dev
-    libglew-dev libgl-dev libjpeg-dev libtiff-dev
+    libexpat1-dev libdouble-conversion-dev libutfcpp-dev python3-dev
+    libglew-dev libgl-dev libjpeg-dev libtiff-dev libfreetype-dev
   )
 else
   packages+=(libvtk9-dev)                    # VTK 9.1: XML readers (.vti, .vtu, .vts, .pvd), the VTK tests, the demo's pictures
 fi
 
-# Which packages are installed, in one dpkg-query call (a call per package took 2 s): its lines
-# are "NAME WANT OK STATUS"; unknown names are left out (with an exit status of 1).
-declare -A is_installed=()
-while read -r name _ _ status; do
-  if [ "$status" = installed ]; then is_installed[$name]=1; fi
-done < <(dpkg-query -W -f='${Package} ${Status}\n' "${packages[@]}" python3-paraview libvtk9-dev 2>/dev/null || true)
+# Kept at the distribution's current version where installed (see the opening comment); the
+# -dev package goes with its library, whose exact version it depends on.
+kept_current=(libexpat1 libexpat1-dev)
+
+# Which packages are installed, and their versions, in one dpkg-query call (a call per package
+# took 2 s): its lines are "NAME VERSION WANT OK STATUS"; unknown names are left out (with an
+# exit status of 1).
+declare -A is_installed=() installed_version=()
+while read -r name version _ _ status; do
+  if [ "$status" = installed ]; then is_installed[$name]=1; installed_version[$name]=$version; fi
+done < <(dpkg-query -W -f='${Package} ${Version} ${Status}\n' "${packages[@]}" "${kept_current[@]}" \
+           python3-paraview libvtk9-dev 2>/dev/null || true)
 installed() { [ -n "${is_installed[$1]:-}" ]; }
+
+# The installed packages of kept_current older than the version apt's package lists offer
+# (read from the lists on disk: no download), as "NAME INSTALLED CANDIDATE" lines.
+outdated_packages() {
+  local p candidate
+  for p in "${kept_current[@]}"; do
+    installed "$p" || continue
+    candidate=$(apt-cache policy "$p" 2>/dev/null | awk '$1 == "Candidate:" { print $2 }')
+    if [ -n "$candidate" ] && [ "$candidate" != "(none)" ] &&
+       dpkg --compare-versions "${installed_version[$p]}" lt "$candidate"; then
+      echo "$p ${installed_version[$p]} $candidate"
+    fi
+  done
+}
 
 # --debian-vtk where ParaView's Python is there: keep it, and leave Debian's VTK out (its
 # python3-vtk9 conflicts).
@@ -91,27 +124,58 @@ for p in "${packages[@]}"; do
   fi
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
+outdated=$(outdated_packages)
+
+if [ "$check_only" = 1 ]; then
+  if [ ${#missing[@]} -eq 0 ] && [ -z "$outdated" ]; then
+    echo "install-deps --check: all dependencies present and current"
+    exit 0
+  fi
+  if [ ${#missing[@]} -gt 0 ]; then
+    echo "install-deps --check: missing: ${missing[*]}"
+  fi
+  while read -r p have offered; do
+    [ -n "$p" ] && echo "install-deps --check: outdated: $p $have is installed, $offered is current"
+  done <<< "$outdated"
+  rerun=scripts/install-deps.sh
+  if [ "$vtk_set" = debian ]; then rerun+=" --debian-vtk"; fi
+  echo "install-deps --check: nothing installed; $rerun installs and upgrades them"
+  exit 1
+fi
+
+if [ ${#missing[@]} -eq 0 ] && [ -z "$outdated" ]; then
   echo "install-deps: all dependencies present"
   exit 0
 fi
 
-echo "install-deps: installing ${missing[*]}"
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 
+# The refreshed lists may offer newer versions than the old ones did.
+outdated=$(outdated_packages)
+upgrades=()
+while read -r p _; do
+  if [ -n "$p" ]; then upgrades+=("$p"); fi
+done <<< "$outdated"
+wanted=("${missing[@]}" "${upgrades[@]}")
+if [ ${#wanted[@]} -eq 0 ]; then
+  echo "install-deps: all dependencies present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]:-nothing new}${upgrades[*]:+; upgrading ${upgrades[*]}}"
+
 # Simulate first: "Remv <package> [...]" lines are what a real run would remove.
-simulation=$(apt-get install -s --no-install-recommends "${missing[@]}" 2>&1) || {
-  echo "install-deps: apt cannot install ${missing[*]}:" >&2
+simulation=$(apt-get install -s --no-install-recommends "${wanted[@]}" 2>&1) || {
+  echo "install-deps: apt cannot install ${wanted[*]}:" >&2
   echo "$simulation" >&2
   exit 1
 }
 removals=$(printf '%s\n' "$simulation" | awk '$1 == "Remv" { print $2 }')
 if [ -n "$removals" ]; then
   {
-    echo "install-deps: stopped, nothing installed: installing ${missing[*]} would REMOVE these packages:"
+    echo "install-deps: stopped, nothing installed: installing ${wanted[*]} would REMOVE these packages:"
     printf '  %s\n' $removals
     if printf '%s\n' $removals | grep -qx python3-vtk9; then
       echo "python3-vtk9 (pulled in by libvtk9-dev) and python3-paraview cannot be installed together."
@@ -122,4 +186,4 @@ if [ -n "$removals" ]; then
   } >&2
   exit 1
 fi
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+$SUDO apt-get install -y -qq --no-install-recommends "${wanted[@]}"
