@@ -1,9 +1,11 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The demo's VTP files (a surface mesh, or polylines, with point and cell arrays), written the way
-// ParaView writes its own: through VTK's vtkXMLPolyDataWriter, binary, appended, zlib-compressed,
-// with the array that ParaView colours by flagged as the active scalars.  That needs VTK's XML
+// The demo's VTP files (a surface mesh, or polylines, with point and cell arrays), written through
+// VTK's vtkXMLPolyDataWriter, binary and zlib-compressed, with the array that ParaView colours by
+// flagged as the active scalars.  The binary data are inline (base64 in each DataArray), not
+// appended: ParaView 5.11's VTK cannot parse appended data with the expat of an up-to-date
+// Debian bookworm, and every VTK reads inline data.  That needs VTK's XML
 // I/O (the package's target CGAL::Flow_aligned_surfaces_VTK defines
 // CGAL_FLOW_ALIGNED_SURFACES_USE_VTK); a demo program built without it writes the same arrays
 // through the package's own writer, as ASCII, without the active-scalars flag.  Either way the
@@ -46,7 +48,7 @@ struct Active_scalars {
   std::string cell_array;
 };
 
-/// Whether this build writes VTP through VTK (binary, appended, compressed) rather than ASCII.
+/// Whether this build writes VTP through VTK (binary, inline, compressed) rather than ASCII.
 constexpr bool writes_binary_VTP()
 {
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_VTK
@@ -85,8 +87,7 @@ inline bool write_VTK_polydata(const std::string& filename, vtkPolyData* polydat
   auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
   writer->SetFileName(partial.c_str());
   writer->SetInputData(polydata);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff(); // raw bytes, not base64
+  writer->SetDataModeToBinary(); // inline: readable by ParaView 5.11 whatever the expat
   writer->SetCompressor(vtkSmartPointer<vtkZLibDataCompressor>::New());
   if (writer->Write() != 1) {
     std::remove(partial.c_str());

@@ -23,6 +23,10 @@ if len(sys.argv) != 4:
 plugin, data_file, output_dir = sys.argv[1:4]
 os.makedirs(output_dir, exist_ok=True)
 LoadPlugin(plugin, remote=False, ns=globals())
+# The VTP files with their data inline (base64, compressed), not appended as ParaView writes by
+# default: ParaView 5.11's VTK cannot parse appended data with the expat of an up-to-date Debian
+# bookworm, and every VTK reads inline data.
+INLINE = {"DataMode": "Binary", "CompressorType": "ZLib"}
 
 data = LegacyVTKReader(FileNames=[data_file])
 # The obstacle: where the fluid mask 'inside' changes (the cylinder's wall).
@@ -42,7 +46,7 @@ for name, alignment, normal in [("tangential", "Tangential (stream surface)", [0
     surface.Alignment = alignment
     surface.NumberOfIterations = 100
     surface.UpdatePipeline(100)
-    SaveData(os.path.join(output_dir, name + ".vtp"), proxy=surface)
+    SaveData(os.path.join(output_dir, name + ".vtp"), proxy=surface, **INLINE)
     result = servermanager.Fetch(surface)
     flux = result.GetFieldData().GetArray("normalized_flux").GetValue(0)
     iterations = result.GetFieldData().GetArray("iteration").GetValue(0)
@@ -62,8 +66,8 @@ streams.IntegrationDirection = "Both"
 streams.ArcLengthTimeLines = 1
 streams.MaxLength = 0.3
 streams.UpdatePipeline()
-SaveData(os.path.join(output_dir, "seed_curves.vtp"), proxy=OutputPort(seeds, 1))
-SaveData(os.path.join(output_dir, "stream_surfaces.vtp"), proxy=streams)
+SaveData(os.path.join(output_dir, "seed_curves.vtp"), proxy=OutputPort(seeds, 1), **INLINE)
+SaveData(os.path.join(output_dir, "stream_surfaces.vtp"), proxy=streams, **INLINE)
 stream_output = servermanager.Fetch(streams)
 print("stream surfaces: %d triangles from %d seed curves" % (
     stream_output.GetNumberOfCells(), servermanager.Fetch(OutputPort(seeds, 1)).GetNumberOfCells()))

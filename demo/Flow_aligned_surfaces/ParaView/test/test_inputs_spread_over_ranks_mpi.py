@@ -126,6 +126,7 @@ polyline.SetLines(segments)
 writer = vtkXMLPolyDataWriter()
 writer.SetFileName(line_vtp)
 writer.SetInputData(polyline)
+writer.SetDataModeToBinary()  # inline: ParaView 5.11 cannot parse appended data with the current expat
 writer.Write()
 reference_vtp = setup.path("line_surface.vtp")
 setup.run_reference("stream", setup.field(), seeds_txt, reference_vtp, "defaults")

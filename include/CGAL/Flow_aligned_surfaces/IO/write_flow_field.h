@@ -4,7 +4,7 @@
 // Writes a `Regular_grid_flow_field_3` as a legacy VTK file (`DATASET STRUCTURED_POINTS`,
 // `VECTORS velocity float`, and the node mask as `SCALARS inside unsigned_char`), BINARY
 // (big-endian) or ASCII, or as a VTK XML ImageData file (`.vti`: the same arrays as Float32 and
-// UInt8, raw little-endian binary in an appended block), which ParaView, VisIt,
+// UInt8, little-endian binary inline in base64), which ParaView, VisIt,
 // `read_VTK_flow_field()` and `read_VTK_XML_flow_field()` open.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_FLOW_FIELD_H
@@ -13,6 +13,7 @@
 #include <string>
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/base64_streambuf.h>
 #include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -47,6 +48,22 @@ inline void write_float32s(std::ostream& os, const std::vector<float>& values, b
       block.clear();
     }
   }
+}
+
+// The inline content of a binary VTK XML DataArray without compression: its size in bytes
+// (UInt64, little-endian) and its bytes, written by `write_bytes`, all in one base64 stream.
+template <class Write_bytes>
+void write_VTK_XML_inline_array(std::ostream& os, std::uint64_t bytes, const Write_bytes& write_bytes)
+{
+  Base64_streambuf base64(os);
+  std::ostream encoded(&base64);
+  unsigned char size[8];
+  for (int i = 0; i < 8; ++i)
+    size[i] = static_cast<unsigned char>(bytes >> (8 * i));
+  encoded.write(reinterpret_cast<const char*>(size), 8);
+  write_bytes(encoded);
+  encoded.flush();
+  base64.finish();
 }
 
 // The mask as bytes 1 (fluid) and 0 (solid).
@@ -199,9 +216,10 @@ The file holds an `ImageData` with `WholeExtent` `0 nx-1 0 ny-1 0 nz-1` and the 
 `Origin` and `Spacing` (17 significant digits, so they read back exactly), one `Piece` whose
 point data holds the velocity as a 3-component `Float32` array (the active vectors) and, if
 the field has a mask, the mask as a `UInt8` array (1 = fluid, 0 = solid).  The arrays are
-stored raw, little-endian, in the file's `AppendedData` block (`encoding="raw"`,
-`header_type="UInt64"`: each array is preceded by its size in bytes), the most compact form
-VTK reads; no compression.  The file is first written beside `filename` and renamed over it
+stored inline in base64, little-endian (`format="binary"`, `header_type="UInt64"`: each array
+is preceded by its size in bytes), without compression.  Every VTK reads this form, also
+ParaView 5.11 on an up-to-date Debian bookworm, whose VTK cannot parse appended data with the
+current expat (the manual's ParaView pages say more).  The file is first written beside `filename` and renamed over it
 only when complete, so an existing file is never left half-written.  VTK is not needed.
 
 \tparam K a model of `Kernel`
@@ -281,8 +299,6 @@ bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_f
   };
   const auto& n = field.dimensions();
   const std::vector<float>& values = field.values();
-  const std::uint64_t velocity_bytes = 4 * static_cast<std::uint64_t>(values.size());
-  const std::uint64_t mask_offset = 8 + velocity_bytes;
 
   std::string reason;
   const bool written =
@@ -303,30 +319,24 @@ bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_f
           os << " Scalars=\"" << escaped(mask_name) << '"';
         os << ">\n"
            << "        <DataArray type=\"Float32\" Name=\"" << escaped(velocity_name)
-           << "\" NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/>\n";
-        if (!mask.empty())
+           << "\" NumberOfComponents=\"3\" format=\"binary\">\n          ";
+        internal::write_VTK_XML_inline_array(os, 4 * static_cast<std::uint64_t>(values.size()),
+                                             [&](std::ostream& bytes) { internal::write_float32s(bytes, values, false); });
+        os << "\n        </DataArray>\n";
+        if (!mask.empty()) {
+          const std::vector<unsigned char> flags = internal::mask_flags(mask);
           os << "        <DataArray type=\"UInt8\" Name=\"" << escaped(mask_name)
-             << "\" NumberOfComponents=\"1\" format=\"appended\" offset=\"" << mask_offset << "\"/>\n";
+             << "\" NumberOfComponents=\"1\" format=\"binary\">\n          ";
+          internal::write_VTK_XML_inline_array(os, flags.size(), [&](std::ostream& bytes) {
+            bytes.write(reinterpret_cast<const char*>(flags.data()), static_cast<std::streamsize>(flags.size()));
+          });
+          os << "\n        </DataArray>\n";
+        }
         os << "      </PointData>\n"
            << "      <CellData>\n      </CellData>\n"
            << "    </Piece>\n"
            << "  </ImageData>\n"
-           << "  <AppendedData encoding=\"raw\">\n   _";
-        // Each block: its size in bytes (UInt64, little-endian), then the values.
-        auto write_size = [&os](std::uint64_t size) {
-          unsigned char b[8];
-          for (int i = 0; i < 8; ++i)
-            b[i] = static_cast<unsigned char>(size >> (8 * i));
-          os.write(reinterpret_cast<const char*>(b), 8);
-        };
-        write_size(velocity_bytes);
-        internal::write_float32s(os, values, false);
-        if (!mask.empty()) {
-          const std::vector<unsigned char> flags = internal::mask_flags(mask);
-          write_size(flags.size());
-          os.write(reinterpret_cast<const char*>(flags.data()), static_cast<std::streamsize>(flags.size()));
-        }
-        os << "\n  </AppendedData>\n</VTKFile>\n";
+           << "</VTKFile>\n";
       });
   return written ? true : fail(reason);
 }
