@@ -3,6 +3,9 @@
 # - each NAME_iterations.pvd lists exactly the files of NAME_iterations/, all of which exist,
 #   one per iteration of NAME_flux.csv (its rows with a time) plus the initial patch, with the
 #   time steps 0, 1, 2, ... (PVDReader reports as many);
+# - every VTP file the job wrote (its iteration steps included) is read by ParaView's own VTK
+#   reader, on this machine's expat, without an error and with points (appended data would not
+#   be, with the expat of an up-to-date Debian bookworm);
 # - open_in_paraview.py, run with --screenshot, opens every output the job wrote (a source per
 #   .vtp and .pvd), colours by normalized_flux over [0, 1], and writes one picture per
 #   alignment that is not blank.
@@ -15,7 +18,9 @@ import sys
 import xml.etree.ElementTree as ET
 
 from paraview.simple import *
+from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
 from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 align_patch, out = sys.argv[1], sys.argv[2]
 shutil.rmtree(out, ignore_errors=True)
@@ -44,6 +49,20 @@ for name in ('tangential', 'orthogonal'):
     reader.UpdatePipelineInformation()
     check(len(reader.TimestepValues) == len(listed), 'PVDReader sees %d time steps' % len(reader.TimestepValues))
     Delete(reader)
+
+# Every VTP file, read by ParaView's VTK with its messages captured.
+messages = vtkStringOutputWindow()
+vtkOutputWindow.SetInstance(messages)
+vtp_files = [os.path.join(folder, f) for folder, _, files in os.walk(out) for f in files if f.endswith('.vtp')]
+check(len(vtp_files) > 10, 'only %d VTP files written' % len(vtp_files))
+for vtp in vtp_files:
+    check('format="appended"' not in open(vtp, 'rb').read().decode('latin-1'), vtp + ' has appended data')
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(vtp)
+    reader.Update()
+    check(reader.GetOutput().GetNumberOfPoints() > 0 and 'ERROR' not in messages.GetOutput(),
+          "ParaView's VTK cannot read %s: %s" % (vtp, messages.GetOutput()[:300]))
+print('%d VTP files read by ParaView\'s VTK' % len(vtp_files))
 
 # The script, as a user runs it.
 sys.argv = [os.path.join(out, 'open_in_paraview.py'), '--screenshot', os.path.join(out, 'paraview')]
