@@ -321,7 +321,7 @@ private:
              std::to_string(block_size));
     const double total = blocks == 0 ? 0. : double(block_size) * double(blocks - 1) + double(last_size ? last_size : block_size);
     if (total < double(needed))
-      refuse("holds " + std::to_string(total) + " bytes in " + std::to_string(blocks) + " blocks but the array needs " +
+      refuse("holds " + number_string(total) + " bytes in " + std::to_string(blocks) + " blocks but the array needs " +
              std::to_string(needed));
     std::vector<std::size_t> starts(blocks + 1, 3 * w + blocks * w);
     for (std::size_t b = 0; b < blocks; ++b) {
