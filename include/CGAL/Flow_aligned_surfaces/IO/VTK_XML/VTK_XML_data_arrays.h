@@ -26,6 +26,7 @@
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -260,11 +261,16 @@ private:
     return *storage;
   }
 
+  // Header word i of `stream`, assembled as an integer (a double would round 2^64 - 1 up to
+  // 2^64, which no integer holds); a word beyond size_t saturates.
   std::size_t word(std::string_view stream, std::size_t i) const
   {
-    return static_cast<std::size_t>(decode_binary_number(m_format.word == 8 ? Binary_type::UINT64 : Binary_type::UINT32,
-                                                         m_format.order,
-                                                         reinterpret_cast<const unsigned char*>(stream.data()) + i * m_format.word));
+    const unsigned char* p = reinterpret_cast<const unsigned char*>(stream.data()) + i * m_format.word;
+    std::uint64_t u = 0;
+    for (std::size_t b = 0; b < m_format.word; ++b)
+      u = (u << 8) | p[m_format.order == Byte_order::BIG_ENDIAN_ORDER ? b : m_format.word - 1 - b];
+    return u > std::uint64_t((std::numeric_limits<std::size_t>::max)()) ? (std::numeric_limits<std::size_t>::max)()
+                                                                       : static_cast<std::size_t>(u);
   }
 
   std::string_view uncompressed_data(const VTK_XML_array& a, std::string_view stream, std::size_t at,

@@ -160,7 +160,7 @@ private:
     auto text = [](const std::vector<double>& x) {
       std::string r;
       for (std::size_t i = 0; i < x.size(); ++i)
-        r += (i ? " " : "") + std::to_string(static_cast<long long>(x[i]));
+        r += (i ? " " : "") + number_string(x[i]); // any finite number, whatever its size
       return r;
     };
     double n = 1;

@@ -251,9 +251,10 @@ Rectilinear_grid_flow_field_3<K> read_VTK_XML_rectilinear(const std::string& fil
                            "a Rectilinear_grid_flow_field_3 is read from a VTK XML RectilinearGrid (.vtr) or "
                            "ImageData (.vti) file");
   check_VTK_XML_grid_dimensions(f);
-  std::array<std::vector<double>, 3> x = read_VTK_XML_axes(f);
+  // The values first: their bytes bound the number of points before the axes are allocated.
   Node_values d = read_VTK_XML_point_values(f, array_name, mask_name,
                                             [&](std::size_t i) { return grid_node_string(f.dimensions, i); });
+  std::array<std::vector<double>, 3> x = read_VTK_XML_axes(f);
   return construct_field<Rectilinear_grid_flow_field_3<K>>(
       [&](const std::string& what) { f.doc.fail_file(what); }, Flow_aligned_surfaces::internal::Node_values_checked(),
       std::move(x), std::move(d.values), std::move(d.flags));
@@ -283,10 +284,13 @@ inline Structured_grid_cells read_VTK_XML_cells(const VTK_XML_data_set& f)
   const VTK_XML_array& types = VTK_XML_cell_array(f, arrays, "types");
   const VTK_XML_array& offsets = VTK_XML_cell_array(f, arrays, "offsets");
   const VTK_XML_array& connectivity = VTK_XML_cell_array(f, arrays, "connectivity");
+  // The types first: their bytes bound the number of cells before anything is allocated from it.
+  const std::vector<double> type_values = read_VTK_XML_doubles(f, types, nc, [](std::size_t, double) {});
   Structured_grid_cells r;
   std::vector<int> points_per_cell(nc);
   r.cell_types.resize(nc);
-  read_VTK_XML_doubles(f, types, nc, [&](std::size_t i, double t) {
+  for (std::size_t i = 0; i < nc; ++i) {
+    const double t = type_values[i];
     int n = 0;
     const char* name = vtk_cell_type_name(t, &n);
     if (n == 0)
@@ -296,7 +300,7 @@ inline Structured_grid_cells read_VTK_XML_cells(const VTK_XML_data_set& f)
                                 "(VTK_WEDGE) and 14 (VTK_PYRAMID)");
     r.cell_types[i] = static_cast<unsigned char>(t);
     points_per_cell[i] = n;
-  });
+  }
   r.offsets.resize(nc + 1, 0);
   read_VTK_XML_doubles(f, offsets, nc, [&](std::size_t i, double v) {
     const double previous = static_cast<double>(r.offsets[i]);
