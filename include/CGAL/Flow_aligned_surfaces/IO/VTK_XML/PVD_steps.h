@@ -53,7 +53,7 @@ inline PVD_step read_PVD_step(const XML_document& doc, const XML_element& e, std
   return PVD_step{t, path.string(), e.byte};
 }
 
-/// The steps of the .pvd file `c.file`, sorted by time.
+/// The steps of the .pvd file `file`, sorted by time; `reader` names the messages.
 inline std::vector<PVD_step> read_PVD_steps(const std::string& reader, const std::string& file)
 {
   check_readable(reader, file);

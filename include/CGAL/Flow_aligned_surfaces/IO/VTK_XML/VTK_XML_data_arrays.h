@@ -142,7 +142,7 @@ struct VTK_XML_values {
 /// array's appended data end where the next one begins).
 class VTK_XML_array_decoder {
 public:
-  VTK_XML_array_decoder(const XML_document& doc) : m_doc(doc), m_format(read_VTK_XML_format(doc))
+  explicit VTK_XML_array_decoder(const XML_document& doc) : m_doc(doc), m_format(read_VTK_XML_format(doc))
   {
     for (const XML_element& e : doc.elements) {
       const std::string* format = e.attribute("format");
@@ -176,7 +176,7 @@ public:
     std::string_view stream;
     std::size_t data_byte = 0;
     if (f == "binary") {
-      data_byte = e.text_begin;
+      data_byte = e.text_end != 0 ? e.text_begin : e.byte; // an empty element: named by its tag
       r.storage = std::make_unique<std::string>();
       decoded_base64(a, m_doc.bytes().substr(e.text_begin, e.text_end - e.text_begin), e.text_begin, *r.storage);
       stream = *r.storage;
