@@ -156,9 +156,10 @@ std::string structured_file(const Encoding& e, const Array& v, const Array* m = 
   return w.file("StructuredGrid", body + "</Piece>\n</StructuredGrid>\n");
 }
 
-// The grid's hexahedra as an unstructured grid: even cells as VTK_HEXAHEDRON, odd ones as
-// VTK_VOXEL (points in x, y, z order), Int64 connectivity and offsets, as VTK 9 writes them.
-std::string unstructured_file(const Encoding& e, const Array& v, const Array* m = nullptr)
+// The grid's hexahedra as a piece of an unstructured grid: even cells as VTK_HEXAHEDRON, odd
+// ones as VTK_VOXEL (points in x, y, z order), Int64 connectivity and offsets, as VTK 9 writes
+// them; the points moved by `shift`.
+std::string unstructured_piece(Writer& w, const Array& v, const Array* m, const Vector& shift = Vector(0, 0, 0))
 {
   Array connectivity{"connectivity", "Int64", 1, {}}, offsets{"offsets", "Int64", 1, {}}, types{"types", "UInt8", 1, {}};
   auto id = [](std::size_t i, std::size_t j, std::size_t k) { return double(i + nx * (j + ny * k)); };
@@ -176,12 +177,19 @@ std::string unstructured_file(const Encoding& e, const Array& v, const Array* m 
         offsets.values.push_back(double(connectivity.values.size()));
         types.values.push_back(voxel ? 11. : 12.);
       }
+  Array p = points("Float64");
+  for (std::size_t i = 0; i < p.values.size(); ++i)
+    p.values[i] += shift[int(i % 3)];
+  return "<Piece NumberOfPoints=\"" + std::to_string(nodes) + "\" NumberOfCells=\"" +
+         std::to_string(types.values.size()) + "\">\n" + point_data(w, v, m) + "<Points>\n" + w.data_array(p) +
+         "</Points>\n<Cells>\n" + w.data_array(connectivity) + w.data_array(offsets) + w.data_array(types) +
+         "</Cells>\n</Piece>\n";
+}
+
+std::string unstructured_file(const Encoding& e, const Array& v, const Array* m = nullptr)
+{
   Writer w(e);
-  std::string body = "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" + std::to_string(nodes) + "\" NumberOfCells=\"" +
-                     std::to_string(types.values.size()) + "\">\n" + point_data(w, v, m) + "<Points>\n" +
-                     w.data_array(points("Float64")) + "</Points>\n<Cells>\n" + w.data_array(connectivity) +
-                     w.data_array(offsets) + w.data_array(types) + "</Cells>\n";
-  return w.file("UnstructuredGrid", body + "</Piece>\n</UnstructuredGrid>\n");
+  return w.file("UnstructuredGrid", "<UnstructuredGrid>\n" + unstructured_piece(w, v, m) + "</UnstructuredGrid>\n");
 }
 
 // Every encoding VTK writes whose compressor this build has.
@@ -297,6 +305,45 @@ TEST(ReadVTKXMLEncodings, EveryKindOfDataSetGivesTheLinearField)
       expect_linear_field(c, std::string(ext) + " as cells, " + what);
     }
   }
+}
+
+// Several pieces of an unstructured grid (as a parallel run writes them) are concatenated: two
+// copies of the grid, the second moved by 2 along x and holding the field at its points, and an
+// empty piece between them.
+TEST(ReadVTKXMLEncodings, PiecesOfAnUnstructuredGridAreConcatenated)
+{
+  const Vector shift(2, 0, 0);
+  Array moved = velocity("Float64");
+  for (std::size_t n = 0; n < nodes; ++n) {
+    const Vector e = exact(node(n) + shift);
+    for (int d = 0; d < 3; ++d)
+      moved.values[3 * n + std::size_t(d)] = e[d];
+  }
+  for (const Encoding& e : every_encoding()) {
+    Writer w(e);
+    const std::string file = temporary("pieces.vtu");
+    write_bytes(file, w.file("UnstructuredGrid", "<UnstructuredGrid>\n" + unstructured_piece(w, velocity("Float64"), nullptr) +
+                                                     "<Piece NumberOfPoints=\"0\" NumberOfCells=\"0\"/>\n" +
+                                                     unstructured_piece(w, moved, nullptr, shift) +
+                                                     "</UnstructuredGrid>\n"));
+    const Cells c = read_or_fail<Cells>(file, "2 pieces, " + e.describe());
+    ASSERT_EQ(c.number_of_points(), 2 * nodes) << e.describe();
+    ASSERT_EQ(c.number_of_cells(), 2 * (nx - 1) * (ny - 1) * (nz - 1)) << e.describe();
+    expect_linear_field(c, "first piece, " + e.describe());
+    for (const Point& p : {node(5) + shift, node(0) + shift + Vector(0.3, 0.4, 0.2), node(nodes - 1) + shift})
+      EXPECT_LT(std::sqrt((*c(p) - exact(p)).squared_length()), 1e-9) << p << ", " << e.describe();
+  }
+  // A mask in one piece only is refused.
+  Encoding e;
+  Writer w(e);
+  const Array m = mask();
+  write_bytes(temporary("pieces_mask.vtu"),
+              w.file("UnstructuredGrid", "<UnstructuredGrid>\n" + unstructured_piece(w, velocity(), &m) +
+                                             unstructured_piece(w, moved, nullptr, shift) + "</UnstructuredGrid>\n"));
+  Cells c;
+  std::string error;
+  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(temporary("pieces_mask.vtu"), c, &error));
+  EXPECT_NE(error.find("this piece has no mask but the pieces before it have one"), std::string::npos) << error;
 }
 
 TEST(ReadVTKXMLEncodings, MaskedCellsAreLeftOut)

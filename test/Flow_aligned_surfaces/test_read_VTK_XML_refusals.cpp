@@ -375,7 +375,7 @@ TEST(ReadVTKXMLRefusals, RotatedFlatAndMultiPieceDataSetsAreRefused)
   std::string pieces = hand_written_vti(velocity);
   const std::size_t piece = pieces.find("<Piece"), end = pieces.find("</Piece>") + 9;
   pieces.insert(end, pieces.substr(piece, end - piece));
-  expect_read_fails<Grid>(written("pieces.vti", pieces), {"the data set has 2 pieces; only files of one piece are read"});
+  expect_read_fails<Grid>(written("pieces.vti", pieces), {"the data set has 2 pieces; only structured files of one piece are read"});
 }
 
 std::string one_cell_vtu(const std::string& connectivity, const std::string& offsets, const std::string& types,

@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A VTK XML data set file opened without VTK: its bytes, its XML, the kind of data set
-// (`<VTKFile type="ImageData|RectilinearGrid|StructuredGrid|UnstructuredGrid">`), its single
-// `<Piece>` with the number of points and cells (from the piece's Extent for the structured
-// kinds), and its arrays, decoded on demand.
+// (`<VTKFile type="ImageData|RectilinearGrid|StructuredGrid|UnstructuredGrid">`), its
+// `<Piece>` (one; an unstructured grid may have several, visited in turn) with the number of
+// points and cells (from the piece's Extent for the structured kinds), and its arrays, decoded
+// on demand.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_VTK_XML_VTK_XML_DATA_SET_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_VTK_XML_VTK_XML_DATA_SET_H
@@ -94,16 +95,27 @@ public:
     data_set = doc.child(root, type);
     if (data_set == nullptr)
       doc.fail_element(root, "there is no <" + type + "> element");
-    find_piece();
+    find_pieces();
     if (type == "UnstructuredGrid") {
-      points = VTK_XML_count(doc, *piece, "NumberOfPoints", 0);
-      cells = VTK_XML_count(doc, *piece, "NumberOfCells", 0);
+      bool any_points = false;
+      for (std::size_t i = pieces.size(); i-- > 0;) {
+        select_piece(i);
+        any_points |= points != 0;
+      }
+      if (!any_points)
+        doc.fail_element(*piece, pieces.size() == 1 ? "the piece has no points" : "no piece has points");
     }
     else {
       read_extent();
     }
-    if (points == 0)
-      doc.fail_element(*piece, "the piece has no points");
+  }
+
+  /// Makes piece `i` (of an unstructured grid) the current one.
+  void select_piece(std::size_t i)
+  {
+    piece = pieces[i];
+    points = VTK_XML_count(doc, *piece, "NumberOfPoints", 0);
+    cells = VTK_XML_count(doc, *piece, "NumberOfCells", 0);
   }
 
   File_contents contents;
@@ -112,7 +124,8 @@ public:
   VTK_XML_array_decoder decoder;
   std::string type;
   const XML_element* data_set = nullptr;
-  const XML_element* piece = nullptr;
+  std::vector<const XML_element*> pieces; ///< several only in an unstructured grid
+  const XML_element* piece = nullptr;      ///< the current piece
   std::size_t points = 0, cells = 0;
   std::array<std::size_t, 3> dimensions{{0, 0, 0}}; ///< points along each axis (structured kinds)
   std::array<double, 3> first_index{{0, 0, 0}};      ///< the piece's first point index (i, j, k)
@@ -138,18 +151,19 @@ public:
   }
 
 private:
-  void find_piece()
+  // The pieces; several only in an unstructured grid, whose pieces the reader concatenates.
+  void find_pieces()
   {
-    std::size_t count = 0;
     for (std::size_t c : data_set->children)
-      if (doc.elements[c].name == "Piece" && count++ == 0)
-        piece = &doc.elements[c];
-    if (count == 0)
+      if (doc.elements[c].name == "Piece")
+        pieces.push_back(&doc.elements[c]);
+    if (pieces.empty())
       doc.fail_element(*data_set, "there is no <Piece> element");
-    if (count > 1)
-      doc.fail_element(*data_set, "the data set has " + std::to_string(count) +
-                                      " pieces; only files of one piece are read (merge them, for instance with "
-                                      "ParaView's Merge Blocks, and save again)");
+    piece = pieces.front();
+    if (pieces.size() > 1 && type != "UnstructuredGrid")
+      doc.fail_element(*data_set, "the data set has " + std::to_string(pieces.size()) +
+                                      " pieces; only structured files of one piece are read (merge them, for "
+                                      "instance with ParaView's Merge Blocks, and save again)");
   }
 
   void read_extent()

@@ -323,51 +323,100 @@ inline Structured_grid_cells read_VTK_XML_cells(const VTK_XML_data_set& f)
   return r;
 }
 
-template <class K>
-Unstructured_flow_field_3<K> read_VTK_XML_cells(const std::string& file, const std::string* array_name,
-                                                const std::string* mask_name)
+/// The points, velocities, mask and cells of a data set, as `Unstructured_flow_field_3` takes them.
+struct VTK_XML_cell_data {
+  Node_values nodes;
+  std::vector<double> points;
+  bool float_points = true;
+  Structured_grid_cells cells;
+};
+
+/// The current piece of `f` as cells.
+inline VTK_XML_cell_data read_VTK_XML_piece_cells(const VTK_XML_data_set& f, const std::string* array_name,
+                                                  const std::string* mask_name)
 {
-  const VTK_XML_data_set f("read_VTK_XML_flow_field", file,
-                           {"UnstructuredGrid", "StructuredGrid", "RectilinearGrid", "ImageData"},
-                           "an Unstructured_flow_field_3 is read from a VTK XML UnstructuredGrid (.vtu), "
-                           "StructuredGrid (.vts), RectilinearGrid (.vtr) or ImageData (.vti) file");
   const bool structured = f.type != "UnstructuredGrid";
   if (structured)
     check_VTK_XML_grid_dimensions(f);
-  Node_values d = read_VTK_XML_point_values(f, array_name, mask_name, [&](std::size_t i) {
+  VTK_XML_cell_data r;
+  r.nodes = read_VTK_XML_point_values(f, array_name, mask_name, [&](std::size_t i) {
     return structured ? grid_node_string(f.dimensions, i) : std::to_string(i);
   });
-  std::vector<double> points;
-  bool float_points = false;
   if (f.type == "UnstructuredGrid" || f.type == "StructuredGrid") {
     const std::vector<VTK_XML_array> p = f.arrays(&f.piece_child("Points"));
     if (p.empty())
       f.doc.fail_element(f.piece_child("Points"), "holds no DataArray");
-    float_points = p.front().type == Binary_type::FLOAT32;
-    points = read_VTK_XML_points(f, p.front());
+    r.float_points = p.front().type == Binary_type::FLOAT32;
+    r.points = read_VTK_XML_points(f, p.front());
   }
   else {
+    r.float_points = false;
     const std::array<std::vector<double>, 3> x = read_VTK_XML_axes(f);
-    points.reserve(3 * f.points);
+    r.points.reserve(3 * f.points);
     for (double z : x[2])
       for (double y : x[1])
         for (double xi : x[0])
-          points.insert(points.end(), {xi, y, z});
+          r.points.insert(r.points.end(), {xi, y, z});
   }
-  Structured_grid_cells cells = structured ? structured_grid_cells(f.dimensions) : read_VTK_XML_cells(f);
+  r.cells = structured ? structured_grid_cells(f.dimensions) : read_VTK_XML_cells(f);
+  return r;
+}
+
+/// Appends piece `b` (the current piece of `f`) to the pieces `a` read before it: its point
+/// indices shift by the points before it.
+inline void append_VTK_XML_piece(const VTK_XML_data_set& f, VTK_XML_cell_data& a, VTK_XML_cell_data b)
+{
+  if (a.points.empty()) {
+    a = std::move(b);
+    return;
+  }
+  if (a.nodes.flags.empty() != b.nodes.flags.empty())
+    f.doc.fail_element(*f.piece, std::string("this piece has ") + (b.nodes.flags.empty() ? "no mask" : "a mask") +
+                                     " but the pieces before it " + (b.nodes.flags.empty() ? "have one" : "have none"));
+  const std::int64_t points_before = static_cast<std::int64_t>(a.points.size() / 3);
+  const std::int64_t indices_before = static_cast<std::int64_t>(a.cells.connectivity.size());
+  a.points.insert(a.points.end(), b.points.begin(), b.points.end());
+  a.float_points = a.float_points && b.float_points;
+  a.nodes.values.insert(a.nodes.values.end(), b.nodes.values.begin(), b.nodes.values.end());
+  a.nodes.flags.insert(a.nodes.flags.end(), b.nodes.flags.begin(), b.nodes.flags.end());
+  for (std::int64_t i : b.cells.connectivity)
+    a.cells.connectivity.push_back(i + points_before);
+  for (std::size_t c = 1; c < b.cells.offsets.size(); ++c)
+    a.cells.offsets.push_back(b.cells.offsets[c] + indices_before);
+  a.cells.cell_types.insert(a.cells.cell_types.end(), b.cells.cell_types.begin(), b.cells.cell_types.end());
+}
+
+template <class K>
+Unstructured_flow_field_3<K> read_VTK_XML_cells(const std::string& file, const std::string* array_name,
+                                                const std::string* mask_name)
+{
+  VTK_XML_data_set f("read_VTK_XML_flow_field", file,
+                     {"UnstructuredGrid", "StructuredGrid", "RectilinearGrid", "ImageData"},
+                     "an Unstructured_flow_field_3 is read from a VTK XML UnstructuredGrid (.vtu), "
+                     "StructuredGrid (.vts), RectilinearGrid (.vtr) or ImageData (.vti) file");
+  // The pieces of an unstructured grid, concatenated (empty ones skipped).
+  VTK_XML_cell_data d;
+  for (std::size_t i = 0; i < f.pieces.size(); ++i) {
+    if (f.type == "UnstructuredGrid")
+      f.select_piece(i);
+    if (f.points != 0)
+      append_VTK_XML_piece(f, d, read_VTK_XML_piece_cells(f, array_name, mask_name));
+  }
+  Structured_grid_cells& cells = d.cells;
   const std::size_t all_cells = cells.cell_types.size();
-  if (!d.flags.empty() && remove_masked_cells(d.flags, cells.connectivity, cells.offsets, cells.cell_types) == 0)
+  if (!d.nodes.flags.empty() &&
+      remove_masked_cells(d.nodes.flags, cells.connectivity, cells.offsets, cells.cell_types) == 0)
     f.doc.fail_file("every one of the " + std::to_string(all_cells) +
                     " cells touches a solid point of the mask (no fluid cell is left)");
   const auto refused = [&](const std::string& what) { f.doc.fail_file(what); };
   // Float points stay float in the field (they were decoded as doubles, exactly).
-  if (float_points)
-    return construct_field<Unstructured_flow_field_3<K>>(refused, std::vector<float>(points.begin(), points.end()),
+  if (d.float_points)
+    return construct_field<Unstructured_flow_field_3<K>>(refused, std::vector<float>(d.points.begin(), d.points.end()),
                                                          std::move(cells.connectivity), std::move(cells.offsets),
-                                                         std::move(cells.cell_types), std::move(d.values));
-  return construct_field<Unstructured_flow_field_3<K>>(refused, std::move(points), std::move(cells.connectivity),
+                                                         std::move(cells.cell_types), std::move(d.nodes.values));
+  return construct_field<Unstructured_flow_field_3<K>>(refused, std::move(d.points), std::move(cells.connectivity),
                                                        std::move(cells.offsets), std::move(cells.cell_types),
-                                                       std::move(d.values));
+                                                       std::move(d.nodes.values));
 }
 
 template <class Field>
