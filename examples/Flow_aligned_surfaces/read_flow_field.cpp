@@ -1,4 +1,4 @@
-// Reads a velocity field from a data file of any supported format (legacy VTK, VTK XML with VTK,
+// Reads a velocity field from a data file of any supported format (legacy VTK, VTK XML,
 // AmiraMesh, NRRD) and queries it like any flow.  Without a file given, a point source sampled on
 // a 16 x 16 x 16 grid is written first as a legacy VTK file and read back.
 

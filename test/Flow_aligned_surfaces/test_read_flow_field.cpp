@@ -16,6 +16,7 @@
 #include "read_flow_field_test_helpers.h"
 #include "real_data.h"
 #include "test_files.h"
+#include "vtk_xml_test_files.h"
 
 #include <cmath>
 #include <cstddef>
@@ -94,22 +95,49 @@ TEST(ReadFlowField, AmiraMeshAndNRRD)
   expect_reads_linear_field<Sampled::Regular_grid>(nrrd);
 }
 
-// Without the VTK library a VTK XML file gets a message saying what to link (with it, the
-// file is read in VTK/test_read_flow_field_VTK_XML.cpp).
-TEST(ReadFlowField, VTKXMLFilesNeedTheVTKLibrary)
+// VTK XML files are read without the VTK library: a .vti into the uniform grid, a .vtr into the
+// rectilinear grid, a .vts (the same grid's points) into cells.
+TEST(ReadFlowField, VTKXMLFilesGoToTheirFields)
 {
-#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_VTK
-  GTEST_SKIP() << "built with VTK: VTK/test_read_flow_field_VTK_XML.cpp reads the file";
-#else
   const std::string vti = scratch("grid.vti");
   std::string error;
-  ASSERT_TRUE(FAS::IO::write_VTI_flow_field(vti, linear_grid(), CGAL::parameters::default_values(), &error))
-      << error;
-  Sampled field;
-  EXPECT_FALSE(FAS::IO::read_flow_field(vti, field, CGAL::parameters::default_values(), &error));
-  EXPECT_NE(error.find("CGAL::Flow_aligned_surfaces_VTK"), std::string::npos) << error;
-  EXPECT_EQ(field.bbox(), CGAL::Bbox_3()); // untouched: empty
-#endif
+  const Sampled::Regular_grid grid = linear_grid();
+  ASSERT_TRUE(FAS::IO::write_VTI_flow_field(vti, grid, CGAL::parameters::default_values(), &error)) << error;
+  expect_reads_linear_field<Sampled::Regular_grid>(vti);
+
+  vtk_xml_test::Encoding e;
+  e.mode = vtk_xml_test::Mode::BINARY;
+  const vtk_xml_test::Array velocity{"velocity", "Float32", 3,
+                                     std::vector<double>(grid.values().begin(), grid.values().end())};
+  const auto& n = grid.dimensions();
+  const std::string extent = "0 " + std::to_string(n[0] - 1) + " 0 " + std::to_string(n[1] - 1) + " 0 " +
+                             std::to_string(n[2] - 1);
+  vtk_xml_test::Writer w(e);
+  std::string body = "<RectilinearGrid WholeExtent=\"" + extent + "\"><Piece Extent=\"" + extent + "\">" +
+                     "<PointData Vectors=\"velocity\">" + w.data_array(velocity) + "</PointData><Coordinates>";
+  vtk_xml_test::Array points{"Points", "Float64", 3, {}};
+  for (int a = 0; a < 3; ++a) {
+    vtk_xml_test::Array axis{"axis", "Float64", 1, {}};
+    for (std::size_t i = 0; i < n[std::size_t(a)]; ++i)
+      axis.values.push_back(grid.origin()[a] + double(i) * grid.spacing()[a]);
+    body += w.data_array(axis);
+  }
+  for (std::size_t k = 0; k < n[2]; ++k)
+    for (std::size_t j = 0; j < n[1]; ++j)
+      for (std::size_t i = 0; i < n[0]; ++i) {
+        const Point p = grid.node_point(i, j, k);
+        points.values.insert(points.values.end(), {p.x(), p.y(), p.z()});
+      }
+  const std::string vtr = scratch("grid.vtr");
+  write_bytes(vtr, w.file("RectilinearGrid", body + "</Coordinates></Piece></RectilinearGrid>"));
+  expect_reads_linear_field<Sampled::Rectilinear_grid>(vtr);
+  vtk_xml_test::Writer ws(e);
+  const std::string vts = scratch("grid.vts");
+  write_bytes(vts, ws.file("StructuredGrid", "<StructuredGrid WholeExtent=\"" + extent + "\"><Piece Extent=\"" +
+                                                 extent + "\"><PointData>" + ws.data_array(velocity) +
+                                                 "</PointData><Points>" + ws.data_array(points) +
+                                                 "</Points></Piece></StructuredGrid>"));
+  expect_reads_linear_field<Sampled::Unstructured_grid>(vts);
 }
 
 TEST(ReadFlowField, FailuresNameTheFileAndKeepTheField)

@@ -1,7 +1,8 @@
-// libFuzzer target for the VTK XML readers (needs VTK): `read_VTK_XML_flow_field` runs on
-// arbitrary bytes into an `Unstructured_flow_field_3` (the file may be a .vti, .vtu or .vts:
-// VTK tells them by their contents) and, when the bytes hold "ImageData", into a
-// `Regular_grid_flow_field_3`; when they hold a "\n--DATA--\n" line, the bytes before it are
+// libFuzzer target for the VTK XML readers (no VTK): `read_VTK_XML_flow_field` runs on
+// arbitrary bytes into an `Unstructured_flow_field_3` (the file may be a .vti, .vtr, .vtu or
+// .vts: the reader tells them by their contents), when the bytes hold "ImageData" into a
+// `Regular_grid_flow_field_3`, and when they hold "Grid" or "Image" into a
+// `Rectilinear_grid_flow_field_3`; when they hold a "\n--DATA--\n" line, the bytes before it are
 // also read by `read_PVD_flow_field` as a .pvd collection whose steps may name `data.raw`,
 // the bytes after it (see fuzz_input_file.h).  Each call must return (true, or false with a
 // message) without a sanitizer report.
@@ -9,8 +10,6 @@
 #include <CGAL/Flow_aligned_surfaces/IO/read_VTK_XML.h>
 
 #include <CGAL/Simple_cartesian.h>
-
-#include <vtkObject.h>
 
 #include "fuzz_input_file.h"
 
@@ -34,14 +33,6 @@ void check(bool read, const std::string& error)
 
 } // namespace
 
-// VTK's warnings from objects the readers cannot watch (e.g. the point data of a data set
-// being read) would be printed for every input: not here.
-extern "C" int LLVMFuzzerInitialize(int*, char***)
-{
-  vtkObject::GlobalWarningDisplayOff();
-  return 0;
-}
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   const std::string file = fuzz_input_file(data, size, ".vti");
@@ -63,6 +54,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const auto n = grid.dimensions();
       (void)grid(grid.node_point(n[0] / 2, n[1] / 2, n[2] / 2));
     }
+  }
+  if (bytes.find("Grid") != std::string_view::npos || bytes.find("Image") != std::string_view::npos) {
+    FAS::Rectilinear_grid_flow_field_3<K> rectilinear;
+    error.clear();
+    read = FAS::IO::read_VTK_XML_flow_field(file, rectilinear, CGAL::parameters::default_values(), &error);
+    check(read, error);
   }
   const std::size_t separator = bytes.find("\n--DATA--\n");
   if (separator != std::string_view::npos) {

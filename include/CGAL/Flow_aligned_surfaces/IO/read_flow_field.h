@@ -12,9 +12,7 @@
 #include <CGAL/Flow_aligned_surfaces/IO/read_AmiraMesh.h>
 #include <CGAL/Flow_aligned_surfaces/IO/read_NRRD.h>
 #include <CGAL/Flow_aligned_surfaces/IO/read_VTK_legacy.h>
-#if defined(CGAL_FLOW_ALIGNED_SURFACES_USE_VTK) || defined(DOXYGEN_RUNNING)
 #include <CGAL/Flow_aligned_surfaces/IO/read_VTK_XML.h>
-#endif
 #include <CGAL/Flow_aligned_surfaces/Sampled_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/IO/internal/reader_support.h>
@@ -39,6 +37,7 @@ enum class Flow_field_file_kind {
   LEGACY_RECTILINEAR_GRID,
   LEGACY_CELLS, // STRUCTURED_GRID, UNSTRUCTURED_GRID and what the legacy reader then rejects
   XML_IMAGE_DATA,
+  XML_RECTILINEAR_GRID,
   XML_CELLS, // UnstructuredGrid, StructuredGrid and what the XML reader then rejects
   AMIRA_MESH,
   NRRD_FILE,
@@ -84,6 +83,8 @@ inline Flow_field_file_kind flow_field_file_kind(const std::string& filename, st
     const std::size_t t = h.find("type=\"", x);
     if (t != std::string_view::npos && h.substr(t + 6, 10) == "ImageData\"")
       return Flow_field_file_kind::XML_IMAGE_DATA;
+    if (t != std::string_view::npos && h.substr(t + 6, 16) == "RectilinearGrid\"")
+      return Flow_field_file_kind::XML_RECTILINEAR_GRID;
     return Flow_field_file_kind::XML_CELLS;
   }
   return Flow_field_file_kind::UNKNOWN;
@@ -117,14 +118,13 @@ The format is told from the first bytes of the file, not from its name:
 | `# vtk DataFile`, `DATASET RECTILINEAR_GRID` | legacy VTK | `read_VTK_flow_field()` | a `Rectilinear_grid_flow_field_3` |
 | `# vtk DataFile`, `DATASET STRUCTURED_GRID` or `UNSTRUCTURED_GRID` | legacy VTK | `read_VTK_flow_field()` | an `Unstructured_flow_field_3` |
 | `<VTKFile type="ImageData"` | VTK XML (`.vti`) | `read_VTK_XML_flow_field()` | a `Regular_grid_flow_field_3` |
+| `<VTKFile type="RectilinearGrid"` | VTK XML (`.vtr`) | `read_VTK_XML_flow_field()` | a `Rectilinear_grid_flow_field_3` |
 | `<VTKFile type="UnstructuredGrid"` or `"StructuredGrid"` | VTK XML (`.vtu`, `.vts`) | `read_VTK_XML_flow_field()` | an `Unstructured_flow_field_3` |
 | `# AmiraMesh` or `# Avizo` | AmiraMesh (`.am`) | `read_AmiraMesh_flow_field()` | a `Regular_grid_flow_field_3` |
 | `NRRD000` | NRRD (`.nrrd`, `.nhdr` + raw data) | `read_NRRD_flow_field()` | a `Regular_grid_flow_field_3` |
 
-VTK XML files need the VTK library: the program must link the CMake target
-`CGAL::Flow_aligned_surfaces_VTK` (which defines `CGAL_FLOW_ALIGNED_SURFACES_USE_VTK`);
-without it such a file gets a message saying so.  Time series (`.pvd`) are read by
-`read_PVD_flow_field()`.
+Every format is read by the package itself (VTK XML files too: no VTK library is needed).  Time
+series (`.pvd`) are read by `read_PVD_flow_field()`.
 
 \tparam K a model of `Kernel`
 \tparam NamedParameters a sequence of named parameters
@@ -167,22 +167,15 @@ bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field
   case internal::Flow_field_file_kind::NRRD_FILE:
     return internal::read_as<Regular>(
         field, [&](Regular& f) { return read_NRRD_flow_field(filename, f, np, error); });
-#ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_VTK
   case internal::Flow_field_file_kind::XML_IMAGE_DATA:
     return internal::read_as<Regular>(
         field, [&](Regular& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
+  case internal::Flow_field_file_kind::XML_RECTILINEAR_GRID:
+    return internal::read_as<Rectilinear>(
+        field, [&](Rectilinear& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
   case internal::Flow_field_file_kind::XML_CELLS:
     return internal::read_as<Cells>(
         field, [&](Cells& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
-#else
-  case internal::Flow_field_file_kind::XML_IMAGE_DATA:
-  case internal::Flow_field_file_kind::XML_CELLS:
-    if (error)
-      *error = "read_flow_field: " + filename +
-               ": a VTK XML file; reading it needs the VTK library: link the CMake target "
-               "CGAL::Flow_aligned_surfaces_VTK (Debian: libvtk9-dev)";
-    return false;
-#endif
   case internal::Flow_field_file_kind::UNKNOWN:
     break;
   }

@@ -15,6 +15,7 @@
 #include <CGAL/Flow_aligned_surfaces/IO/internal/remove_masked_cells.h>
 #include <CGAL/Flow_aligned_surfaces/IO/internal/structured_grid_cells.h>
 #include <CGAL/Flow_aligned_surfaces/IO/internal/voxels_as_hexahedra.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/vtk_cell_types.h>
 #include <CGAL/Flow_aligned_surfaces/Rectilinear_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
@@ -194,55 +195,6 @@ inline std::array<std::vector<double>, 3> grid_coordinates(VTK_legacy_parser& pa
       x[a][i] = parser.origin[a] + static_cast<double>(i) * parser.spacing[a];
   }
   return x;
-}
-
-// The VTK cell type names, for messages; the number of points of the supported ones (else 0).
-inline const char* vtk_cell_type_name(double t, int* points = nullptr)
-{
-  static const struct {
-    int type, points;
-    const char* name;
-  } table[] = {{1, 0, "VTK_VERTEX"},
-               {2, 0, "VTK_POLY_VERTEX"},
-               {3, 0, "VTK_LINE"},
-               {4, 0, "VTK_POLY_LINE"},
-               {5, 0, "VTK_TRIANGLE"},
-               {6, 0, "VTK_TRIANGLE_STRIP"},
-               {7, 0, "VTK_POLYGON"},
-               {8, 0, "VTK_PIXEL"},
-               {9, 0, "VTK_QUAD"},
-               {10, 4, "VTK_TETRA"},
-               {11, 8, "VTK_VOXEL"},
-               {12, 8, "VTK_HEXAHEDRON"},
-               {13, 6, "VTK_WEDGE"},
-               {14, 5, "VTK_PYRAMID"},
-               {15, 0, "VTK_PENTAGONAL_PRISM"},
-               {16, 0, "VTK_HEXAGONAL_PRISM"},
-               {21, 0, "VTK_QUADRATIC_EDGE"},
-               {22, 0, "VTK_QUADRATIC_TRIANGLE"},
-               {23, 0, "VTK_QUADRATIC_QUAD"},
-               {24, 0, "VTK_QUADRATIC_TETRA"},
-               {25, 0, "VTK_QUADRATIC_HEXAHEDRON"},
-               {26, 0, "VTK_QUADRATIC_WEDGE"},
-               {27, 0, "VTK_QUADRATIC_PYRAMID"},
-               {42, 0, "VTK_POLYHEDRON"}};
-  for (const auto& e : table)
-    if (t == e.type) {
-      if (points != nullptr)
-        *points = e.points;
-      return e.name;
-    }
-  if (points != nullptr)
-    *points = 0;
-  return "not a linear 3D cell type this reader knows";
-}
-
-inline std::string number_string(double v)
-{
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
 }
 
 // The cells of an UNSTRUCTURED_GRID (either form of CELLS) in the form of

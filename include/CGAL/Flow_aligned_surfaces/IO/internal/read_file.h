@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -175,6 +176,15 @@ inline std::string printable(std::string_view s)
   if (s.size() > 40)
     r += "...";
   return r;
+}
+
+/// A number shown in a message, with all the digits that tell it apart.
+inline std::string number_string(double v)
+{
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
 }
 
 } // namespace internal

@@ -85,15 +85,20 @@ void decode_grid_array(const Text_cursor& cursor, const Grid_array& a, const Out
   }
 }
 
-/// Decodes `velocity` (3 components per node) and `mask` (1 per node, or null) and builds the
-/// field; fails through `cursor` on a bad value.
-template <class K>
-Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const std::array<std::size_t, 3>& n,
-                                             const std::array<double, 3>& origin,
-                                             const std::array<double, 3>& spacing, const Grid_array& velocity,
-                                             const Grid_array* mask)
+/// The node values of a field: 3 velocity components per node, and the fluid flags (empty
+/// without a mask).
+struct Node_values {
+  std::vector<float> values;
+  std::vector<unsigned char> flags;
+};
+
+/// Decodes `velocity` (3 components per node) and `mask` (1 per node, or null), checked; fails
+/// through `cursor` on a bad value, naming the node `kind + " " + node_name(i)` (the mask: by
+/// its index).
+template <class Node_name>
+Node_values decode_node_values(const Text_cursor& cursor, std::size_t nodes, const Grid_array& velocity,
+                               const Grid_array* mask, const char* kind, const Node_name& node_name)
 {
-  const std::size_t nodes = n[0] * n[1] * n[2];
   // Binary arrays are decoded as runs (the velocity in parallel blocks, see
   // checked_float_decoding.h); only their bad values take the value-by-value checks.
   auto data = [](const Grid_array& a) {
@@ -102,25 +107,26 @@ Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const st
   auto offset = [](const Grid_array& a, std::size_t i) {
     return a.file_offset != std::size_t(-1) ? a.file_offset : a.begin + i * binary_type_size(a.type);
   };
-  std::vector<unsigned char> flags;
+  Node_values r;
+  std::vector<unsigned char>& flags = r.flags;
   if (mask != nullptr) {
     reserve_huge_pages(flags, nodes);
     flags.resize(nodes);
     if (mask->ascii || decode_checked_flags(mask->type, mask->order, data(*mask), nodes, flags.data()))
       decode_grid_array(cursor, *mask, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
         flags[i] = checked_mask_flag(
-            v, mask->name, [&] { return "node " + std::to_string(i); },
+            v, mask->name, [&] { return std::string(kind) + " " + std::to_string(i); },
             [&](const std::string& what) { cursor.fail_at(offset, line, what); });
       });
   }
-  std::vector<float> values;
+  std::vector<float>& values = r.values;
   reserve_huge_pages(values, 3 * nodes);
   values.resize(3 * nodes);
-  // The constructor replaces a solid node's non-finite values by zeros.
+  // The fields' constructors replace a solid node's non-finite values by zeros.
   auto check = [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
     return checked_velocity_component(
-        v, i, [&] { return flags.empty() || flags[i / 3] != 0; }, !flags.empty(), velocity.name, "node",
-        [&] { return "node " + grid_node_string(n, i / 3); },
+        v, i, [&] { return flags.empty() || flags[i / 3] != 0; }, !flags.empty(), velocity.name, kind,
+        [&] { return std::string(kind) + " " + node_name(i / 3); },
         [&](const std::string& what) { cursor.fail_at(offset, line, what); });
   };
   if (velocity.ascii)
@@ -130,11 +136,24 @@ Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const st
   else
     decode_checked_floats(velocity.type, velocity.order, data(velocity), 3 * nodes, values.data(),
                           [&](std::size_t i, double v) { return check(i, v, offset(velocity, i), 0); });
+  return r;
+}
+
+/// Decodes `velocity` (3 components per node) and `mask` (1 per node, or null) and builds the
+/// field; fails through `cursor` on a bad value.
+template <class K>
+Regular_grid_flow_field_3<K> make_grid_field(const Text_cursor& cursor, const std::array<std::size_t, 3>& n,
+                                             const std::array<double, 3>& origin,
+                                             const std::array<double, 3>& spacing, const Grid_array& velocity,
+                                             const Grid_array* mask)
+{
+  Node_values d = decode_node_values(cursor, n[0] * n[1] * n[2], velocity, mask, "node",
+                                     [&n](std::size_t i) { return grid_node_string(n, i); });
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
   return construct_field<Regular_grid_flow_field_3<K>>(
       [&](const std::string& what) { cursor.fail_file(what); }, Point_3(origin[0], origin[1], origin[2]),
-      Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(values), std::move(flags));
+      Vector_3(spacing[0], spacing[1], spacing[2]), n, std::move(d.values), std::move(d.flags));
 }
 
 } // namespace internal
