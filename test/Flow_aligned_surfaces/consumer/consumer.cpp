@@ -5,6 +5,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Flow_aligned_surfaces/align_to_flow.h>
 #include <CGAL/Flow_aligned_surfaces/IO/read_NRRD.h>
+#include <CGAL/Flow_aligned_surfaces/IO/read_VTK_XML.h>
+#include <CGAL/Flow_aligned_surfaces/IO/write_flow_field.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
@@ -14,6 +16,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <vector>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
@@ -52,6 +55,22 @@ int main(int argc, char** argv)
     }
     std::cout << "zlib: gzip NRRD read\n";
 #endif
+    {
+      // A VTK XML image written and read back by the installed package alone, without VTK.
+      const std::string vti = (argc > 1 ? std::string(argv[1]) + "/" : std::string()) + "consumer.vti";
+      std::vector<float> values(3 * 8);
+      for (std::size_t i = 0; i < values.size(); ++i)
+        values[i] = float(i);
+      const FAS::Regular_grid_flow_field_3<K> written(Point(0, 0, 0), Vector(1, 1, 1), {{2, 2, 2}}, values);
+      FAS::Regular_grid_flow_field_3<K> read;
+      std::string error;
+      if (!FAS::IO::write_VTI_flow_field(vti, written, &error) ||
+          !FAS::IO::read_VTK_XML_flow_field(vti, read, &error) || read.values() != values) {
+        std::cerr << "consumer: the VTK XML image was not written and read back right: " << error << "\n";
+        return 4;
+      }
+      std::cout << "VTK XML: image written and read back without VTK\n";
+    }
     std::cout << "faces: " << tm.number_of_faces() << "\n"
               << "normalized flux before: " << before << "\n"
               << "normalized flux after: " << report.normalized_flux.value.value() << " ("
