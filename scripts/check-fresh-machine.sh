@@ -66,11 +66,23 @@ unmount_all() {
   for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do umount -l "${mounted[i]}" 2> /dev/null || true; done
   mounted=()
 }
+# Whatever is still mounted below the root (a run that was killed leaves /proc, /dev and ../shared
+# there): unmounted before anything below the root is removed, deepest first.
+unmount_leftovers() {
+  local point
+  awk -v root="$root/" 'index($2, root) == 1 { print $2 }' /proc/mounts | sort -r |
+    while read -r point; do umount -l "$point" 2> /dev/null || true; done
+  if awk -v root="$root/" 'index($2, root) == 1 { found = 1 } END { exit !found }' /proc/mounts; then
+    echo "check-fresh-machine: cannot unmount what is mounted below $root; remove it by hand" >&2
+    exit 1
+  fi
+}
+remove_root() { unmount_leftovers; rm -rf --one-file-system "$root"; }
 trap unmount_all EXIT
 bind() { mkdir -p "$2"; mount --bind "$1" "$2"; mounted+=("$2"); }
 
-unmount_all
-rm -rf "$root" "$logs"
+remove_root
+rm -rf "$logs"
 mkdir -p "$root" "$logs"
 say "debootstrap bookworm into $root (log: $logs/debootstrap.log)"
 start=$SECONDS
@@ -120,7 +132,7 @@ summary+=" scripts/run-main-job.sh: status $job_status, $job_time s"
 echo "$summary" | tee "$logs/summary.txt"
 unmount_all
 if [ "$ci_status" = 0 ] && [ "$job_status" = 0 ]; then
-  [ "$keep" = 1 ] || rm -rf "$root"
+  [ "$keep" = 1 ] || remove_root
   exit 0
 fi
 say "the logs are in $logs; the root is kept in $root"
