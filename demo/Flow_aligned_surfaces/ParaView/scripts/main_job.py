@@ -70,7 +70,7 @@ SaveData(os.path.join(output_dir, "seed_curves.vtp"), proxy=OutputPort(seeds, 1)
 SaveData(os.path.join(output_dir, "stream_surfaces.vtp"), proxy=streams, **INLINE)
 stream_output = servermanager.Fetch(streams)
 print("stream surfaces: %d triangles from %d seed curves" % (
-    stream_output.GetNumberOfCells(), servermanager.Fetch(OutputPort(seeds, 1)).GetNumberOfCells()))
+    stream_output.GetNumberOfCells(), servermanager.Fetch(seeds, idx=1).GetNumberOfCells()))
 
 view = CreateView("RenderView")
 view.ViewSize = [1200, 700]
@@ -92,7 +92,7 @@ flux_lut = GetColorTransferFunction("normalized_flux")
 flux_lut.ApplyPreset("Cool to Warm", True)
 flux_lut.RescaleTransferFunction(0.0, 1.0)
 bar = GetScalarBar(flux_lut, view)
-bar.Title = "normalized flux |n.v|/|v|"
+bar.Title = "normalized flux"
 bar.ComponentTitle = ""
 bar.TitleColor = [0, 0, 0]
 bar.LabelColor = [0, 0, 0]
