@@ -39,7 +39,7 @@ if good.GetNumberOfPoints() == 0:
 with t.Messages() as m:
     surface.Center = [20.0, 0.0, 0.0]
     kept = t.fetch(surface, 5)
-t.expect_message(m, ["outside the input data set", "(20, 0, 0)", "previous output is kept"], "patch outside")
+t.expect_message(m, ["outside the Input", "Center (20, 0, 0)", "previous output is kept"], "patch outside")
 t.expect_same_surface(kept, good, "previous output kept after the patch left the data", 0.0)
 
 # 3. Back into the data: it works again.
@@ -62,12 +62,47 @@ if not unsampled or any(not 0 <= v <= 1 for v in values if not math.isnan(v)):
     raise AssertionError("per-face flux of a patch half out of the data: NaN where unsampled, "
                          "else in [0, 1]; got %d NaN, range %s" % (len(unsampled), (min(values), max(values))))
 
-# 5. Bad parameters: the library's message names the parameter.
-with t.Messages() as m:
+# 5. Properties out of range: the message names the panel's property and its range, nothing is
+#    clamped silently, and the previous output stays.
+for prop, value, words in [
+        ("Normal", [0.0, 0.0, 0.0], ["the property Normal", "non-zero"]),
+        ("Size", -0.5, ["the property Size is -0.5", "> 0"]),
+        ("NumberOfFaces", 100000000, ["the property Number Of Faces is 1e+08", "from 2 to 10,000,000"]),
+        ("NumberOfFaces", -5, ["the property Number Of Faces is -5", "from 2 to 10,000,000"]),
+        ("MaxRotationAngle", 0.0, ["the property Max Rotation Angle is 0", "(0, pi]"]),
+        ("NumberOfIterations", -1, ["the property Number Of Iterations is -1"])]:
     surface.Center = [-1.6, 0.5, 0.0]
-    surface.Normal = [0.0, 0.0, 0.0]
-    kept = t.fetch(surface, 5)
-t.expect_message(m, ["normal"], "zero normal")
-if kept.GetNumberOfPoints() == 0:
-    raise AssertionError("the previous output was not kept after a zero normal")
-print("Flow-Aligned Surface, bad input: all checks passed")
+    surface.Normal = [1.0, 0.3, 0.2]
+    good = t.fetch(surface, 5)
+    with t.Messages() as m:
+        surface.SetPropertyWithName(prop, value)
+        kept = t.fetch(surface, 5)
+    t.expect_message(m, words + ["previous output is kept"], "%s = %s" % (prop, value))
+    t.expect_same_surface(kept, good, "previous output kept after %s = %s" % (prop, value), 0.0)
+    surface.SetPropertyWithName(prop, {"Normal": [1.0, 0.3, 0.2], "Size": 0.8, "NumberOfFaces": 400,
+                                       "MaxRotationAngle": 0.1, "NumberOfIterations": 5}[prop])
+
+# 6. Abort (what ParaView's Abort button sets, here from a progress observer): the filter stops
+#    after the iteration in progress, says so, shows the last computed iteration, and the next
+#    time step asked for goes on from there.
+surface.Center = [-1.7, 0.5, 0.0]
+surface.NumberOfIterations = 40
+surface.ConvergenceAngle = 0.0
+algorithm = surface.GetClientSideObject()
+aborts = []
+def abort_after_iterations(caller, event):
+    if caller.GetProgress() > 0.3 and not aborts:
+        aborts.append(caller.GetProgress())
+        caller.SetAbortExecute(1)
+tag = algorithm.AddObserver("ProgressEvent", abort_after_iterations)
+with t.Messages() as m:
+    cancelled = t.fetch(surface, 40)
+algorithm.RemoveObserver(tag)
+t.expect_message(m, ["cancelled after iteration", "goes on from there"], "abort")
+stopped_at = t.field_value(cancelled, "iteration")
+if not 5 <= stopped_at < 20 or cancelled.GetNumberOfPoints() == 0:
+    raise AssertionError("abort at progress %s: the output shows iteration %g" % (aborts, stopped_at))
+resumed = t.fetch(surface, 39)  # the next time step asked for (Play in the GUI)
+if t.field_value(resumed, "iteration") != 39:
+    raise AssertionError("after an abort, the next update reaches iteration %g" % t.field_value(resumed, "iteration"))
+print("Flow-Aligned Surface, bad input: all checks passed (abort stopped at iteration %g)" % stopped_at)

@@ -50,6 +50,7 @@ struct Distributed_input {
   bool changed = false;        ///< some rank's piece or array changed since the last update
   std::array<double, 6> bounds{ { 1, -1, 1, -1, 1, -1 } }; ///< of the pieces with cells
   std::string errors;          ///< "rank r: reason" for each rank that cannot sample its piece
+  std::string note;            ///< what this rank left out of a composite input, or empty
 
   /// \throws std::invalid_argument when a piece cannot be sampled or no rank holds cells.
   void require_samples() const
@@ -72,15 +73,16 @@ public:
   Distributed_velocity_field() : m_state(std::make_shared<State>()) {}
 
   /// Called by every rank at the start of every update, collective when distributed: samples
-  /// this rank's piece of the input data set of `input_information` (none when the piece has no
-  /// cells) with the array `array_name` (empty: the active vectors), anew when either changed
-  /// since the last update, and gathers on rank 0 the state of every rank's piece.  The calling
-  /// thread is the one that may exchange.  Never throws: a piece that cannot be sampled is
-  /// reported in `errors`.
-  Distributed_input update(vtkInformation* input_information, const std::string& array_name)
+  /// this rank's piece of the input of `input_information` (a data set, or the 3D blocks of a
+  /// composite data set: `flow_data_set()`; none when the piece has no cells) with the array
+  /// `selection` (empty name: the active vectors), anew when either changed since the last
+  /// update, and gathers on rank 0 the state of every rank's piece.  The calling thread is the
+  /// one that may exchange.  Never throws: a piece that cannot be sampled is reported in
+  /// `errors`.
+  Distributed_input update(vtkInformation* input_information, const Velocity_selection& selection)
   {
     State& s = *m_state;
-    vtkDataSet* input = input_information != nullptr ? vtkDataSet::GetData(input_information) : nullptr;
+    vtkDataObject* input = input_information != nullptr ? vtkDataObject::GetData(input_information) : nullptr;
     const int* whole_extent =
       input_information != nullptr && input_information->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())
       ? input_information->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())
@@ -88,28 +90,38 @@ public:
     vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
     const bool several = controller != nullptr && controller->GetNumberOfProcesses() > 1;
     const bool changed =
-      !s.have_field || input == nullptr || input->GetMTime() != s.input_time || array_name != s.array_name;
+      !s.have_field || input == nullptr || input->GetMTime() != s.input_time || selection != s.selection;
     if (changed)
     {
       s.local.reset();
       s.local_error.clear();
+      s.flow = flow_data_set(input);
       try
       {
-        if (!several || (input != nullptr && input->GetNumberOfCells() > 0))
-          s.local = make_velocity_field(input, array_name, whole_extent);
+        if (s.flow.data_set == nullptr && vtkCompositeDataSet::SafeDownCast(input) != nullptr)
+        {
+          if (!several)
+            throw std::invalid_argument("the Input (" + std::string(input->GetClassName()) +
+                                        ") has no block with 3D cells: there is no volume to sample the flow in" +
+                                        (s.flow.note.empty() ? std::string() : " (" + s.flow.note + ")"));
+        }
+        else if (!several || (s.flow.data_set != nullptr && s.flow.data_set->GetNumberOfCells() > 0))
+          s.local = make_velocity_field(s.flow.data_set, selection, whole_extent);
       }
       catch (const std::exception& e)
       {
         s.local_error = e.what();
       }
       s.input_time = input != nullptr ? input->GetMTime() : 0;
-      s.array_name = array_name;
+      s.selection = selection;
       s.have_field = s.local_error.empty();
     }
     std::array<double, 6> local_bounds{ { 1, -1, 1, -1, 1, -1 } };
-    if (input != nullptr && input->GetNumberOfCells() > 0)
-      input->GetBounds(local_bounds.data());
-    return start(several ? controller : nullptr, local_bounds, changed);
+    if (s.flow.data_set != nullptr && s.flow.data_set->GetNumberOfCells() > 0)
+      s.flow.data_set->GetBounds(local_bounds.data());
+    Distributed_input pieces = start(several ? controller : nullptr, local_bounds, changed);
+    pieces.note = s.flow.note;
+    return pieces;
   }
 
   /// Whether the samples come from other ranks (more than one process).
@@ -385,7 +397,8 @@ private:
     std::size_t exchanges = 0;
     std::thread::id owner;                           // the thread that may exchange
     vtkMTimeType input_time = 0;                     // of the input sampled in `local`
-    std::string array_name;
+    Velocity_selection selection;
+    Flow_data_set flow;                              // what `local` samples
     bool have_field = false;
   };
   std::shared_ptr<State> m_state;

@@ -11,6 +11,8 @@
 #include <CGAL/Flow_aligned_surfaces/VTK_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 
+#include "fas_flow_input.h"
+
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -66,28 +68,21 @@ private:
   std::variant<FAS::Regular_grid_flow_field_3<Kernel>, FAS::VTK_flow_field_3<Kernel>> m_field;
 };
 
-/// The name of the velocity array chosen in the filter's array selector, empty if none.
-inline std::string selected_array_name(vtkAlgorithm* filter)
-{
-  vtkInformation* info = filter->GetInputArrayInformation(0);
-  if (info == nullptr || !info->Has(vtkDataObject::FIELD_NAME()))
-    return std::string();
-  return info->Get(vtkDataObject::FIELD_NAME());
-}
-
-/// The velocity field of `data_set`'s array `array_name` (the first 3-component array when the
-/// name is empty).  An image that is a piece of a larger one (`whole_extent`, from the pipeline;
+/// The velocity field of `data_set`'s array `selection` (the first 3-component array when its
+/// name is empty; a cell array is sampled per cell, see `with_selected_association()`).  An image that is a piece of a larger one (`whole_extent`, from the pipeline;
 /// null: the image is whole) samples bit for bit as the whole image would, so that its pieces on
 /// several ranks give the serial samples.  \throws std::invalid_argument naming the data set and
 /// the array.
-inline Velocity_field make_velocity_field(vtkDataSet* data_set, const std::string& array_name,
+inline Velocity_field make_velocity_field(vtkDataSet* data_set, const Velocity_selection& selection,
                                           const int* whole_extent = nullptr)
 {
   if (data_set == nullptr)
     throw std::invalid_argument("the input is not a data set (vtkDataSet)");
   auto* image = vtkImageData::SafeDownCast(data_set);
-  vtkDataArray* points_array =
-      array_name.empty() ? nullptr : data_set->GetPointData()->GetArray(array_name.c_str());
+  const std::string& array_name = selection.name;
+  vtkDataArray* points_array = array_name.empty() || selection.on_cells()
+                                   ? nullptr
+                                   : data_set->GetPointData()->GetArray(array_name.c_str());
   if (image != nullptr && points_array != nullptr && points_array->GetNumberOfComponents() == 3) {
     int dims[3];
     image->GetDimensions(dims);
@@ -128,8 +123,8 @@ inline Velocity_field make_velocity_field(vtkDataSet* data_set, const std::strin
   }
   if (array_name.empty())
     return Velocity_field(FAS::VTK_flow_field_3<Kernel>(data_set));
-  return Velocity_field(
-      FAS::VTK_flow_field_3<Kernel>(data_set, FAS::parameters::array_name(array_name)));
+  return Velocity_field(FAS::VTK_flow_field_3<Kernel>(with_selected_association(data_set, selection),
+                                                      FAS::parameters::array_name(array_name)));
 }
 
 /// `tm` as polygonal data (points in vertex index order, one triangle per face).
@@ -243,6 +238,17 @@ void add_point_velocities(vtkPolyData* polydata, const Field& field)
   polydata->GetPointData()->AddArray(velocity);
   polydata->GetPointData()->SetActiveVectors("velocity");
   polydata->GetPointData()->AddArray(sampled);
+}
+
+/// \throws std::invalid_argument naming the panel's property `label`, its `value` and the `range`
+/// it must be in, unless `in_range`.
+inline void require_property(bool in_range, const char* label, double value, const char* range)
+{
+  if (in_range)
+    return;
+  std::ostringstream os;
+  os << "the property " << label << " is " << value << "; it must be " << range;
+  throw std::invalid_argument(os.str());
 }
 
 /// Bounds (xmin, xmax, ymin, ymax, zmin, zmax) in words, for messages ("x a..b, y c..d, z e..f").

@@ -16,10 +16,13 @@
 
 namespace fas_paraview {
 
-/// Port 0: any data set (the velocity); port 1: polygonal data (the surface).
+/// Port 0: the flow (any data set, or a composite one); port 1: polygonal data (the surface).
 inline int fill_surface_filter_input_port(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkDataSet" : "vtkPolyData");
+  if (port == 0)
+    accept_flow_inputs(info);
+  else
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
 }
 

@@ -160,7 +160,7 @@ int vtkFlowAlignedParametrize::RequestData(
   // flow for rank 0 (one process: the input's own field).
   const vtkSmartPointer<vtkPolyData> input_surface = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
   const Distributed_input pieces =
-    in.field.update(inputVector[0]->GetInformationObject(0), selected_array_name(this));
+    in.field.update(inputVector[0]->GetInformationObject(0), selected_velocity(this));
   if (!in.field.is_root())
   {
     serve_rank_0(in.field, outputVector);

@@ -1,5 +1,6 @@
 #include "vtkFlowAlignedSurface.h"
 
+#include "fas_default_patch.h"
 #include "fas_distributed_field.h"
 #include "fas_paraview_support.h"
 
@@ -8,10 +9,12 @@
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 
 #include <vtkCellData.h>
+#include <vtkDoubleArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMath.h>
 #include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <algorithm>
@@ -44,15 +47,76 @@ struct Patch_key {
   }
 };
 
-void make_patch(Mesh& tm, int shape, const double center[3], const double normal[3], double size, int faces)
+// The patch the properties ask for: Center, Normal, Size (or the default patch, Size 0).
+struct Patch_pose {
+  std::array<double, 3> center{}, normal{};
+  double size = 0;
+};
+
+void make_patch(Mesh& tm, int shape, const Patch_pose& pose, int faces)
 {
   tm.clear();
-  const Point c(center[0], center[1], center[2]);
-  const Vector n(normal[0], normal[1], normal[2]);
+  const Point c(pose.center[0], pose.center[1], pose.center[2]);
+  const Vector n(pose.normal[0], pose.normal[1], pose.normal[2]);
   if (shape == vtkFlowAlignedSurface::DISK)
-    FAS::make_disk_patch(tm, c, n, size / 2, std::size_t(faces));
+    FAS::make_disk_patch(tm, c, n, pose.size / 2, std::size_t(faces));
   else
-    FAS::make_planar_patch(tm, c, n, size, size, std::size_t(faces));
+    FAS::make_planar_patch(tm, c, n, pose.size, pose.size, std::size_t(faces));
+}
+
+// The default patch of `input` sampled locally (for the panel's defaults, before any update);
+// nothing when the input has no data yet or cannot be sampled (the update says why).
+std::optional<Default_patch> local_default_patch(vtkDataObject* input, const Velocity_selection& selection,
+                                                 bool orthogonal)
+{
+  const Flow_data_set flow = flow_data_set(input);
+  if (flow.data_set == nullptr || flow.data_set->GetNumberOfCells() == 0)
+    return std::nullopt;
+  try
+  {
+    const Velocity_field field = make_velocity_field(flow.data_set, selection);
+    double bounds[6];
+    flow.data_set->GetBounds(bounds);
+    return default_patch(field, bounds, orthogonal);
+  }
+  catch (const std::exception&)
+  {
+    return std::nullopt;
+  }
+}
+
+// `info` = the ranges (value, value + span) of the components of `value`: their minima are the
+// defaults ParaView's panel takes (DoubleRangeDomain, default_mode min).
+void set_range_info(vtkDoubleArray* info, const std::array<double, 3>& value, double span)
+{
+  info->SetNumberOfTuples(6);
+  for (int i = 0; i < 3; ++i)
+  {
+    info->SetValue(2 * i, value[std::size_t(i)]);
+    info->SetValue(2 * i + 1, value[std::size_t(i)] + span);
+  }
+}
+
+// Every property in its range, or std::invalid_argument naming it.
+void check_properties(vtkFlowAlignedSurface* f)
+{
+  require_property(f->GetSize() >= 0, "Size", f->GetSize(),
+                   "> 0 (the side of the square or the diameter of the disk; 0: placed from the data)");
+  require_property(f->GetNumberOfFaces() >= 2 && f->GetNumberOfFaces() <= 10000000, "Number Of Faces",
+                   f->GetNumberOfFaces(), "from 2 to 10,000,000");
+  require_property(f->GetNumberOfIterations() >= 0 && f->GetNumberOfIterations() <= 100000,
+                   "Number Of Iterations", f->GetNumberOfIterations(), "from 0 to 100,000");
+  require_property(f->GetMaxRotationAngle() > 0 && f->GetMaxRotationAngle() <= vtkMath::Pi(),
+                   "Max Rotation Angle", f->GetMaxRotationAngle(), "in (0, pi] radians (0.1 as in the paper)");
+  require_property(f->GetMaxDihedralAngle() > 0 && f->GetMaxDihedralAngle() <= vtkMath::Pi(),
+                   "Max Dihedral Angle", f->GetMaxDihedralAngle(), "in (0, pi] radians (pi/2 as in the paper)");
+  require_property(f->GetConvergenceAngle() >= 0, "Convergence Angle", f->GetConvergenceAngle(),
+                   ">= 0 radians (1e-6 as in the paper)");
+  const double* n = f->GetNormal();
+  require_property(std::isfinite(n[0] + n[1] + n[2]) && n[0] * n[0] + n[1] * n[1] + n[2] * n[2] > 0, "Normal",
+                   std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), "a non-zero vector (its length is shown)");
+  const double* c = f->GetCenter();
+  require_property(std::isfinite(c[0] + c[1] + c[2]), "Center", c[0] + c[1] + c[2], "finite coordinates");
 }
 
 double milliseconds_since(std::chrono::steady_clock::time_point start)
@@ -65,6 +129,18 @@ std::string point_text(const double x[3])
   std::ostringstream os;
   os << "(" << x[0] << ", " << x[1] << ", " << x[2] << ")";
   return os.str();
+}
+
+// Says how long the iterations left take when that is long (from the first one's duration).
+void expect_duration(double first_ms, std::size_t left)
+{
+  const double seconds = first_ms * double(left) / 1000;
+  if (seconds < 30)
+    return;
+  std::ostringstream os;
+  os << "Flow-Aligned Surface: an iteration takes " << first_ms / 1000 << " s: the " << left
+     << " iterations left take about " << std::lround(seconds) << " s (or fewer, if it converges first)\n";
+  vtkOutputWindowDisplayText(os.str().c_str());
 }
 
 } // namespace
@@ -80,6 +156,12 @@ struct vtkFlowAlignedSurface::Internals {
   int factorizations_before = 0; // by the deformations replaced so far
 
   std::array<double, 6> pose{};  // centre and normal the iterations started from
+
+  // The default patch offered to the panel, and what it was computed for.
+  vtkNew<vtkDoubleArray> center_info, normal_info, size_info;
+  vtkMTimeType default_input_time = 0;
+  Velocity_selection default_selection;
+  int default_alignment = -1;
   int alignment = -1;
   bool restart = true;
   std::vector<std::vector<Point>> positions; // after 0, 1, ... iterations
@@ -87,6 +169,15 @@ struct vtkFlowAlignedSurface::Internals {
   bool converged = false;
 
   Kept_outputs kept; // the outputs of the last successful run
+  double exchange_ms = 0, step_ms = 0; // of the iterations of the last update
+
+  // The steps of an update on rank 0 (RequestData), in order.
+  std::array<double, 7> requested_pose(vtkFlowAlignedSurface* f, const Distributed_input& pieces);
+  void prepare_patch(vtkFlowAlignedSurface* f, const std::array<double, 7>& requested_pose);
+  void start_iterations(const Distributed_input& pieces);
+  std::size_t iterate(vtkFlowAlignedSurface* f, std::size_t requested);
+  void show_iteration(vtkFlowAlignedSurface* f, std::size_t k, std::size_t computed,
+                      const Distributed_input& pieces, vtkInformationVector* outputVector);
 
   int factorizations() const
   {
@@ -107,7 +198,7 @@ vtkFlowAlignedSurface::vtkFlowAlignedSurface()
   : Center{ 0, 0, 0 }
   , Normal{ 1, 0, 0 }
   , PatchShape(PLANAR)
-  , Size(1)
+  , Size(0)
   , NumberOfFaces(5000)
   , Alignment(TANGENTIAL)
   , MaxRotationAngle(0.1)
@@ -132,173 +223,101 @@ int vtkFlowAlignedSurface::GetNumberOfFactorizations()
 
 int vtkFlowAlignedSurface::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  accept_flow_inputs(info);
   return 1;
 }
 
+vtkDoubleArray* vtkFlowAlignedSurface::GetCenterInfo()
+{
+  return this->Internal->center_info;
+}
+
+vtkDoubleArray* vtkFlowAlignedSurface::GetNormalInfo()
+{
+  return this->Internal->normal_info;
+}
+
+vtkDoubleArray* vtkFlowAlignedSurface::GetSizeInfo()
+{
+  return this->Internal->size_info;
+}
+
 int vtkFlowAlignedSurface::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // The iterations as time steps: the time controls play the deformation.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  std::vector<double> steps(std::size_t(this->NumberOfIterations) + 1);
+  const int iterations = std::clamp(this->NumberOfIterations, 0, 100000);
+  std::vector<double> steps(std::size_t(iterations) + 1);
   for (std::size_t k = 0; k < steps.size(); ++k)
     steps[k] = double(k);
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), int(steps.size()));
-  const double range[2] = { 0., double(this->NumberOfIterations) };
+  const double range[2] = { 0., double(iterations) };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  this->OfferDefaultPatch(vtkDataObject::GetData(inputVector[0], 0));
   return 1;
+}
+
+void vtkFlowAlignedSurface::OfferDefaultPatch(vtkDataObject* input)
+{
+  Internals& in = *this->Internal;
+  const Velocity_selection selection = selected_velocity(this);
+  const vtkMTimeType input_time = input != nullptr ? input->GetMTime() : 0;
+  if (input_time == in.default_input_time && selection == in.default_selection &&
+      this->Alignment == in.default_alignment)
+    return;
+  in.default_input_time = input_time;
+  in.default_selection = selection;
+  in.default_alignment = this->Alignment;
+  for (vtkDoubleArray* info : { in.center_info.Get(), in.normal_info.Get(), in.size_info.Get() })
+    info->SetNumberOfTuples(0);
+  const std::optional<Default_patch> patch =
+    local_default_patch(input, selection, this->Alignment == ORTHOGONAL);
+  if (!patch)
+    return;
+  set_range_info(in.center_info, patch->center, 8 * patch->size);
+  set_range_info(in.normal_info, patch->normal, 1);
+  in.size_info->SetNumberOfTuples(2);
+  in.size_info->SetValue(0, 0);
+  in.size_info->SetValue(1, 2 * patch->size);
 }
 
 int vtkFlowAlignedSurface::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   Internals& in = *this->Internal;
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-
-  std::size_t requested = std::size_t(this->NumberOfIterations);
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-  {
-    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    requested = std::size_t(std::lround(std::clamp(t, 0., double(this->NumberOfIterations))));
-  }
-
   try
   {
     // The field: sampled anew when the input or the array changed; the deformation keeps its
     // factorization (it depends on the patch only).  On several ranks every rank builds the
     // field of its own piece (none for a piece without cells) and rank 0 learns the pieces'
     // state; then the other ranks only answer rank 0's probes.
-    const Distributed_input pieces = in.field.update(inputVector[0]->GetInformationObject(0), selected_array_name(this));
+    const Distributed_input pieces = in.field.update(inputVector[0]->GetInformationObject(0), selected_velocity(this));
     if (!in.field.is_root())
     {
       serve_rank_0(in.field, outputVector);
       return 1;
     }
     Finish_probes finish_probes(in.field);
+    check_properties(this);
     pieces.require_samples();
     if (pieces.changed)
+    {
       in.restart = true;
-
-    const Patch_key key{ this->PatchShape, this->Size, this->NumberOfFaces, this->MaxRotationAngle,
-      this->MaxDihedralAngle, this->ConvergenceAngle };
-    const std::array<double, 6> pose{ this->Center[0], this->Center[1], this->Center[2],
-      this->Normal[0], this->Normal[1], this->Normal[2] };
-    if (!in.key || !(*in.key == key))
-    {
-      // A new patch: new operators, one factorization.
-      in.factorizations_before = in.factorizations();
-      in.deformation.reset();
-      in.key.reset();
-      make_patch(in.tm, this->PatchShape, this->Center, this->Normal, this->Size, this->NumberOfFaces);
-      in.deformation = std::make_unique<Deformation>(in.tm, in.field,
-        this->Alignment == ORTHOGONAL ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL,
-        FAS::parameters::max_rotation_angle(this->MaxRotationAngle,
-          FAS::parameters::max_dihedral_angle(this->MaxDihedralAngle,
-            FAS::parameters::convergence_angle(
-              this->ConvergenceAngle, FAS::parameters::use_parallelism(true)))));
-      in.key = key;
-      in.pose = pose;
-      in.positions.clear();
-      in.restart = true;
+      if (!pieces.note.empty())
+        vtkOutputWindowDisplayText(("Flow-Aligned Surface: " + pieces.note + "\n").c_str());
     }
-    else if (pose != in.pose)
+    std::size_t requested = std::size_t(this->NumberOfIterations);
+    if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
     {
-      // A rigid move of the same patch: the positions of the patch at the new pose, and the
-      // factorization stays (the operators of a rigidly moved mesh are the same).
-      Mesh moved;
-      make_patch(moved, this->PatchShape, this->Center, this->Normal, this->Size, this->NumberOfFaces);
-      if (moved.number_of_vertices() != in.tm.number_of_vertices())
-        throw std::logic_error("the patch at the new pose has another connectivity");
-      for (Mesh::Vertex_index v : in.tm.vertices())
-        in.tm.point(v) = moved.point(v);
-      in.pose = pose;
-      in.positions.clear();
-      in.restart = true;
+      const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      requested = std::size_t(std::lround(std::clamp(t, 0., double(this->NumberOfIterations))));
     }
-    if (this->Alignment != in.alignment)
-    {
-      in.deformation->set_alignment(
-        this->Alignment == ORTHOGONAL ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL);
-      in.alignment = this->Alignment;
-      in.restart = true;
-    }
-    if (in.restart)
-    {
-      if (!in.positions.empty())
-      {
-        // Back to the patch at this pose (the iterations moved it).
-        std::size_t i = 0;
-        for (Mesh::Vertex_index v : in.tm.vertices())
-          in.tm.point(v) = in.positions.front()[i++];
-      }
-      in.positions.assign(1, in.current_positions());
-      in.reports.clear();
-      in.converged = false;
-      in.restart = false;
-      in.field.probe_points_of([&] { FAS::normalized_flux(in.tm, in.field); });
-      const FAS::Normalized_flux start = FAS::normalized_flux(in.tm, in.field);
-      if (!start.value)
-      {
-        in.restart = true; // nothing of this pose is kept
-        throw std::invalid_argument("the patch at centre " + point_text(this->Center) +
-          " has no flow sample: it lies outside the input data set (bounds " + bounds_text(pieces.bounds.data()) +
-          "); move it into the data");
-      }
-    }
-    // Only the pose of the patch and the first positions were set when the reports are empty;
-    // the iterations up to the requested one are computed once and kept.  On several ranks each
-    // iteration's samples are probed first, in one exchange.
-    double exchange_ms = 0, step_ms = 0;
-    std::size_t iterations_now = 0;
-    while (in.positions.size() <= requested && !in.converged)
-    {
-      if (in.positions.size() != in.reports.size() + 1)
-        throw std::logic_error("iterations out of step");
-      if (in.field.distributed())
-      {
-        const auto exchange_start = std::chrono::steady_clock::now();
-        std::vector<Point> points;
-        in.deformation->next_sample_points(std::back_inserter(points));
-        in.field.probe(points);
-        exchange_ms += milliseconds_since(exchange_start);
-      }
-      const auto step_start = std::chrono::steady_clock::now();
-      const FAS::Iteration_report r = in.deformation->step();
-      step_ms += milliseconds_since(step_start);
-      ++iterations_now;
-      in.reports.push_back(r);
-      in.positions.push_back(in.current_positions());
-      in.converged = r.converged;
-    }
-
-    const std::size_t k = std::min(requested, in.positions.size() - 1);
-    Mesh shown = in.tm;
-    {
-      std::size_t i = 0;
-      for (Mesh::Vertex_index v : shown.vertices())
-        shown.point(v) = in.positions[k][i++];
-    }
-    const auto [result, flux] = aligned_surface_output(shown, in.field);
-    add_field_value(result, "iteration", double(k));
-    add_field_value(result, "converged", in.converged && k + 1 >= in.positions.size() ? 1. : 0.);
-    add_field_value(result, "max_rotation_angle", k == 0 ? 0. : in.reports[k - 1].max_rotation_angle);
-    add_field_value(result, "number_of_factorizations", double(in.factorizations()));
-    if (in.field.distributed())
-    {
-      // How the input was spread and what the exchanges cost (for the benchmark and the tests).
-      add_distribution_values(result, pieces, in.field);
-      add_field_value(result, "iterations_computed", double(iterations_now));
-      if (iterations_now > 0)
-      {
-        add_field_value(result, "exchange_ms_per_iteration", exchange_ms / double(iterations_now));
-        add_field_value(result, "step_ms_per_iteration", step_ms / double(iterations_now));
-      }
-    }
-    if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
-      vtkWarningMacro(<< "Flow-Aligned Surface: " << warning);
-    output->ShallowCopy(result);
+    in.prepare_patch(this, in.requested_pose(this, pieces));
+    in.start_iterations(pieces);
+    const std::size_t computed = in.iterate(this, requested);
+    in.show_iteration(this, std::min(requested, in.positions.size() - 1), computed, pieces, outputVector);
     in.kept.keep(outputVector);
     return 1;
   }
@@ -308,6 +327,191 @@ int vtkFlowAlignedSurface::RequestData(
     vtkErrorMacro(<< "Flow-Aligned Surface: " << e.what() << (kept ? "; the previous output is kept" : ""));
     return 1;
   }
+}
+
+std::array<double, 7> vtkFlowAlignedSurface::Internals::requested_pose(vtkFlowAlignedSurface* f, const Distributed_input& pieces)
+{
+  Internals& in = *this;
+  if (f->Size > 0)
+    return { f->Center[0], f->Center[1], f->Center[2], f->Normal[0], f->Normal[1],
+      f->Normal[2], f->Size };
+  // Size 0: the default patch, placed now (its samples probed from every rank in one exchange).
+  const bool orthogonal = f->Alignment == vtkFlowAlignedSurface::ORTHOGONAL;
+  in.field.probe_points_of([&] { default_patch(in.field, pieces.bounds.data(), orthogonal); });
+  const std::optional<Default_patch> patch = default_patch(in.field, pieces.bounds.data(), orthogonal);
+  if (!patch)
+    throw std::invalid_argument("Size is 0 (place the patch from the data), but the Input has no flow sample "
+                                "on a lattice over its bounds (" + bounds_text(pieces.bounds.data()) +
+                                "); set Center, Normal and Size");
+  if (!in.key || in.key->size != patch->size)
+    vtkOutputWindowDisplayText(("Flow-Aligned Surface: Size 0: the patch placed " + patch->description +
+      ", centre " + point_text(patch->center.data()) + ", normal " + point_text(patch->normal.data()) +
+      ", size " + std::to_string(patch->size) + "\n").c_str());
+  return { patch->center[0], patch->center[1], patch->center[2], patch->normal[0], patch->normal[1],
+    patch->normal[2], patch->size };
+}
+
+void vtkFlowAlignedSurface::Internals::prepare_patch(vtkFlowAlignedSurface* f, const std::array<double, 7>& requested_pose)
+{
+  Internals& in = *this;
+  Patch_pose pose;
+  std::copy(requested_pose.begin(), requested_pose.begin() + 3, pose.center.begin());
+  std::copy(requested_pose.begin() + 3, requested_pose.begin() + 6, pose.normal.begin());
+  pose.size = requested_pose[6];
+  const Patch_key key{ f->PatchShape, pose.size, f->NumberOfFaces, f->MaxRotationAngle,
+    f->MaxDihedralAngle, f->ConvergenceAngle };
+  const std::array<double, 6> center_normal{ pose.center[0], pose.center[1], pose.center[2], pose.normal[0],
+    pose.normal[1], pose.normal[2] };
+  if (!in.key || !(*in.key == key))
+  {
+    // A new patch: new operators, one factorization.
+    if (f->NumberOfFaces >= 1000000)
+      vtkOutputWindowDisplayText(("Flow-Aligned Surface: " + std::to_string(f->NumberOfFaces) +
+        " faces: the factorization and each iteration take seconds to minutes; the progress bar "
+        "shows the iterations\n").c_str());
+    in.factorizations_before = in.factorizations();
+    in.deformation.reset();
+    in.key.reset();
+    make_patch(in.tm, f->PatchShape, pose, f->NumberOfFaces);
+    f->UpdateProgress(0.01);
+    in.deformation = std::make_unique<Deformation>(in.tm, in.field,
+      f->Alignment == vtkFlowAlignedSurface::ORTHOGONAL ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL,
+      FAS::parameters::max_rotation_angle(f->MaxRotationAngle,
+        FAS::parameters::max_dihedral_angle(f->MaxDihedralAngle,
+          FAS::parameters::convergence_angle(
+            f->ConvergenceAngle, FAS::parameters::use_parallelism(true)))));
+    in.key = key;
+    in.pose = center_normal;
+    in.alignment = f->Alignment;
+    in.positions.clear();
+    in.restart = true;
+  }
+  else if (center_normal != in.pose)
+  {
+    // A rigid move of the same patch: the positions of the patch at the new pose, and the
+    // factorization stays (the operators of a rigidly moved mesh are the same).
+    Mesh moved;
+    make_patch(moved, f->PatchShape, pose, f->NumberOfFaces);
+    if (moved.number_of_vertices() != in.tm.number_of_vertices())
+      throw std::logic_error("the patch at the new pose has another connectivity");
+    for (Mesh::Vertex_index v : in.tm.vertices())
+      in.tm.point(v) = moved.point(v);
+    in.pose = center_normal;
+    in.positions.clear();
+    in.restart = true;
+  }
+  if (f->Alignment != in.alignment)
+  {
+    in.deformation->set_alignment(
+      f->Alignment == vtkFlowAlignedSurface::ORTHOGONAL ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL);
+    in.alignment = f->Alignment;
+    in.restart = true;
+  }
+}
+
+void vtkFlowAlignedSurface::Internals::start_iterations(const Distributed_input& pieces)
+{
+  Internals& in = *this;
+  if (!in.restart)
+    return;
+  if (!in.positions.empty())
+  {
+    // Back to the patch at this pose (the iterations moved it).
+    std::size_t i = 0;
+    for (Mesh::Vertex_index v : in.tm.vertices())
+      in.tm.point(v) = in.positions.front()[i++];
+  }
+  in.positions.assign(1, in.current_positions());
+  in.reports.clear();
+  in.converged = false;
+  in.restart = false;
+  in.field.probe_points_of([&] { FAS::normalized_flux(in.tm, in.field); });
+  const FAS::Normalized_flux start = FAS::normalized_flux(in.tm, in.field);
+  if (!start.value)
+  {
+    in.restart = true; // nothing of this pose is kept
+    throw std::invalid_argument("the patch at Center " + point_text(in.pose.data()) +
+      " has no flow sample: it lies outside the Input (bounds " + bounds_text(pieces.bounds.data()) +
+      "); move it into the data");
+  }
+}
+
+std::size_t vtkFlowAlignedSurface::Internals::iterate(vtkFlowAlignedSurface* f, std::size_t requested)
+{
+  // Only the pose of the patch and the first positions were set when the reports are empty;
+  // the iterations up to the requested one are computed once and kept.  On several ranks each
+  // iteration's samples are probed first, in one exchange.  Abort (AbortExecute) stops after the
+  // iteration in progress; the next update goes on from there.
+  Internals& in = *this;
+  in.exchange_ms = in.step_ms = 0;
+  const std::size_t first = in.positions.size();
+  std::size_t computed = 0;
+  const auto started = std::chrono::steady_clock::now();
+  while (in.positions.size() <= requested && !in.converged)
+  {
+    if (f->GetAbortExecute())
+    {
+      f->SetAbortExecute(0);
+      f->Modified(); // the output is not the requested one: the next update goes on
+      vtkWarningWithObjectMacro(f, << "Flow-Aligned Surface: cancelled after iteration " << in.positions.size() - 1 << " of "
+                      << requested << "; the output shows it, and the next update goes on from there");
+      break;
+    }
+    if (in.positions.size() != in.reports.size() + 1)
+      throw std::logic_error("iterations out of step");
+    if (in.field.distributed())
+    {
+      const auto exchange_start = std::chrono::steady_clock::now();
+      std::vector<Point> points;
+      in.deformation->next_sample_points(std::back_inserter(points));
+      in.field.probe(points);
+      in.exchange_ms += milliseconds_since(exchange_start);
+    }
+    const auto step_start = std::chrono::steady_clock::now();
+    const FAS::Iteration_report r = in.deformation->step();
+    in.step_ms += milliseconds_since(step_start);
+    ++computed;
+    in.reports.push_back(r);
+    in.positions.push_back(in.current_positions());
+    in.converged = r.converged;
+    const double done = double(in.positions.size() - first) / double(requested + 1 - first);
+    f->UpdateProgress(0.02 + 0.98 * done);
+    if (computed == 1 && requested + 1 > in.positions.size())
+      expect_duration(milliseconds_since(started), requested + 1 - in.positions.size());
+  }
+  return computed;
+}
+
+void vtkFlowAlignedSurface::Internals::show_iteration(vtkFlowAlignedSurface* f, std::size_t k, std::size_t computed, const Distributed_input& pieces,
+                                          vtkInformationVector* outputVector)
+{
+  Internals& in = *this;
+  Mesh shown = in.tm;
+  {
+    std::size_t i = 0;
+    for (Mesh::Vertex_index v : shown.vertices())
+      shown.point(v) = in.positions[k][i++];
+  }
+  const auto [result, flux] = aligned_surface_output(shown, in.field);
+  add_field_value(result, "iteration", double(k));
+  add_field_value(result, "converged", in.converged && k + 1 >= in.positions.size() ? 1. : 0.);
+  add_field_value(result, "max_rotation_angle", k == 0 ? 0. : in.reports[k - 1].max_rotation_angle);
+  add_field_value(result, "number_of_factorizations", double(in.factorizations()));
+  add_field_value(result, "size", in.key->size);
+  if (in.field.distributed())
+  {
+    // How the input was spread and what the exchanges cost (for the benchmark and the tests).
+    add_distribution_values(result, pieces, in.field);
+    add_field_value(result, "iterations_computed", double(computed));
+    if (computed > 0)
+    {
+      add_field_value(result, "exchange_ms_per_iteration", in.exchange_ms / double(computed));
+      add_field_value(result, "step_ms_per_iteration", in.step_ms / double(computed));
+    }
+  }
+  if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
+    vtkWarningWithObjectMacro(f, << "Flow-Aligned Surface: " << warning);
+  vtkPolyData::GetData(outputVector, 0)->ShallowCopy(result);
 }
 
 void vtkFlowAlignedSurface::PrintSelf(ostream& os, vtkIndent indent)

@@ -7,6 +7,8 @@
 #include "FlowAlignedSurfacesFiltersModule.h"
 #include <vtkPolyDataAlgorithm.h>
 
+class vtkDoubleArray;
+
 /// Input: any data set with a 3-component point or cell array (the velocity, chosen with
 /// `SetInputArrayToProcess(0, ...)`).  Output: the surface after the requested iteration.
 ///
@@ -21,8 +23,20 @@
 /// when no face has a sample), `sampled_area_fraction`, `iteration`, `converged`,
 /// `max_rotation_angle` and `number_of_factorizations`.
 ///
-/// On bad input (no 3-component array, a patch outside the data, a surface leaving the data) it
-/// reports the error and keeps its previous output.
+/// Defaults that work on the first Apply: when the input's information is requested (ParaView
+/// does when the filter is created), the filter places a patch where the main job would
+/// (fas_default_patch.h) and offers it through GetCenterInfo(), GetNormalInfo() and
+/// GetSizeInfo(), from which ParaView's panel takes the defaults of Center, Normal and Size.
+/// Size 0 asks for that placement when the filter runs (for a script whose input had no data yet
+/// when the filter was created).
+///
+/// Progress and Abort: the filter reports its progress per iteration and stops after the
+/// iteration in progress when AbortExecute is set (ParaView's Abort button), keeping the
+/// iterations computed so far; the next update goes on from there.
+///
+/// On bad input (a property out of its range, no 3-component array, a patch outside the data, a
+/// surface leaving the data) it reports the error, naming the property or the input, and keeps
+/// its previous output.
 ///
 /// Under MPI (pvbatch --mpi, pvserver on several processes) with the input spread over the ranks,
 /// the surface and its factorization live on rank 0, which outputs it; the other ranks output an
@@ -64,7 +78,8 @@ public:
   vtkSetMacro(Size, double);
   vtkGetMacro(Size, double);
   /// The number of triangles the patch is built with (approximately).
-  vtkSetClampMacro(NumberOfFaces, int, 2, 10000000);
+  /// From 2 to 10^7; a value out of range is reported when the filter runs (never clamped).
+  vtkSetMacro(NumberOfFaces, int);
   vtkGetMacro(NumberOfFaces, int);
   /// TANGENTIAL (a stream surface) or ORTHOGONAL (a seeding surface).
   vtkSetClampMacro(Alignment, int, TANGENTIAL, ORTHOGONAL);
@@ -79,11 +94,18 @@ public:
   vtkSetMacro(ConvergenceAngle, double);
   vtkGetMacro(ConvergenceAngle, double);
   /// The number of iterations, and of time steps after the initial patch.
-  vtkSetClampMacro(NumberOfIterations, int, 0, 100000);
+  vtkSetMacro(NumberOfIterations, int);
   vtkGetMacro(NumberOfIterations, int);
 
   /// The number of factorizations of the Poisson system since this filter was created.
   int GetNumberOfFactorizations();
+
+  /// The default patch for the current input, array and alignment, as ranges for ParaView's
+  /// panel: Center and Normal are the minima of their ranges (c, c + extent per component), Size
+  /// the middle of its range (0, 2 size); empty arrays while the input has no data.
+  vtkDoubleArray* GetCenterInfo();
+  vtkDoubleArray* GetNormalInfo();
+  vtkDoubleArray* GetSizeInfo();
 
 protected:
   vtkFlowAlignedSurface();
@@ -106,6 +128,8 @@ protected:
 
 private:
   vtkFlowAlignedSurface(const vtkFlowAlignedSurface&) = delete;
+  // Computes the default patch for `input` (when it, the array or the alignment changed).
+  void OfferDefaultPatch(vtkDataObject* input);
   void operator=(const vtkFlowAlignedSurface&) = delete;
 
   struct Internals;

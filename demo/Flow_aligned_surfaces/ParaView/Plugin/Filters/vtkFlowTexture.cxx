@@ -114,7 +114,7 @@ int vtkFlowTexture::RequestData(
   // flow for rank 0 (one process: the input's own field).
   const vtkSmartPointer<vtkPolyData> input_surface = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
   const Distributed_input pieces =
-    in.field.update(inputVector[0]->GetInformationObject(0), selected_array_name(this));
+    in.field.update(inputVector[0]->GetInformationObject(0), selected_velocity(this));
   // The texture does not depend on the flow: every rank gives the part of it that it is asked
   // for (ParaView asks each rank for a piece of an image output).
   const auto texture_piece = [this, outputVector] {

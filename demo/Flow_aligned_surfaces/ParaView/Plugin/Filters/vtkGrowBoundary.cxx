@@ -2,6 +2,7 @@
 
 #include "fas_distributed_field.h"
 #include "fas_paraview_support.h"
+#include "fas_paraview_surface_input.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 
@@ -78,8 +79,7 @@ vtkGrowBoundary::~vtkGrowBoundary()
 
 int vtkGrowBoundary::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkDataSet" : "vtkPolyData");
-  return 1;
+  return fill_surface_filter_input_port(port, info);
 }
 
 int vtkGrowBoundary::RequestData(
@@ -91,7 +91,7 @@ int vtkGrowBoundary::RequestData(
   // for rank 0 (one process: the input's own field).
   const vtkSmartPointer<vtkPolyData> surface = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
   const Distributed_input pieces =
-    in.field.update(inputVector[0]->GetInformationObject(0), selected_array_name(this));
+    in.field.update(inputVector[0]->GetInformationObject(0), selected_velocity(this));
   if (!in.field.is_root())
   {
     serve_rank_0(in.field, outputVector);

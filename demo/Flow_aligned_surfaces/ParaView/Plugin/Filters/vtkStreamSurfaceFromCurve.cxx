@@ -2,6 +2,7 @@
 
 #include "fas_distributed_field.h"
 #include "fas_paraview_support.h"
+#include "fas_paraview_surface_input.h"
 
 #include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
 
@@ -79,8 +80,7 @@ vtkStreamSurfaceFromCurve::~vtkStreamSurfaceFromCurve()
 
 int vtkStreamSurfaceFromCurve::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkDataSet" : "vtkPolyData");
-  return 1;
+  return fill_surface_filter_input_port(port, info);
 }
 
 int vtkStreamSurfaceFromCurve::RequestData(
@@ -93,7 +93,7 @@ int vtkStreamSurfaceFromCurve::RequestData(
   // the samples before them: on several ranks every sample is an exchange of its own.
   const vtkSmartPointer<vtkPolyData> seeds = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
   const Distributed_input pieces =
-    in.field.update(inputVector[0]->GetInformationObject(0), selected_array_name(this));
+    in.field.update(inputVector[0]->GetInformationObject(0), selected_velocity(this));
   if (!in.field.is_root())
   {
     serve_rank_0(in.field, outputVector);
