@@ -133,8 +133,7 @@ else:
                       % (plugin, qch_file, sum(len(run) for run in runs), len(qch_base64)))
 
 if errors:
-    print("test_plugin_help: FAILED\n  " + "\n  ".join(errors))
-    sys.exit(1)
+    raise RuntimeError("test_plugin_help: FAILED\n  " + "\n  ".join(errors))
 print("test_plugin_help: %d filters, %d properties: every page names its filter's properties and "
       "shows the XML's documentation; the .qch and the plugin carry them"
       % (len(filters), sum(len(p) for _, _, p, _ in filters.values())))
