@@ -69,6 +69,9 @@ if [ "$vtk_set" = paraview ]; then
     paraview paraview-dev python3-paraview   # ParaView 5.11 with its VTK 9.2: the plugin, and VTK for everything else
     openmpi-bin libopenmpi-dev               # mpiexec and MPI's C headers (ParaView's CMake package asks for them)
     libqt5svg5                               # the GUI's icons
+    # The plugin's help pages (ParaView's "?" button): Qt's Help CMake package (qttools5-dev, which
+    # pulls in qtbase5-dev), qhelpgenerator and xmlpatterns; without them the plugin has no help.
+    qttools5-dev qttools5-dev-tools qtxmlpatterns5-dev-tools
     # What ParaView's CMake package and its VTK modules look for (paraview-dev does not depend on them):
     libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev
     libexpat1-dev libdouble-conversion-dev libutfcpp-dev python3-dev

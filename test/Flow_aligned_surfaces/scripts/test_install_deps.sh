@@ -2,7 +2,8 @@
 # scripts/install-deps.sh never removes a package: with a fake apt-get whose simulated install
 # would remove python3-vtk9 (as python3-paraview does on Debian bookworm), the script must name
 # the package, install nothing and fail; with a simulation that removes nothing it installs the
-# ParaView set by default and Debian's VTK with --debian-vtk; it upgrades an installed libexpat1
+# ParaView set (with Qt's help tools for the plugin's help pages) by default and Debian's VTK
+# (without them) with --debian-vtk; it upgrades an installed libexpat1
 # older than the lists offer; --check lists what is missing or outdated and calls no apt-get.
 # Run as: test_install_deps.sh <path of install-deps.sh>
 set -euo pipefail
@@ -58,6 +59,9 @@ export FAKE_LOG="$work/log2" FAKE_INSTALLED="" FAKE_SIMULATION='Inst cmake (3.25
 output=$(PATH="$work/bin:$PATH" bash "$script" 2>&1) || fail "the default set failed:\n$output"
 grep "install -y" "$FAKE_LOG" | grep -q " python3-paraview " || fail "python3-paraview was not installed:\n$(cat "$FAKE_LOG")"
 grep "install -y" "$FAKE_LOG" | grep -q "libvtk9-dev" && fail "libvtk9-dev was installed with the ParaView set"
+for tool in qttools5-dev qttools5-dev-tools qtxmlpatterns5-dev-tools; do
+  grep "install -y" "$FAKE_LOG" | grep -q " $tool\b" || fail "$tool (the plugin's help pages) was not installed:\n$(cat "$FAKE_LOG")"
+done
 
 # 3. --debian-vtk where python3-paraview is installed: libvtk9-dev is left out, the rest is
 #    installed.
@@ -72,6 +76,7 @@ export FAKE_LOG="$work/log4" FAKE_INSTALLED="" FAKE_SIMULATION='Inst cmake (3.25
 output=$(PATH="$work/bin:$PATH" bash "$script" --debian-vtk 2>&1) || fail "--debian-vtk failed:\n$output"
 grep "install -y" "$FAKE_LOG" | grep -q "libvtk9-dev" || fail "libvtk9-dev was not installed with --debian-vtk"
 grep "install -y" "$FAKE_LOG" | grep -q "paraview" && fail "ParaView was installed with --debian-vtk"
+grep "install -y" "$FAKE_LOG" | grep -q "qttools5" && fail "the plugin's help tools were installed with --debian-vtk"
 
 # 5. Everything there but libexpat1 is older than the lists offer: it is upgraded (installed
 #    again at the candidate), nothing else is installed.
