@@ -150,7 +150,7 @@ class Messages:
         return self.window.GetOutput()
 
 
-# ---- helpers of the tests of Parametrize and Seed and Flow Texture (issue 16, item 2) ----
+# ---- helpers of the tests of Parametrize and Seed and Flow Texture ----
 
 def fetch_port(proxy, port):
     """The output `port` of `proxy`, brought to this process."""
