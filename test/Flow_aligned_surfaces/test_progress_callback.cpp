@@ -228,7 +228,7 @@ TEST(ProgressCallback, DeformationGrowReportsAndAStoppedGrowthKeepsTheObjectUsab
   expect_same(observed, plain);
 }
 
-// A stream surface with its u and τ maps.
+// A stream surface and its report.
 struct Surface {
   Mesh tm;
   FAS::Stream_surface_report report;
@@ -243,14 +243,19 @@ struct Surface {
 const Polyline seed = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 0, 1)};
 const FAS::Uniform_flow<K> uniform(Vector_3(0.5, 1, 0.25));
 
+// The uniform flow's surface from `seed` up to τ = 2, reporting to `recorder`.
+Surface uniform_surface(Recorder& recorder)
+{
+  return Surface(uniform, seed,
+                 FAS::parameters::front_spacing(
+                     0.1, FAS::parameters::max_time(2.0, CGAL::parameters::callback(recorder.callback()))));
+}
+
 TEST(ProgressCallback, StreamSurfaceReportsEachTimeLineAndChangesNothing)
 {
   const Surface plain(uniform, seed, FAS::parameters::front_spacing(0.1, FAS::parameters::max_time(2.0)));
   Recorder recorder;
-  const Surface observed(
-      uniform, seed,
-      FAS::parameters::front_spacing(
-          0.1, FAS::parameters::max_time(2.0, CGAL::parameters::callback(recorder.callback()))));
+  const Surface observed = uniform_surface(recorder);
   EXPECT_FALSE(observed.report.stopped);
   EXPECT_EQ(observed.report.termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
   EXPECT_EQ(observed.report.number_of_time_lines, plain.report.number_of_time_lines);
@@ -266,10 +271,7 @@ TEST(ProgressCallback, StreamSurfaceStopsAfterTheTimeLineThatReturnedFalse)
 {
   Recorder recorder;
   recorder.stop_at = 5;
-  const Surface stopped(
-      uniform, seed,
-      FAS::parameters::front_spacing(
-          0.1, FAS::parameters::max_time(2.0, CGAL::parameters::callback(recorder.callback()))));
+  const Surface stopped = uniform_surface(recorder);
   EXPECT_TRUE(stopped.report.stopped);
   EXPECT_EQ(stopped.report.termination, FAS::Stream_surface_termination::STOPPED);
   EXPECT_STREQ(FAS::to_string(stopped.report.termination), "STOPPED");
