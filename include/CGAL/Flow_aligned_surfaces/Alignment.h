@@ -51,6 +51,9 @@ struct Alignment_report {
   Normalized_flux normalized_flux;      ///< f_n of the final surface and its sampled area fraction
   double max_rotation_angle = 0;        ///< the largest rotation requested by the last iteration (radians)
   double factor_ms = 0;                 ///< FACTOR: time spent in factorizations (ms)
+  /// whether the iterations ended because the `callback` named parameter returned `false` (the
+  /// surface is then the one of the last iteration performed)
+  bool stopped = false;
 };
 
 } // namespace Flow_aligned_surfaces

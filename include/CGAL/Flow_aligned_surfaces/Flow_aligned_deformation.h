@@ -23,6 +23,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/parametrization.h>
+#include <CGAL/Flow_aligned_surfaces/internal/progress_callback.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
 #include <CGAL/Flow_aligned_surfaces/internal/timed_factorization.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
@@ -179,6 +180,15 @@ public:
       \cgalParamType{a type convertible to `Visitor`}
       \cgalParamDefault{none}
     \cgalParamNEnd
+    \cgalParamNBegin{callback}
+      \cgalParamDescription{CGAL's progress callback (`CGAL::parameters::callback()`), called by
+        `run()` after each iteration with the fraction of its iterations done: \f$ k/N \f$ after
+        iteration \f$ k \f$ of at most \f$ N \f$, and `1` after the last one (converged or the
+        \f$ N \f$-th); if it returns `false`, `run()` returns after that iteration with the
+        report's `stopped` set (see \ref fas_progress).  `step()` does not call it.}
+      \cgalParamType{a callable convertible to `std::function<bool(double)>`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
     \cgalParamNBegin{max_rotation_angle}
       \cgalParamDescription{η: the largest rotation (radians) applied to a face in one iteration
         (see `Flow_aligned_surfaces::parameters::max_rotation_angle()`)}
@@ -246,6 +256,7 @@ public:
     m_gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
     m_max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 100u);
     m_visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Visitor());
+    m_callback = internal::progress_callback(np);
     m_eta = choose_parameter(get_parameter(np, fnp::max_rotation_angle_t()), 0.1);
     m_epsilon = choose_parameter(get_parameter(np, fnp::convergence_angle_t()), 1e-6);
     m_convergence_step = choose_parameter(get_parameter(np, fnp::convergence_step_t()), 1e-4);
@@ -403,7 +414,8 @@ public:
 
   /*!
   Iterates until an iteration converges or `number_of_iterations` (given at construction)
-  iterations were made.  The report's flux is that of the final surface.
+  iterations were made, or the `callback` given at construction returns `false`.  The report's
+  flux is that of the final surface.
   */
   Alignment_report run()
   {
@@ -414,14 +426,19 @@ public:
   Alignment_report run(std::size_t max_iterations)
   {
     Alignment_report result;
-    for (std::size_t k = 0; k < max_iterations; ++k) {
+    for (std::size_t k = 1; k <= max_iterations; ++k) {
       const Iteration_report r = step();
       ++result.number_of_iterations;
       result.max_rotation_angle = r.max_rotation_angle;
-      if (r.converged) {
-        result.converged = true;
+      result.converged = r.converged;
+      const bool last = r.converged || k == max_iterations;
+      if (!internal::report_progress(m_callback, last ? 1. : double(k) / double(max_iterations))) {
+        // A stop that came after the last iteration ended nothing.
+        result.stopped = !last;
         break;
       }
+      if (last)
+        break;
     }
     result.normalized_flux = current_normalized_flux();
     result.factor_ms = m_factor_ms;
@@ -483,8 +500,11 @@ public:
   With `across_flow`, the flow is the deformation's own field.
 
   \param distance the offset, positive and finite
-  \param np an optional sequence of named parameters among `growth_direction` and `across_flow`,
-         with the meanings of `grow_boundary()`
+  \param np an optional sequence of named parameters among `growth_direction`, `across_flow`
+         and `callback`, with the meanings of `grow_boundary()`: the callback is called with
+         `0.5` once the strip is built and with `1` once the surface is grown and \f$ L + W \f$
+         refactored; if the first call returns `false`, nothing is modified (neither `tm` nor
+         this object) and the report's `stopped` is set
 
   \returns what was grown, with the times of the offset, the tessellation, the placement in
            \f$ M_0 \f$ and the refactorization; its grown edges are given by indices into
@@ -518,6 +538,9 @@ public:
           return internal::sample_flow(m_field, construct_point(p.x(), p.y(), p.z()));
         },
         caller);
+    const internal::Progress_callback callback = internal::progress_callback(np);
+    if (!internal::report_progress(callback, internal::strip_built_fraction))
+      return internal::stopped_growth(strip.report);
 
     const auto append_start = std::chrono::steady_clock::now();
     const std::vector<vertex_descriptor> added = internal::append_strip(m_tm, m_vpm, m_gt, m_vertices, strip);
@@ -540,6 +563,7 @@ public:
     Growth_report report = strip.report;
     report.reference_map_ms += std::chrono::duration<double, std::milli>(factor_start - append_start).count();
     report.factor_ms = std::chrono::duration<double, std::milli>(end - factor_start).count();
+    internal::report_progress(callback, 1.);
     return report;
   }
   /// @}
@@ -1237,6 +1261,7 @@ private:
   Geom_traits m_gt;
   std::size_t m_max_iterations = 100;
   Visitor m_visitor;
+  internal::Progress_callback m_callback;
   double m_cos_eta = 1, m_sin_eta = 0, m_cos_theta_max_margin = -2;
   double m_eta = 0.1, m_epsilon = 1e-6, m_convergence_step = 1e-4, m_theta_max = CGAL_PI / 2;
   bool m_area_correction = true;

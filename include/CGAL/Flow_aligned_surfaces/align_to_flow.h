@@ -32,7 +32,7 @@ its `run()`; the factorization is made once.
 \param alignment `Alignment::TANGENTIAL` or `Alignment::ORTHOGONAL`
 \param np an optional sequence of named parameters: every parameter of the constructor of
        `Flow_aligned_deformation` (`vertex_point_map`, `geom_traits`, `vertex_index_map`,
-       `face_index_map`, `number_of_iterations`, `visitor`, `max_rotation_angle`,
+       `face_index_map`, `number_of_iterations`, `visitor`, `callback`, `max_rotation_angle`,
        `convergence_angle`, `convergence_step`, `max_dihedral_angle`, `area_correction`,
        `constraint_weight`), and:
 
@@ -45,8 +45,8 @@ its `run()`; the factorization is made once.
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns the number of iterations, whether the last one converged, and the normalized flux
-of the final surface.
+\returns the number of iterations, whether the last one converged, the normalized flux
+of the final surface, and whether the `callback` stopped the iterations (see \ref fas_progress).
 \throws std::invalid_argument if `tm` is empty, not a valid manifold triangle mesh, has a
 degenerate face, or a parameter is out of range.
 \sa `Flow_aligned_deformation`, `normalized_flux()`

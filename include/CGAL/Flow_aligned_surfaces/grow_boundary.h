@@ -25,6 +25,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
 #include <CGAL/Flow_aligned_surfaces/internal/faces_cross.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
+#include <CGAL/Flow_aligned_surfaces/internal/progress_callback.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -80,6 +81,9 @@ struct Growth_report {
   /// target of its border halfedge): positions in the order of `vertices(tm)` before growing for
   /// `grow_boundary()`, indices into `Flow_aligned_deformation::vertices()` for `grow()`.
   std::vector<std::pair<std::size_t, std::size_t>> grown_edges;
+  /// whether the `callback` named parameter returned `false` once the strip was built: nothing
+  /// was then added to the mesh (the counts are 0, the times those of the work done)
+  bool stopped = false;
 };
 
 /// \cond SKIP_IN_MANUAL
@@ -119,6 +123,23 @@ constexpr double max_concave_turn = 2 * CGAL_PI / 3;
 // triangles with angles >= 20 degrees for a / d in [2.5, 5.5], two triangles do for a / d <= 2.75).
 constexpr double thin_strip = 0.6;
 constexpr double mid_vertex_ratio = 2.5;
+
+// The fraction of a growth reported once the strip is built (offset, tessellated, checked), the
+// last moment at which a stop leaves the mesh untouched; appending it (and, in the class,
+// refactoring) is the rest.
+constexpr double strip_built_fraction = 0.5;
+
+// The report of a growth stopped before its strip was appended: nothing added, the times kept.
+inline Growth_report stopped_growth(const Growth_report& built)
+{
+  Growth_report report;
+  report.offset_ms = built.offset_ms;
+  report.remesh_ms = built.remesh_ms;
+  report.reference_map_ms = built.reference_map_ms;
+  report.check_ms = built.check_ms;
+  report.stopped = true;
+  return report;
+}
 
 template <class Options>
 Growth_options read_growth_options(const Options& np, const char* caller)
@@ -902,6 +923,14 @@ boundary; grow in several small steps to follow a curved surface.
     \cgalParamType{a model of `FlowField_3`}
     \cgalParamDefault{none}
   \cgalParamNEnd
+  \cgalParamNBegin{callback}
+    \cgalParamDescription{CGAL's progress callback (`CGAL::parameters::callback()`), called with
+      `0.5` once the strip is built (offset, tessellated and checked) and with `1` once it is
+      added to `tm`; if the first call returns `false`, `tm` is left untouched and the report's
+      `stopped` is set (see \ref fas_progress)}
+    \cgalParamType{a callable convertible to `std::function<bool(double)>`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns what was grown: new vertices and faces, the grown boundary edges and their length, the
@@ -964,7 +993,11 @@ Growth_report grow_boundary(TriangleMesh& tm, double distance,
         },
         caller);
   }
+  const internal::Progress_callback callback = internal::progress_callback(np);
+  if (!internal::report_progress(callback, internal::strip_built_fraction))
+    return internal::stopped_growth(strip.report);
   internal::append_strip(tm, vpm, gt, ordered, strip);
+  internal::report_progress(callback, 1.);
   return strip.report;
 }
 

@@ -21,6 +21,7 @@
 #include <CGAL/Flow_aligned_surfaces/integrate_streamline.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Dormand_prince_integrator.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
+#include <CGAL/Flow_aligned_surfaces/internal/progress_callback.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -58,7 +59,8 @@ enum class Stream_surface_termination {
   NO_PARTICLE_LEFT,         ///< every front piece left the domain, stagnated or was torn to single particles
   MAX_NUMBER_OF_VERTICES,   ///< the surface reached `max_number_of_vertices`
   SEED_OUTSIDE_DOMAIN,      ///< no point of the seed is inside the field's domain: empty result
-  SEED_AT_REST              ///< the field is zero at every point of the seed inside the domain: empty result
+  SEED_AT_REST,             ///< the field is zero at every point of the seed inside the domain: empty result
+  STOPPED                   ///< the `callback` named parameter returned `false` after the last time line
 };
 
 /// \ingroup PkgFlowAlignedSurfacesRef
@@ -80,6 +82,8 @@ inline const char* to_string(Stream_surface_termination t)
     return "SEED_OUTSIDE_DOMAIN";
   case Stream_surface_termination::SEED_AT_REST:
     return "SEED_AT_REST";
+  case Stream_surface_termination::STOPPED:
+    return "STOPPED";
   }
   return "?";
 }
@@ -133,6 +137,10 @@ struct Stream_surface_report {
   /// with `Integration_direction::BOTH`: the backward half's time lines, last parameter and
   /// termination; empty otherwise
   std::optional<Stream_surface_half_report> backward;
+  /// whether the `callback` named parameter stopped the integration (the termination of the half
+  /// it stopped is then `STOPPED`; with `BOTH`, a stop in the backward half leaves out the
+  /// forward half)
+  bool stopped = false;
 };
 
 namespace internal {
@@ -243,6 +251,10 @@ public:
     // Time lines whose strip would be thin are left out of the mesh (with the default
     // time-line step only: a given step is the time-line spacing the caller asked for).
     bool skip_thin_strips = false;
+    // Called after each time line with the fraction done, mapped to [progress_begin, progress_end]
+    // (the halves of a BOTH surface share [0, 1]).
+    Progress_callback callback = Progress_callback();
+    double progress_begin = 0, progress_end = 1;
   };
 
   // The vertices of the seed samples, shared by the two halves of a BOTH surface: the first
@@ -277,26 +289,9 @@ private:
   {
     if (m_pieces.empty())
       return;
-    const char* limit = m_field.normalize ? "max_length" : "max_time";
-    for (std::size_t k = 1;; ++k) {
-      if (m_pieces.empty())
-        return finish(Stream_surface_termination::NO_PARTICLE_LEFT, "no particle left");
-      // The limit in τ first: when it is reached on the last allowed time line, it is what stopped.
-      if (m_parameter >= m_s.max_parameter)
-        return finish(m_field.normalize ? Stream_surface_termination::MAX_LENGTH
-                                        : Stream_surface_termination::MAX_INTEGRATION_TIME,
-                      std::string(limit) + " " + printable(m_s.max_parameter) + " reached");
-      if (k > m_s.max_time_lines)
-        return finish(Stream_surface_termination::MAX_NUMBER_OF_TIME_LINES,
-                      "max_number_of_time_lines (" + std::to_string(m_s.max_time_lines) + ") reached at " +
-                          (m_field.normalize ? "length " : "time ") + printable(m_parameter) +
-                          (std::isfinite(m_s.max_parameter)
-                               ? ", before " + std::string(limit) + " " + printable(m_s.max_parameter)
-                               : ", no " + std::string(limit) + " given"));
-      if (m_report.number_of_vertices >= m_s.max_vertices || m_nodes.size() >= 2 * m_s.max_vertices)
-        return finish(Stream_surface_termination::MAX_NUMBER_OF_VERTICES,
-                      "max_number_of_vertices (" + std::to_string(m_s.max_vertices) + ") reached at " +
-                          (m_field.normalize ? "length " : "time ") + printable(m_parameter));
+    // The limits are tested after each time line too, so that the callback hears of the last one.
+    bool last = limit_reached(1);
+    for (std::size_t k = 1; !last; ++k) {
       m_previous_parameter = m_parameter;
       // The last time line is at the limit; one that would end less than Δ/2 before it is moved
       // there (not a strip of slivers behind it).
@@ -310,7 +305,56 @@ private:
       m_pieces = std::move(next);
       m_report.number_of_time_lines = k;
       m_report.final_parameter = m_parameter;
+      last = limit_reached(k + 1);
+      if (!report_progress(m_s.callback, progress(k, last)) && !last) {
+        m_report.stopped = true;
+        return finish(Stream_surface_termination::STOPPED,
+                      "stopped by the callback after time line " + std::to_string(k) + " at " +
+                          (m_field.normalize ? "length " : "time ") + printable(m_parameter));
+      }
     }
+  }
+
+  // Whether time line k may not be computed; if so, the report says which limit.
+  bool limit_reached(std::size_t k)
+  {
+    const char* limit = m_field.normalize ? "max_length" : "max_time";
+    if (m_pieces.empty())
+      finish(Stream_surface_termination::NO_PARTICLE_LEFT, "no particle left");
+    // The limit in τ first: when it is reached on the last allowed time line, it is what stopped.
+    else if (m_parameter >= m_s.max_parameter)
+      finish(m_field.normalize ? Stream_surface_termination::MAX_LENGTH
+                               : Stream_surface_termination::MAX_INTEGRATION_TIME,
+             std::string(limit) + " " + printable(m_s.max_parameter) + " reached");
+    else if (k > m_s.max_time_lines)
+      finish(Stream_surface_termination::MAX_NUMBER_OF_TIME_LINES,
+             "max_number_of_time_lines (" + std::to_string(m_s.max_time_lines) + ") reached at " +
+                 (m_field.normalize ? "length " : "time ") + printable(m_parameter) +
+                 (std::isfinite(m_s.max_parameter)
+                      ? ", before " + std::string(limit) + " " + printable(m_s.max_parameter)
+                      : ", no " + std::string(limit) + " given"));
+    else if (m_report.number_of_vertices >= m_s.max_vertices || m_nodes.size() >= 2 * m_s.max_vertices)
+      finish(Stream_surface_termination::MAX_NUMBER_OF_VERTICES,
+             "max_number_of_vertices (" + std::to_string(m_s.max_vertices) + ") reached at " +
+                 (m_field.normalize ? "length " : "time ") + printable(m_parameter));
+    else
+      return false;
+    return true;
+  }
+
+  // The fraction of the integration done after time line k: how near the nearest limit is (1 on
+  // the last time line, whatever ended it), mapped to this half's share.
+  double progress(std::size_t k, bool last) const
+  {
+    double done = 1;
+    if (!last) {
+      done = double(m_report.number_of_vertices) / double(m_s.max_vertices);
+      if (std::isfinite(m_s.max_parameter))
+        done = (std::max)(done, m_parameter / m_s.max_parameter);
+      if (m_s.max_time_lines != std::numeric_limits<std::size_t>::max())
+        done = (std::max)(done, double(k) / double(m_s.max_time_lines));
+    }
+    return m_s.progress_begin + (m_s.progress_end - m_s.progress_begin) * (std::min)(done, 1.);
   }
 
   static constexpr std::size_t no_node = std::numeric_limits<std::size_t>::max();
@@ -750,7 +794,7 @@ evaluated on the time line by dense output.  Between consecutive time lines:
   ever flatter.  The last time line is never less than \f$ \Delta/2 \f$ after the one before.
 
 Integration stops at `max_time` (`max_length` with arc-length time lines), after `max_number_of_time_lines`, at
-`max_number_of_vertices`, or when no piece of the front is left; the report's `termination` and
+`max_number_of_vertices`, when no piece of the front is left, or when the `callback` asks to; the report's `termination` and
 `message` say which limit, with its value and how far the front got.  A closed seed (first
 point = last point) gives a surface with a seam.
 
@@ -845,6 +889,18 @@ Vertices and faces are added to `tm_out`; what it held before is kept.
     \cgalParamDescription{`FAS::parameters::integration_time_map()`: receives \f$ \tau \f$ of every new vertex}
     \cgalParamType{a model of `WritablePropertyMap` from `vertex_descriptor` to `double`}
     \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{callback}
+    \cgalParamDescription{CGAL's progress callback (`CGAL::parameters::callback()`), called after
+      each time line with the fraction done: the largest of \f$ \tau \f$ over its limit, the time
+      lines over `max_number_of_time_lines` and the vertices over `max_number_of_vertices` (with
+      `BOTH`, the backward half maps to \f$ [0, 1/2] \f$ and the forward half to
+      \f$ [1/2, 1] \f$), and `1` after the last time line, whatever ended the integration.  If it
+      returns `false` before the last time line, the integration stops there: `tm_out` holds the
+      surface up to that time line (with `BOTH`, after a stop in the backward half, no forward
+      half), the termination is `STOPPED` and the report's `stopped` is set (see \ref fas_progress).}
+    \cgalParamType{a callable convertible to `std::function<bool(double)>`}
+    \cgalParamDefault{none}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{the points of the vertices of `tm_out`}
@@ -955,22 +1011,28 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
                                     lines.tolerances};
   settings.skip_thin_strips =
       parameters::is_default_parameter<NamedParameters, internal_np::time_line_step_t>::value;
+  settings.callback = internal::progress_callback(np);
   typename Front::Seed_vertices seed_vertices;
   if (lines.direction != Integration_direction::FORWARD) {
     settings.direction = -1;
     settings.reverse_triangles = true;
     settings.written_tau_sign = lines.direction == Integration_direction::BOTH ? -1 : 1;
+    if (lines.direction == Integration_direction::BOTH)
+      settings.progress_end = 0.5;
     report = Front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map, seed_vertices).run(report);
     if (lines.direction == Integration_direction::BACKWARD)
       return report;
     report.backward = Stream_surface_half_report{report.number_of_time_lines, report.final_parameter,
                                                  report.termination, report.message};
     if (report.termination == Stream_surface_termination::SEED_OUTSIDE_DOMAIN ||
-        report.termination == Stream_surface_termination::SEED_AT_REST) // the same seed forward
+        report.termination == Stream_surface_termination::SEED_AT_REST || // the same seed forward
+        report.stopped)
       return report;
     settings.direction = 1;
     settings.reverse_triangles = false;
     settings.written_tau_sign = 1;
+    settings.progress_begin = 0.5;
+    settings.progress_end = 1;
   }
   // The forward half (of a BOTH surface: it reuses the backward half's seed vertices and adds
   // its counts to the backward half's).
