@@ -413,11 +413,15 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   bool pictures = write_flux_picture(out / (name + "_initial.png"), tm, scene.flow);
 
   std::vector<FAS::Iteration_report> iterations;
+  // The flux of the surface each iteration made: an iteration's report measures the surface it
+  // started from, and after a growth step that is not the surface the previous iteration made.
+  std::vector<FAS::Normalized_flux> flux_after;
   Progress progress(name);
   FAS::Flow_aligned_deformation<Mesh, Flow> deformation(
       tm, scene.flow, alignment,
       CGAL::parameters::number_of_iterations(200).visitor([&](const FAS::Iteration_report& r) {
         iterations.push_back(r);
+        flux_after.push_back(FAS::normalized_flux(tm, scene.flow));
         progress(r);
         collection.add(tm, scene.flow);
       }));
@@ -474,18 +478,21 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     return std::nullopt;
   {
     std::ostream& os = *csv;
-    // No flux value (no face sampled) is an empty field, not 0.
+    // One row per surface of the .pvd collection: row 0 the initial patch, row k the surface
+    // iteration k made, with that iteration's figures; the last row is the final surface.  No
+    // flux value (no face sampled) is an empty field, not 0.
     os << "iteration,normalized_flux,sampled_area_fraction,max_rotation_angle,max_vertex_step,folds,"
           "outside_samples,invalid_samples,zero_samples,gtransf_ms,solve_ms,converged\n";
-    for (const auto& r : iterations)
-      os << r.iteration << ',' << csv_field(r.normalized_flux.value) << ','
-         << r.normalized_flux.sampled_area_fraction << ',' << r.max_rotation_angle << ',' << r.max_vertex_step
-         << ',' << r.number_of_folds << ',' << r.number_of_outside_samples << ','
-         << r.number_of_invalid_samples << ',' << r.number_of_zero_samples << ','
-         << r.gradient_transformation_ms << ',' << r.solve_ms << ',' << (r.converged ? 1 : 0) << '\n';
-    // The flux of the final surface, which no iteration started from.
-    os << iterations.size() + 1 << ',' << csv_field(summary.report.normalized_flux.value) << ','
-       << summary.report.normalized_flux.sampled_area_fraction << ",,,,,,,,,\n";
+    os << 0 << ',' << csv_field(summary.initial_flux.value) << ',' << summary.initial_flux.sampled_area_fraction
+       << ",,,,,,,,,\n";
+    for (std::size_t k = 0; k < iterations.size(); ++k) {
+      const FAS::Iteration_report& r = iterations[k];
+      os << r.iteration << ',' << csv_field(flux_after[k].value) << ',' << flux_after[k].sampled_area_fraction
+         << ',' << r.max_rotation_angle << ',' << r.max_vertex_step << ',' << r.number_of_folds << ','
+         << r.number_of_outside_samples << ',' << r.number_of_invalid_samples << ','
+         << r.number_of_zero_samples << ',' << r.gradient_transformation_ms << ',' << r.solve_ms << ','
+         << (r.converged ? 1 : 0) << '\n';
+    }
   }
   summary.paraview = Paraview_run{name, picture.camera, has_stream_surfaces, has_stream_lines, has_obstacle};
   warn_unsampled(name, iterations, summary.report.normalized_flux);
@@ -627,6 +634,13 @@ int main(int argc, char** argv)
     flow_name = "cylinder";
 
   std::optional<Scene> scene;
+  if (std::error_code ec; !field_file.empty() && std::filesystem::is_directory(field_file, ec)) {
+    // Said before any reading: a user who gives a case folder (OpenFOAM's) needs the file's name.
+    std::cerr << "error: --field: " << field_file
+              << " is a directory; give a velocity file (legacy VTK .vtk, VTK XML .vti/.vtr/.vts/.vtu, "
+                 "AmiraMesh .am or NRRD .nrrd/.nhdr)\n";
+    return 1;
+  }
   if (!field_file.empty()) {
     scene = make_data_scene(field_file, array, placement);
     if (!scene)
