@@ -411,6 +411,11 @@ Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view 
     picture.width = 1800;
   }
   picture.scalar_name = "normalized_flux";
+  // The obstacle drawn over the whole outlined box, so that it ends on the outline (capped there,
+  // render_scene_PNG.h) rather than on the edge of the region searched for it above.  Just
+  // inside a data box: on its faces the flow may not be sampled, which would draw them.
+  if (!obstacle.defined.empty())
+    obstacle = sample_flow_domain<Point>(scene.flow, scene.domain ? expanded(outline_box, -0.005) : outline_box, 100);
   picture.obstacle = std::move(obstacle);
   picture.camera =
     oblique_camera(focus, double(picture.width) / double(picture.views.size()) / double(picture.height), side);
