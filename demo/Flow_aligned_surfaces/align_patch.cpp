@@ -38,6 +38,7 @@
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
 #include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
 #include <CGAL/Flow_aligned_surfaces/integrate_streamline.h>
+#include <CGAL/Flow_aligned_surfaces/IO/write_PNG.h>
 #include <CGAL/Flow_aligned_surfaces/seeds.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 
@@ -67,6 +68,7 @@ struct Scene {
   Vector tangential_normal, orthogonal_normal;
   double size;
   std::optional<CGAL::Bbox_3> domain = std::nullopt; // the data's box (analytic flows: none)
+  std::string field_file = {};                       // the data file, absolute (analytic flows: none)
 };
 
 // A built-in flow with a tangential and an orthogonal placement of the patch in it.
@@ -147,8 +149,14 @@ std::optional<Scene> make_data_scene(const std::string& file, const std::string&
     std::cerr << "error: --field: " << file << " has no flow (no finite non-zero velocity) anywhere\n";
     return std::nullopt;
   }
-  Scene scene{Flow(*field), placed->tangential_center, placed->orthogonal_center, placed->tangential_normal,
-              placed->orthogonal_normal, size, box};
+  Scene scene{Flow(*field),
+              placed->tangential_center,
+              placed->orthogonal_center,
+              placed->tangential_normal,
+              placed->orthogonal_normal,
+              size,
+              box,
+              std::filesystem::absolute(file).lexically_normal().string()};
   if (placement.normal)
     scene.orthogonal_normal = scene.tangential_normal =
         Vector((*placement.normal)[0], (*placement.normal)[1], (*placement.normal)[2]);
@@ -178,12 +186,14 @@ using Polyline = std::vector<Point>;
 // parametrization (iso-contours of r, each with its value), one stream surface per distinct seed
 // curve (distinct_stream_surfaces.h: forward and backward in one mesh, arc-length time lines up
 // to twice the patch size), and stream lines from seed points on an orthogonal surface; all
-// written as VTP, with pictures when `pictures`, and added to `view` (the scene picture's).
+// written as VTP, with pictures when `pictures`, and added to `view` (the scene picture's).  A
+// tangential surface's stream surfaces carry their LIC-like texture (`textured_view`, and the
+// texture image written as `texture_file`, empty when not written).
 // Returns false when a file cannot be written.
 bool seed_and_integrate(const std::string& name, Mesh& tm,
                         const FAS::Flow_aligned_deformation<Mesh, Flow>& deformation, const Scene& scene,
                         const std::filesystem::path& out, bool pictures, Scene_view& view,
-                        std::optional<Scene_view>& textured_view)
+                        std::optional<Scene_view>& textured_view, std::string& texture_file)
 {
   const bool tangential = deformation.alignment() == FAS::Alignment::TANGENTIAL;
   auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
@@ -234,9 +244,36 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
       surfaces_cell_data.clear();
     }
   }
+  // The paper's Figure 8 on the tangential surface's stream surface: the LIC-like texture of its
+  // own tangential parametrization (3 repeats of the texture along the flow), masked where grad r
+  // leaves it; in its VTP (TCoords, texture_mask) with the texture beside it for ParaView, and in
+  // the scene picture.
+  std::optional<Flow_texture_of_mesh> texture;
+  if (tangential && !surfaces.is_empty()) {
+    try {
+      texture = flow_texture_of_mesh(surfaces, scene.flow, -3);
+    } catch (const std::exception& e) {
+      std::cerr << name << ": the stream surfaces get no texture: " << e.what() << "\n";
+    }
+  }
   if (ok && !surfaces.is_empty()) {
     std::vector<FAS::IO::Data_array> arrays{
         {"velocity", 3, vertex_velocities(surfaces, scene.flow)}, {"u", 1, us}, {"t", 1, ts}, {"SeedIds", 1, ids}};
+    if (texture) {
+      FAS::IO::Data_array tcoords{"TCoords", 2, {}};
+      for (const auto& uv : texture->texture_coordinates)
+        tcoords.values.insert(tcoords.values.end(), {uv[0], uv[1]});
+      tcoords.texture_coordinates = true;
+      arrays.push_back(std::move(tcoords));
+      surfaces_cell_data.push_back({"texture_mask", 1, texture->face_mask});
+      // Without libpng the VTP keeps its coordinates; ParaView then shows no texture.
+      std::string png_error;
+      texture_file = name + "_stream_surfaces_texture.png";
+      if (!FAS::IO::write_PNG((out / texture_file).string(), texture->texture, &png_error)) {
+        std::cerr << name << ": " << png_error << "\n";
+        texture_file.clear();
+      }
+    }
     ok = write_mesh_VTP((out / (name + "_stream_surfaces.vtp")).string(), surfaces, arrays, surfaces_cell_data,
                         Active_scalars{"t", ""}, &error);
   }
@@ -260,19 +297,12 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
   view.lines.push_back(to_scene_lines(seed_curves, {0.02, 0.02, 0.02}, 4));
   if (!surfaces.is_empty()) // the stream surfaces, translucent, beyond the aligned patch
     view.surfaces.push_back(to_scene_surface(surfaces, {}, {0.98, 0.8, 0.3}, 0.6));
-  if (tangential && pictures && !surfaces.is_empty()) {
-    // The paper's Figure 8: the stream surface with the LIC-like texture of its own tangential
-    // parametrization (3 repeats of the texture along the flow), masked where grad r leaves it.
-    try {
-      Flow_texture_of_mesh texture = flow_texture_of_mesh(surfaces, scene.flow, -3);
-      Scene_surface textured = to_scene_surface(surfaces, {}, {1, 1, 1});
-      textured.texture = std::make_shared<const FAS::Texture_image>(std::move(texture.texture));
-      textured.texture_coordinates = std::move(texture.texture_coordinates);
-      textured.face_mask = std::move(texture.face_mask);
-      textured_view = Scene_view{{std::move(textured)}, {}, "stream surface, LIC-like texture"};
-    } catch (const std::exception& e) {
-      std::cerr << name << ": the stream surface is drawn without its texture: " << e.what() << "\n";
-    }
+  if (texture && pictures) {
+    Scene_surface textured = to_scene_surface(surfaces, {}, {1, 1, 1});
+    textured.texture = std::make_shared<const FAS::Texture_image>(std::move(texture->texture));
+    textured.texture_coordinates = std::move(texture->texture_coordinates);
+    textured.face_mask = std::move(texture->face_mask);
+    textured_view = Scene_view{{std::move(textured)}, {}, "stream surface, LIC-like texture"};
   }
   std::cout << name << ": " << seed_curves.size() << " seed curves, " << integrated.number_of_surfaces()
             << " distinct stream surfaces of " << surfaces.number_of_faces() << " triangles (flux "
@@ -365,9 +395,11 @@ Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view 
   // The domain's outline where the view shows it: a domain much larger than the scene (a
   // channel around its obstacle) would draw edges across the whole picture, so it is cut at a
   // margin around the scene (its walls near the scene stay where they are).
-  const Scene_lines outline =
-    box_outline(scene.domain ? box_intersection(*scene.domain, expanded(focus, 0.15)) : focus);
+  const CGAL::Bbox_3 outline_box = scene.domain ? box_intersection(*scene.domain, expanded(focus, 0.15)) : focus;
+  const Scene_lines outline = box_outline(outline_box);
   Scene_picture picture;
+  picture.outline_bounds = {outline_box.xmin(), outline_box.xmax(), outline_box.ymin(),
+                            outline_box.ymax(), outline_box.zmin(), outline_box.zmax()};
   picture.views.push_back(
       {{to_scene_surface(initial, face_fluxes(initial, scene.flow), {0.8, 0.8, 0.8})}, {outline}, "initial " + kind + " patch"});
   aligned.lines.push_back(outline);
@@ -379,6 +411,11 @@ Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view 
     picture.width = 1800;
   }
   picture.scalar_name = "normalized_flux";
+  // The obstacle drawn over the whole outlined box, so that it ends on the outline (capped there,
+  // render_scene_PNG.h) rather than on the edge of the region searched for it above.  Just
+  // inside a data box: on its faces the flow may not be sampled, which would draw them.
+  if (!obstacle.defined.empty())
+    obstacle = sample_flow_domain<Point>(scene.flow, scene.domain ? expanded(outline_box, -0.005) : outline_box, 100);
   picture.obstacle = std::move(obstacle);
   picture.camera =
     oblique_camera(focus, double(picture.width) / double(picture.views.size()) / double(picture.height), side);
@@ -413,11 +450,15 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   bool pictures = write_flux_picture(out / (name + "_initial.png"), tm, scene.flow);
 
   std::vector<FAS::Iteration_report> iterations;
+  // The flux of the surface each iteration made: an iteration's report measures the surface it
+  // started from, and after a growth step that is not the surface the previous iteration made.
+  std::vector<FAS::Normalized_flux> flux_after;
   Progress progress(name);
   FAS::Flow_aligned_deformation<Mesh, Flow> deformation(
       tm, scene.flow, alignment,
       CGAL::parameters::number_of_iterations(200).visitor([&](const FAS::Iteration_report& r) {
         iterations.push_back(r);
+        flux_after.push_back(FAS::normalized_flux(tm, scene.flow));
         progress(r);
         collection.add(tm, scene.flow);
       }));
@@ -456,7 +497,8 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     write_textured_picture(out / (name + "_textured.png"), tm, scene.flow, 2 / scene.size);
   Scene_view aligned_view{{to_scene_surface(tm, face_fluxes(tm, scene.flow), {0.8, 0.8, 0.8})}, {}, "aligned"};
   std::optional<Scene_view> textured_view;
-  if (!seed_and_integrate(name, tm, deformation, scene, out, pictures, aligned_view, textured_view))
+  std::string texture_file;
+  if (!seed_and_integrate(name, tm, deformation, scene, out, pictures, aligned_view, textured_view, texture_file))
     return std::nullopt;
   const bool has_stream_surfaces = aligned_view.surfaces.size() > 1, has_stream_lines = !tangential;
   const Scene_picture picture = scene_picture(scene, initial, aligned_view, name, std::move(textured_view));
@@ -474,20 +516,24 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     return std::nullopt;
   {
     std::ostream& os = *csv;
-    // No flux value (no face sampled) is an empty field, not 0.
+    // One row per surface of the .pvd collection: row 0 the initial patch, row k the surface
+    // iteration k made, with that iteration's figures; the last row is the final surface.  No
+    // flux value (no face sampled) is an empty field, not 0.
     os << "iteration,normalized_flux,sampled_area_fraction,max_rotation_angle,max_vertex_step,folds,"
           "outside_samples,invalid_samples,zero_samples,gtransf_ms,solve_ms,converged\n";
-    for (const auto& r : iterations)
-      os << r.iteration << ',' << csv_field(r.normalized_flux.value) << ','
-         << r.normalized_flux.sampled_area_fraction << ',' << r.max_rotation_angle << ',' << r.max_vertex_step
-         << ',' << r.number_of_folds << ',' << r.number_of_outside_samples << ','
-         << r.number_of_invalid_samples << ',' << r.number_of_zero_samples << ','
-         << r.gradient_transformation_ms << ',' << r.solve_ms << ',' << (r.converged ? 1 : 0) << '\n';
-    // The flux of the final surface, which no iteration started from.
-    os << iterations.size() + 1 << ',' << csv_field(summary.report.normalized_flux.value) << ','
-       << summary.report.normalized_flux.sampled_area_fraction << ",,,,,,,,,\n";
+    os << 0 << ',' << csv_field(summary.initial_flux.value) << ',' << summary.initial_flux.sampled_area_fraction
+       << ",,,,,,,,,\n";
+    for (std::size_t k = 0; k < iterations.size(); ++k) {
+      const FAS::Iteration_report& r = iterations[k];
+      os << r.iteration << ',' << csv_field(flux_after[k].value) << ',' << flux_after[k].sampled_area_fraction
+         << ',' << r.max_rotation_angle << ',' << r.max_vertex_step << ',' << r.number_of_folds << ','
+         << r.number_of_outside_samples << ',' << r.number_of_invalid_samples << ','
+         << r.number_of_zero_samples << ',' << r.gradient_transformation_ms << ',' << r.solve_ms << ','
+         << (r.converged ? 1 : 0) << '\n';
+    }
   }
-  summary.paraview = Paraview_run{name, picture.camera, has_stream_surfaces, has_stream_lines, has_obstacle};
+  summary.paraview = Paraview_run{name,         picture.camera, has_stream_surfaces, has_stream_lines,
+                                  has_obstacle, texture_file,   scene.field_file,    picture.outline_bounds};
   warn_unsampled(name, iterations, summary.report.normalized_flux);
   if (!summary.report.converged)
     std::cerr << "warning: " << name << " surface: not converged after " << summary.report.number_of_iterations
@@ -627,6 +673,13 @@ int main(int argc, char** argv)
     flow_name = "cylinder";
 
   std::optional<Scene> scene;
+  if (std::error_code ec; !field_file.empty() && std::filesystem::is_directory(field_file, ec)) {
+    // Said before any reading: a user who gives a case folder (OpenFOAM's) needs the file's name.
+    std::cerr << "error: --field: " << field_file
+              << " is a directory; give a velocity file (legacy VTK .vtk, VTK XML .vti/.vtr/.vts/.vtu, "
+                 "AmiraMesh .am or NRRD .nrrd/.nhdr)\n";
+    return 1;
+  }
   if (!field_file.empty()) {
     scene = make_data_scene(field_file, array, placement);
     if (!scene)

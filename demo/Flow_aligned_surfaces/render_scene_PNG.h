@@ -5,7 +5,7 @@
 // PNG: each view in its own viewport side by side under the same camera, lit by a light kit
 // (key, fill and back lights, as ParaView's default), with specular highlights; the surfaces with
 // face scalars coloured blue to red with a colour bar titled by the array's name; the obstacle
-// as VTK's flying-edges contour of where the flow is defined.  Needs the demo's CMake target
+// as VTK's flying-edges contour of where the flow is defined, smoothed and closed.  Needs the demo's CMake target
 // fas_demo_rendering; the display and the PNG writing are those of render_surface_PNG.h.
 
 #ifndef FAS_DEMO_RENDER_SCENE_PNG_H
@@ -37,8 +37,10 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 
 namespace fas_demo {
@@ -149,10 +151,61 @@ inline vtkSmartPointer<vtkActor> make_scene_lines_actor(const Scene_lines& l)
 
 } // namespace detail
 
-/// The obstacle of a scene: the contour at 1/2 of where the flow is defined on `lattice`
-/// (VTK's flying edges, with normals).
-inline vtkSmartPointer<vtkPolyData> obstacle_polydata(const Flow_domain_lattice& lattice)
+/// `lattice` padded by `pad` samples on every side with 1 (the flow defined) and smoothed by a
+/// Gaussian of standard deviation one sample (separable, truncated at 3): its contour at 1/2 is
+/// smooth where the samples' 0/1 steps would draw stairs, and closed where the obstacle leaves
+/// the lattice (capped on the lattice's box, where the scene's outline is), instead of ending
+/// in an open rim.
+inline Flow_domain_lattice padded_smoothed_lattice(const Flow_domain_lattice& lattice, int pad = 4)
 {
+  Flow_domain_lattice out;
+  const std::array<int, 3> n = lattice.dimensions;
+  for (std::size_t a = 0; a < 3; ++a) {
+    out.dimensions[a] = n[a] + 2 * pad;
+    out.spacing[a] = lattice.spacing[a];
+    out.origin[a] = lattice.origin[a] - pad * lattice.spacing[a];
+  }
+  const std::array<int, 3> d = out.dimensions;
+  const auto index = [&d](int i, int j, int k) {
+    return std::size_t(i) + std::size_t(d[0]) * (std::size_t(j) + std::size_t(d[1]) * std::size_t(k));
+  };
+  out.defined.assign(std::size_t(d[0]) * std::size_t(d[1]) * std::size_t(d[2]), 1.0);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i)
+        out.defined[index(i + pad, j + pad, k + pad)] =
+            lattice.defined[std::size_t(i) + std::size_t(n[0]) * (std::size_t(j) + std::size_t(n[1]) * std::size_t(k))];
+  constexpr int radius = 3;
+  std::array<double, 2 * radius + 1> weights{};
+  double sum = 0;
+  for (int t = -radius; t <= radius; ++t)
+    sum += weights[std::size_t(t + radius)] = std::exp(-0.5 * t * t);
+  for (double& w : weights)
+    w /= sum;
+  std::vector<double> next(out.defined.size());
+  for (int axis = 0; axis < 3; ++axis) { // one axis at a time; beyond the padding, 1 (the flow)
+    for (int k = 0; k < d[2]; ++k)
+      for (int j = 0; j < d[1]; ++j)
+        for (int i = 0; i < d[0]; ++i) {
+          double value = 0;
+          for (int t = -radius; t <= radius; ++t) {
+            std::array<int, 3> q{i, j, k};
+            q[std::size_t(axis)] += t;
+            const bool inside = q[std::size_t(axis)] >= 0 && q[std::size_t(axis)] < d[std::size_t(axis)];
+            value += weights[std::size_t(t + radius)] * (inside ? out.defined[index(q[0], q[1], q[2])] : 1.0);
+          }
+          next[index(i, j, k)] = value;
+        }
+    out.defined.swap(next);
+  }
+  return out;
+}
+
+/// The obstacle of a scene: the contour at 1/2 of where the flow is defined on `lattice`,
+/// padded and smoothed (`padded_smoothed_lattice()`; VTK's flying edges, with normals).
+inline vtkSmartPointer<vtkPolyData> obstacle_polydata(const Flow_domain_lattice& sampled)
+{
+  const Flow_domain_lattice lattice = padded_smoothed_lattice(sampled);
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetOrigin(lattice.origin.data());
   image->SetSpacing(lattice.spacing.data());
@@ -218,10 +271,36 @@ inline bool render_scene_PNG(const std::string& filename, const Scene_picture& p
   window->SetMultiSamples(0); // depth peeling (translucent surfaces) needs it off; FXAA smooths the edges
   window->SetSize(int(picture.width), int(picture.height));
   const double n = double(picture.views.size());
+  // The colour bar in a strip of its own below the views: over a view it hid the surfaces.
+  const bool bar = !picture.scalar_name.empty();
+  const double strip = bar ? 0.12 : 0;
+  if (bar) {
+    auto renderer = vtkSmartPointer<vtkRenderer>::New();
+    renderer->SetViewport(0, 0, 1, strip);
+    renderer->SetBackground(picture.background[0], picture.background[1], picture.background[2]);
+    auto actor = vtkSmartPointer<vtkScalarBarActor>::New();
+    actor->SetLookupTable(table);
+    actor->SetTitle(picture.scalar_name.c_str());
+    actor->SetNumberOfLabels(5);
+    actor->SetLabelFormat("%.2g");
+    actor->SetOrientationToHorizontal();
+    actor->SetTextPositionToPrecedeScalarBar();
+    actor->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    actor->GetPositionCoordinate()->SetValue(0.3, 0.05);
+    actor->SetWidth(0.4);
+    actor->SetHeight(0.9);
+    for (vtkTextProperty* text : {actor->GetTitleTextProperty(), actor->GetLabelTextProperty()}) {
+      text->SetColor(0.1, 0.1, 0.1);
+      text->ShadowOff();
+      text->ItalicOff();
+    }
+    renderer->AddActor2D(actor);
+    window->AddRenderer(renderer);
+  }
   for (std::size_t i = 0; i < picture.views.size(); ++i) {
     const Scene_view& view = picture.views[i];
     auto renderer = vtkSmartPointer<vtkRenderer>::New();
-    renderer->SetViewport(i / n, 0, (i + 1) / n, 1);
+    renderer->SetViewport(i / n, strip, (i + 1) / n, 1);
     renderer->SetBackground(picture.background[0], picture.background[1], picture.background[2]);
     renderer->SetUseDepthPeeling(1);
     renderer->SetMaximumNumberOfPeels(8);
@@ -240,23 +319,6 @@ inline bool render_scene_PNG(const std::string& filename, const Scene_picture& p
       title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
       title->GetPositionCoordinate()->SetValue(0.03, 0.93);
       renderer->AddActor2D(title);
-    }
-    if (!picture.scalar_name.empty() && i + 1 == picture.views.size()) {
-      auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
-      bar->SetLookupTable(table);
-      bar->SetTitle(picture.scalar_name.c_str());
-      bar->SetNumberOfLabels(5);
-      bar->SetOrientationToHorizontal();
-      bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-      bar->GetPositionCoordinate()->SetValue(0.55, 0.02);
-      bar->SetWidth(0.42);
-      bar->SetHeight(0.12);
-      for (vtkTextProperty* text : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
-        text->SetColor(0.1, 0.1, 0.1);
-        text->ShadowOff();
-        text->ItalicOff();
-      }
-      renderer->AddActor2D(bar);
     }
     auto lights = vtkSmartPointer<vtkLightKit>::New();
     lights->AddLightsToRenderer(renderer);

@@ -70,6 +70,9 @@ struct Scene_picture {
   std::string scalar_name;                  ///< the colour bar's title (empty: no colour bar)
   std::array<double, 2> scalar_range{0, 1}; ///< blue to red
   Flow_domain_lattice obstacle;             ///< no obstacle when empty
+  /// The box of the domain's outline the views draw (xmin, xmax, ymin, ymax, zmin, zmax), for
+  /// the other views of the scene (ParaView's).
+  std::array<double, 6> outline_bounds{0, 0, 0, 0, 0, 0};
   std::array<double, 3> obstacle_color{0.72, 0.72, 0.76};
   std::array<double, 3> background{1, 1, 1};
   Render_camera camera;

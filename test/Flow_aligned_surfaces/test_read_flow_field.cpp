@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -192,6 +193,30 @@ TEST(ReadFlowField, EmptyFileIsCalledEmptyByEveryReader)
   expect_empty(FAS::IO::read_NRRD_flow_field(empty, regular, &error), error, "read_NRRD_flow_field");
   FAS::Session session;
   expect_empty(FAS::IO::read_session(empty, session, &error), error, "read_session");
+}
+
+// A directory opens as a stream that reads nothing: every reader calls it a directory, not an
+// empty file, and the field is kept.
+TEST(ReadFlowField, DirectoryIsCalledADirectoryByEveryReader)
+{
+  const std::string folder = scratch("a_folder.vtk");
+  std::filesystem::create_directories(folder);
+  auto expect_directory = [&folder](bool read, const std::string& error, const std::string& reader) {
+    EXPECT_FALSE(read) << reader;
+    EXPECT_EQ(error, reader + ": " + folder + ": is a directory, not a file");
+  };
+  std::string error;
+  Sampled sampled(linear_grid());
+  expect_directory(FAS::IO::read_flow_field(folder, sampled, &error), error, "read_flow_field");
+  EXPECT_NE(sampled.get_if<Sampled::Regular_grid>(), nullptr) << "the field is kept";
+  Sampled::Regular_grid regular;
+  expect_directory(FAS::IO::read_VTK_flow_field(folder, regular, &error), error, "read_VTK_flow_field");
+  Sampled::Unstructured_grid cells;
+  expect_directory(FAS::IO::read_VTK_flow_field(folder, cells, &error), error, "read_VTK_flow_field");
+  expect_directory(FAS::IO::read_AmiraMesh_flow_field(folder, regular, &error), error,
+                   "read_AmiraMesh_flow_field");
+  expect_directory(FAS::IO::read_NRRD_flow_field(folder, regular, &error), error, "read_NRRD_flow_field");
+  std::filesystem::remove(folder);
 }
 
 TEST(ReadFlowField, RealDataInBothForms)

@@ -8,7 +8,14 @@
 #   be, with the expat of an up-to-date Debian bookworm);
 # - open_in_paraview.py, run with --screenshot, opens every output the job wrote (a source per
 #   .vtp and .pvd), colours by normalized_flux over [0, 1], and writes one picture per
-#   alignment that is not blank.
+#   alignment that is not blank;
+# - the tangential stream surfaces carry their LIC-like texture: TCoords, the active texture
+#   coordinates, whose u grows along the flow (its gradient parallel to the velocity on the
+#   faces the mask keeps), and texture_mask in [0, 1] per face; the script shows them textured
+#   in a view of their own (a picture with many colours);
+# - the script draws the domain's outline: with a data file (argv[3], given to --field), an
+#   Outline of the file whose bounds are the file's own as ParaView reads it; else a box around
+#   every surface the job wrote.
 # Raises on failure (pvbatch then exits non-zero).
 import csv
 import os
@@ -22,8 +29,9 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 align_patch, out = sys.argv[1], sys.argv[2]
+field = os.path.abspath(sys.argv[3]) if len(sys.argv) > 3 else None
 shutil.rmtree(out, ignore_errors=True)
-subprocess.run([align_patch, '--faces', '400', '--output', out], check=True)
+subprocess.run([align_patch, '--faces', '400', '--output', out] + (['--field', field] if field else []), check=True)
 
 
 def check(condition, message):
@@ -62,6 +70,72 @@ for vtp in vtp_files:
     check(reader.GetOutput().GetNumberOfPoints() > 0 and not errors, "ParaView's VTK cannot read " + vtp)
 print('%d VTP files read by ParaView\'s VTK' % len(vtp_files))
 
+
+def read_vtp(path):
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+# The texture coordinates of the tangential stream surfaces: u is the time-like coordinate of the
+# tangential parametrization, so on each face the mask keeps (mask 0: grad r along the surface
+# follows the flow) its gradient is parallel to the velocity projected on the face.
+surfaces = read_vtp(os.path.join(out, 'tangential_stream_surfaces.vtp'))
+tcoords = surfaces.GetPointData().GetTCoords()
+check(tcoords is not None and tcoords.GetName() == 'TCoords' and tcoords.GetNumberOfComponents() == 2
+      and tcoords.GetNumberOfTuples() == surfaces.GetNumberOfPoints(),
+      'tangential_stream_surfaces.vtp: TCoords is not the active texture coordinates, 2 per point')
+mask = surfaces.GetCellData().GetArray('texture_mask')
+check(mask is not None and mask.GetNumberOfTuples() == surfaces.GetNumberOfCells()
+      and all(0 <= mask.GetValue(i) <= 1 for i in range(mask.GetNumberOfTuples())),
+      'tangential_stream_surfaces.vtp: texture_mask is not one value in [0, 1] per face')
+velocity = surfaces.GetPointData().GetArray('velocity')
+
+
+def sub(a, b):
+    return [a[i] - b[i] for i in range(3)]
+
+
+def dot(a, b):
+    return sum(a[i] * b[i] for i in range(3))
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+weighted_cos, kept_area = 0.0, 0.0
+for c in range(surfaces.GetNumberOfCells()):
+    ids = surfaces.GetCell(c).GetPointIds()
+    if ids.GetNumberOfIds() != 3 or mask.GetValue(c) > 0.1:
+        continue
+    p = [surfaces.GetPoint(ids.GetId(k)) for k in range(3)]
+    u = [tcoords.GetTuple2(ids.GetId(k))[0] for k in range(3)]
+    if any(x != x for x in u):
+        continue
+    e1, e2 = sub(p[1], p[0]), sub(p[2], p[0])
+    n = cross(e1, e2)
+    area2 = dot(n, n)
+    if area2 == 0:
+        continue
+    # grad u on the face: ((u1-u0) (n x e2) + (u2-u0) (e1 x n)) / |n|^2
+    a_, b_ = cross(n, e2), cross(e1, n)
+    grad = [((u[1] - u[0]) * a_[i] + (u[2] - u[0]) * b_[i]) / area2 for i in range(3)]
+    v = [sum(velocity.GetTuple3(ids.GetId(k))[i] for k in range(3)) / 3 for i in range(3)]
+    v = [v[i] - dot(v, n) / area2 * n[i] for i in range(3)]  # projected on the face
+    lengths = (dot(grad, grad) * dot(v, v)) ** 0.5
+    if lengths == 0:
+        continue
+    area = area2 ** 0.5 / 2
+    weighted_cos += area * abs(dot(grad, v)) / lengths
+    kept_area += area
+check(kept_area > 0, 'tangential_stream_surfaces.vtp: the mask keeps no face')
+check(weighted_cos / kept_area > 0.95,
+      'the texture coordinate u of the stream surfaces does not follow the flow: mean |cos| %g'
+      % (weighted_cos / kept_area))
+print('TCoords: u follows the flow (mean |cos| %.4f on the kept faces)' % (weighted_cos / kept_area))
+
 # The script, as a user runs it.
 sys.argv = [os.path.join(out, 'open_in_paraview.py'), '--screenshot', os.path.join(out, 'paraview')]
 exec(compile(open(sys.argv[0]).read(), sys.argv[0], 'exec'), {'__file__': sys.argv[0], '__name__': '__main__'})
@@ -81,4 +155,38 @@ for name in ('tangential', 'orthogonal'):
     scalars = png.GetOutput().GetPointData().GetScalars()
     drawn = sum(1 for i in range(0, scalars.GetNumberOfTuples(), 7) if scalars.GetTuple(i)[:3] != (255.0, 255.0, 255.0))
     check(drawn > 500, '%s is (nearly) blank: %d of every 7th pixels drawn' % (picture, drawn))
+
+def drawn_colours(picture):
+    png = vtkPNGReader()
+    png.SetFileName(picture)
+    png.Update()
+    scalars = png.GetOutput().GetPointData().GetScalars()
+    return set(scalars.GetTuple(i)[:3] for i in range(scalars.GetNumberOfTuples())) - {(255.0, 255.0, 255.0)}
+
+
+textured_picture = os.path.join(out, 'paraview_tangential_textured.png')
+check(os.path.exists(textured_picture), textured_picture + ' not written')
+colours = len(drawn_colours(textured_picture))
+check(colours > 2000, '%s has %d colours: no texture' % (textured_picture, colours))
+
+# The domain's outline.
+for name in ('tangential', 'orthogonal'):
+    outline = FindSource(name + '_domain_outline')
+    check(outline is not None, 'open_in_paraview.py draws no outline of the domain for ' + name)
+    bounds = outline.GetDataInformation().GetBounds()
+    if field:
+        data = OpenDataFile(field)
+        data.UpdatePipeline()
+        expected = data.GetDataInformation().GetBounds()
+        size = max(expected[1] - expected[0], expected[3] - expected[2], expected[5] - expected[4])
+        # (the outline's points are float, the file's coordinates may be double)
+        check(all(abs(bounds[i] - expected[i]) <= 1e-6 * size for i in range(6)),
+              'the outline of %s has bounds %s, the file %s' % (name, bounds, expected))
+    else:
+        for f in os.listdir(out):
+            if f.startswith(name) and f.endswith('.vtp') and not f.endswith('_obstacle.vtp'):
+                b = read_vtp(os.path.join(out, f)).GetBounds()
+                inside = all(bounds[2 * i] - 1e-9 <= b[2 * i] and b[2 * i + 1] <= bounds[2 * i + 1] + 1e-9
+                             for i in range(3))
+                check(inside, '%s (bounds %s) is not inside the outline %s' % (f, b, bounds))
 print('check_paraview_scene: %d outputs opened, pictures written' % len(outputs))

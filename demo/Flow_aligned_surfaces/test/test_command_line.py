@@ -15,17 +15,23 @@
   progress ALIGN_PATCH           progress lines (iteration, flux, elapsed time) on standard output,
                                  and nothing there with --quiet
   summary ALIGN_PATCH VERSION    summary.json parsed back: the inputs, the version, the runs, and
-                                 exactly the files of the folder
+                                 exactly the files of the folder; each NAME_flux.csv has a row per
+                                 surface of NAME_iterations.pvd (0 to the iterations reported),
+                                 the first and last with the initial and final flux
+  field_directory ALIGN_PATCH    a folder given as --field is called a folder (not an empty
+                                 file), exit 1, nothing written
   scripts SCRIPTS_DIR            every user script with --help: exit 0, its usage, nothing run
                                  (cmake, apt-get, dpkg-query are fakes that log), nothing written;
                                  run-main-job.sh never takes an option for the output folder
 Each check works in a fresh temporary folder and exits non-zero with the reason when it fails.
 """
+import csv
 import json
 import os
 import subprocess
 import sys
 import tempfile
+import xml.etree.ElementTree as ET
 
 
 def fail(message):
@@ -176,6 +182,40 @@ def check_summary(align_patch, version):
         for name in ["summary.json", "tangential_aligned.vtp", "orthogonal_flux.csv"]:
             if name not in files:
                 fail(f"summary.json does not list {name}")
+        # NAME_flux.csv: one row per surface of NAME_iterations.pvd, the initial patch (row 0) and
+        # the surface of each iteration the run reports, the last one with the final flux.
+        for r in runs:
+            name = r["alignment"]
+            with open(os.path.join(out, name + "_flux.csv")) as f:
+                rows = list(csv.DictReader(f))
+            iterations = r["iterations"]
+            if [row["iteration"] for row in rows] != [str(k) for k in range(iterations + 1)]:
+                fail(f"{name}_flux.csv numbers its rows {[row['iteration'] for row in rows]}, expected 0 to "
+                     f"{iterations} (the initial patch and {iterations} iterations)")
+            pvd = ET.parse(os.path.join(out, name + "_iterations.pvd")).getroot().find("Collection")
+            if len(pvd.findall("DataSet")) != len(rows):
+                fail(f"{name}_flux.csv has {len(rows)} rows, {name}_iterations.pvd {len(pvd)} surfaces")
+            for row, key in [(rows[0], "initial_normalized_flux"), (rows[-1], "final_normalized_flux")]:
+                if abs(float(row["normalized_flux"]) - r[key]) > 1e-9 * max(1.0, abs(r[key])):
+                    fail(f"{name}_flux.csv row {row['iteration']}: flux {row['normalized_flux']}, "
+                         f"summary.json's {key} {r[key]}")
+            if rows[-1]["converged"] != ("1" if r["converged"] else "0"):
+                fail(f"{name}_flux.csv's last row says converged={rows[-1]['converged']}, summary.json {r['converged']}")
+
+
+def check_field_directory(align_patch):
+    """A folder given as --field (an OpenFOAM case, say) is called a folder, the message says what
+    to give instead, the run fails (exit 1) and writes nothing."""
+    with tempfile.TemporaryDirectory() as work:
+        case = os.path.join(work, "case")
+        os.mkdir(case)
+        status, out, err = run([align_patch, "--field", case, "--output", "out", "--quiet"], work)
+        if status != 1:
+            fail(f"--field FOLDER: exit status {status}, expected 1\n{out}{err}")
+        if f"--field: {case} is a directory; give a velocity file (" not in err or "empty" in err:
+            fail(f"--field FOLDER is not called a directory:\n{err}")
+        if sorted(os.listdir(work)) != ["case"]:
+            fail(f"--field FOLDER wrote {sorted(os.listdir(work))}")
 
 
 def fake_tools(work):
@@ -259,6 +299,8 @@ def main():
         check_failed_run(args[0], args[1])
     elif check == "progress":
         check_progress(args[0])
+    elif check == "field_directory":
+        check_field_directory(args[0])
     elif check == "summary":
         check_summary(args[0], args[1])
     elif check == "scripts":

@@ -20,9 +20,14 @@
 #include <gtest/gtest.h>
 
 #if defined(FAS_DEMO_HAVE_RENDERING) && defined(CGAL_FLOW_ALIGNED_SURFACES_USE_PNG)
+#include "render_scene_PNG.h"
 #include "render_surface_PNG.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
 #include <limits>
 #include <optional>
 #include <random>
@@ -234,6 +239,101 @@ TEST(RenderSurfacePNG, NaNParametrizationIsDrawnInTheMeanColour)
   };
   EXPECT_LT(deviation(0.35, 0.65), 0.01) << "masked: one colour";
   EXPECT_GT(deviation(-0.65, -0.35), 0.1) << "textured: high contrast";
+}
+
+// The defined/undefined lattice of a solid (`inside(x, y, z)`) on n^3 samples of spacing 1.
+template <class Inside>
+fas_demo::Flow_domain_lattice solid_lattice(int n, const Inside& inside)
+{
+  fas_demo::Flow_domain_lattice lattice;
+  lattice.dimensions = {n, n, n};
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        lattice.defined.push_back(inside(double(i), double(j), double(k)) ? 0.0 : 1.0);
+  return lattice;
+}
+
+// The angle (degrees) between each triangle's normal and `normal_at(centroid)`, sorted.
+template <class Normal>
+std::vector<double> normal_deviations(vtkPolyData* surface, const Normal& normal_at)
+{
+  std::vector<double> angles;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c) {
+    vtkIdList* ids = surface->GetCell(c)->GetPointIds();
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+      surface->GetPoint(ids->GetId(k), p[k]);
+    const double e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+    const double e2[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const double c3[3] = {(p[0][0] + p[1][0] + p[2][0]) / 3, (p[0][1] + p[1][1] + p[2][1]) / 3,
+                          (p[0][2] + p[1][2] + p[2][2]) / 3};
+    const std::array<double, 3> m = normal_at(c3);
+    const double ln = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]),
+                 lm = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    if (ln == 0 || lm == 0)
+      continue;
+    const double cosine = std::abs(n[0] * m[0] + n[1] * m[1] + n[2] * m[2]) / (ln * lm);
+    angles.push_back(std::acos(std::min(1.0, cosine)) * 180 / 3.141592653589793);
+  }
+  std::sort(angles.begin(), angles.end());
+  return angles;
+}
+
+// A ball of radius 8 samples: the obstacle's faces follow the sphere's normals (the plain 0/1
+// contour is a staircase of faces up to 45 degrees off), and its points lie on the sphere within
+// a third of a sample.
+TEST(RenderScenePNG, ObstacleIsASmoothContour)
+{
+  const double r = 8, c = 15.3;
+  const auto lattice = solid_lattice(32, [&](double x, double y, double z) {
+    return (x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c) < r * r;
+  });
+  const vtkSmartPointer<vtkPolyData> obstacle = fas_demo::obstacle_polydata(lattice);
+  ASSERT_GT(obstacle->GetNumberOfCells(), 500);
+  const std::vector<double> angles = normal_deviations(obstacle, [&](const double* p) {
+    return std::array<double, 3>{p[0] - c, p[1] - c, p[2] - c};
+  });
+  // (Marching triangles are not tangent planes: a smooth contour still has faces a few degrees
+  // off; the 0/1 staircase has a median of about 20 degrees and faces 45 degrees off.)
+  EXPECT_LT(angles[angles.size() / 2], 5.0) << "median";
+  EXPECT_LT(angles[angles.size() * 95 / 100], 12.0) << "95% of the faces";
+  EXPECT_LT(angles.back(), 25.0);
+  for (vtkIdType i = 0; i < obstacle->GetNumberOfPoints(); ++i) {
+    double p[3];
+    obstacle->GetPoint(i, p);
+    const double distance = std::sqrt((p[0] - c) * (p[0] - c) + (p[1] - c) * (p[1] - c) + (p[2] - c) * (p[2] - c));
+    ASSERT_NEAR(distance, r, 1.0 / 3) << "point " << i;
+  }
+}
+
+// A cylinder across the whole lattice (an obstacle larger than the scene): its surface is closed,
+// capped on the lattice's box (every edge shared by two triangles), not an open tube.
+TEST(RenderScenePNG, ObstacleLeavingTheLatticeIsClosed)
+{
+  const double r = 6, c = 12.4;
+  const auto lattice = solid_lattice(26, [&](double x, double y, double) {
+    return (x - c) * (x - c) + (y - c) * (y - c) < r * r;
+  });
+  const vtkSmartPointer<vtkPolyData> obstacle = fas_demo::obstacle_polydata(lattice);
+  ASSERT_GT(obstacle->GetNumberOfCells(), 100);
+  std::map<std::pair<vtkIdType, vtkIdType>, int> edges;
+  for (vtkIdType cell = 0; cell < obstacle->GetNumberOfCells(); ++cell) {
+    vtkIdList* ids = obstacle->GetCell(cell)->GetPointIds();
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
+      const vtkIdType a = ids->GetId(k), b = ids->GetId((k + 1) % ids->GetNumberOfIds());
+      ++edges[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  std::size_t open = 0;
+  for (const auto& edge : edges)
+    open += edge.second != 2 ? 1 : 0;
+  EXPECT_EQ(open, 0u) << "edges not shared by two triangles";
+  double bounds[6];
+  obstacle->GetBounds(bounds);
+  EXPECT_LT(bounds[4], 0.5) << "the obstacle reaches the lattice's lower face";
+  EXPECT_GT(bounds[5], 24.5) << "and its upper face";
 }
 
 } // namespace

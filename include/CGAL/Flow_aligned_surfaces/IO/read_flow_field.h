@@ -20,10 +20,12 @@
 
 #include <cctype>
 #include <cstddef>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
@@ -181,7 +183,11 @@ bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field
   }
   if (error) {
     std::ifstream probe(filename, std::ios::binary);
-    if (!probe)
+    std::error_code ec;
+    // A directory opens as a stream that reads nothing: it would be called empty.
+    if (std::filesystem::is_directory(filename, ec))
+      *error = "read_flow_field: " + filename + ": is a directory, not a file";
+    else if (!probe)
       *error = "read_flow_field: " + filename + ": cannot open the file for reading";
     else if (head.empty())
       *error = "read_flow_field: " + filename + ": the file is empty (0 bytes)";

@@ -12,12 +12,14 @@
 #include <cctype>
 #include <cstddef>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <utility>
 
 // POSIX systems map the file instead of copying it (see File_contents).  Under AddressSanitizer
@@ -56,6 +58,10 @@ struct Read_error : std::runtime_error {
 /// lets the parsers check every count against the bytes that are really there.
 inline std::string read_file_contents(const std::string& filename, const std::string& reader)
 {
+  std::error_code ec;
+  // A directory opens as a stream that reads nothing: it would be called empty or unsized.
+  if (std::filesystem::is_directory(filename, ec))
+    throw Read_error(reader + ": " + filename + ": is a directory, not a file");
   std::ifstream is(filename, std::ios::binary);
   if (!is)
     throw Read_error(reader + ": " + filename + ": cannot open the file for reading");
