@@ -1,0 +1,166 @@
+"""The manual's ParaView tutorial (page fas_paraview_tutorial) as one script: every block between
+two `# [name]` lines is the Python beside the GUI step of that name in the manual, which shows
+these very lines.  The test paraview_tutorial_gui runs this file in the ParaView GUI (--script)
+and takes its screenshots between the blocks, so that what the manual shows is what was run.
+
+    pvpython tutorial.py PLUGIN CYLINDER_grid.vtk [CASE.foam]
+
+(PLUGIN: FlowAlignedSurfaces.so, lib/paraview-5.11/plugins/FlowAlignedSurfaces/ of the build tree;
+CASE.foam: an OpenFOAM case with U; without it the OpenFOAM part is left out.)  The texture is
+written into the current folder.  In the GUI's Python shell (View > Python Shell) the blocks can
+be pasted one by one after setting `cylinder_file` and `case_file`."""
+from paraview.simple import *
+
+import os
+import sys
+
+# Set by the GUI test: a function called after each block with the block's name.
+step = globals().get("step", lambda name: None)
+if "cylinder_file" not in globals():  # run as a script, not by the GUI test
+    if len(sys.argv) not in (3, 4):
+        raise SystemExit("usage: pvpython tutorial.py PLUGIN CYLINDER_grid.vtk [CASE.foam]")
+    LoadPlugin(sys.argv[1], remote=False, ns=globals())
+    cylinder_file = sys.argv[2]
+    case_file = sys.argv[3] if len(sys.argv) == 4 else None
+    texture_file = os.path.abspath("flow_texture.png")
+
+# [open]
+data = LegacyVTKReader(FileNames=[cylinder_file])  # File > Open, then Apply
+view = GetActiveViewOrCreate("RenderView")
+Show(data, view)  # an image is drawn as its outline
+# The obstacle, for orientation: Filters > Contour, Contour By "inside" (0 in the solid) at 0.5.
+cylinder = Contour(Input=data, ContourBy=["POINTS", "inside"], Isosurfaces=[0.5])
+ColorBy(Show(cylinder, view), None)
+view.CameraPosition = [-0.6, -2.2, 1.6]  # the mouse: the channel seen from above the side
+view.CameraFocalPoint = [1.25, 0.2, 0.2]
+view.CameraViewUp = [0, 0, 1]
+Render(view)
+# [open]
+step("open")
+
+# [apply]
+surface = FlowAlignedSurface(Input=data)  # Filters > Flow-Aligned Surfaces > Flow-Aligned Surface
+shown = Show(surface, view)  # Apply, with the defaults
+ColorBy(shown, ("CELLS", "normalized_flux"))  # the colour selector of the toolbar
+shown.SetScalarBarVisibility(view, True)
+# The colour map editor's "Rescale to custom range": 0 (aligned) to 1 (across the flow).
+GetColorTransferFunction("normalized_flux").RescaleTransferFunction(0.0, 1.0)
+view.CameraPosition = [0.25, -0.55, 0.75]  # the mouse: closer to the cylinder and the patch
+view.CameraFocalPoint = [0.7, 0.2, 0.2]
+view.CameraViewUp = [0, 0, 1]
+Render(view)
+# [apply]
+step("apply")
+
+# [drag]
+# Dragging the plane widget's centre and its normal arrow sets these two properties.
+# Here: in front of the cylinder and beside its axis, where the flow parts around it.
+surface.Center = [0.35, 0.25, 0.2]
+surface.Normal = [0.0, 1.0, 0.3]
+Render(view)  # Apply (or Auto Apply)
+# [drag]
+step("drag")
+
+# [play]
+scene = GetAnimationScene()  # the VCR toolbar: the iterations are time steps 0, 1, ...
+scene.UpdateAnimationUsingDataTimeSteps()
+scene.Play()
+Hide3DWidgets(proxy=surface)  # Properties: Show Plane off
+view.CameraPosition = [0.05, -0.3, 0.55]  # the mouse: closer
+view.CameraFocalPoint = [0.42, 0.22, 0.2]
+Render(view)
+# [play]
+step("play")
+
+# [grow]
+grown = GrowBoundary(Input=data, Surface=surface)  # Filters > Flow-Aligned Surfaces > Grow Boundary
+grown_shown = Show(grown, view)
+ColorBy(grown_shown, ("POINTS", "growth_step"))
+Hide(surface, view)
+Render(view)
+# [grow]
+step("grow")
+
+# [seed]
+seeds = ParametrizeAndSeed(Input=data, Surface=grown)  # ... > Parametrize And Seed
+# One iso-line of r across the flow (10 by default: on a stream surface they would all start the
+# same stream surface).
+seeds.NumberOfSeedCurves = 1
+seeded = Show(OutputPort(seeds, 0), view)  # port Surface, coloured by r
+ColorBy(seeded, ("POINTS", "r"))
+curves = Show(OutputPort(seeds, 1), view)  # port Seed Curves
+ColorBy(curves, None)
+curves.DiffuseColor = curves.AmbientColor = [0, 0, 0]
+curves.LineWidth = 3
+Show(OutputPort(seeds, 2), view)  # port Seed Points
+Hide(grown, view)
+Render(view)
+# [seed]
+step("seed")
+
+# [stream]
+stream = StreamSurfaceFromCurve(Input=data, Seeds=OutputPort(seeds, 1))  # Seeds: port Seed Curves
+stream.IntegrationDirection = "Both"  # upstream and downstream of the seed curve
+stream_shown = Show(stream, view)
+ColorBy(stream_shown, ("POINTS", "IntegrationTime"))
+Hide(OutputPort(seeds, 0), view)
+Hide(OutputPort(seeds, 2), view)
+view.CameraPosition = [0.3, -1.3, 1.2]  # the mouse: the whole stream surface
+view.CameraFocalPoint = [1.0, 0.2, 0.2]
+Render(view)
+# [stream]
+step("stream")
+
+# [texture]
+texture = FlowTexture(Input=data, Surface=stream)  # ... > Flow Texture
+SaveData(texture_file, proxy=OutputPort(texture, 1))  # File > Save Data: port Texture as PNG
+textured = Show(OutputPort(texture, 0), view)  # port Textured Surface
+ColorBy(textured, None)
+textured.DiffuseColor = [1, 1, 1]
+textured.Texture = CreateTexture(texture_file)  # Properties > Texture > Load
+Hide(stream, view)
+Hide(OutputPort(seeds, 1), view)
+Render(view)
+# [texture]
+step("texture")
+
+if case_file:
+    # [openfoam_open]
+    for source in GetSources().values():  # the eye icons: the cylinder's pipeline hidden
+        Hide(source, view)
+    case = OpenFOAMReader(FileName=case_file)  # File > Open > case.foam
+    case.MeshRegions = ["internalMesh", "patch/inlet", "patch/outlet", "patch/walls"]  # Mesh Regions
+    case.CellArrays = ["U"]
+    case_shown = Show(case, view)  # Apply
+    case_shown.SetRepresentationType("Outline")  # the walls would hide what is inside
+    ResetCamera(view)
+    Render(view)
+    # [openfoam_open]
+    step("openfoam_open")
+
+    # [openfoam_surface]
+    foam_surface = FlowAlignedSurface(Input=case)  # the whole multiblock: mesh and patches
+    foam_surface.Velocity = ["CELLS", "U"]  # or ["POINTS", "U"], which the reader interpolates
+    foam_shown = Show(foam_surface, view)
+    ColorBy(foam_shown, ("CELLS", "normalized_flux"))
+    scene.UpdateAnimationUsingDataTimeSteps()
+    scene.GoToLast()  # the time controls' "Last Frame"
+    # [openfoam_surface]
+    step("openfoam_surface")
+
+    # [openfoam_stream]
+    foam_seeds = ParametrizeAndSeed(Input=case, Surface=foam_surface)
+    foam_seeds.Velocity = ["CELLS", "U"]  # every filter's Velocity selector: U
+    foam_seeds.NumberOfSeedCurves = 1
+    foam_curves = Show(OutputPort(foam_seeds, 1), view)
+    ColorBy(foam_curves, None)
+    foam_curves.DiffuseColor = foam_curves.AmbientColor = [0, 0, 0]
+    foam_curves.LineWidth = 3
+    foam_stream = StreamSurfaceFromCurve(Input=case, Seeds=OutputPort(foam_seeds, 1))
+    foam_stream.Velocity = ["CELLS", "U"]
+    foam_stream.IntegrationDirection = "Both"
+    ColorBy(Show(foam_stream, view), ("POINTS", "IntegrationTime"))
+    Hide(foam_surface, view)
+    Render(view)
+    # [openfoam_stream]
+    step("openfoam_stream")
