@@ -8,7 +8,8 @@
 # the main job, demo/Flow_aligned_surfaces/align_patch.cpp, rendered
 # by VTK off screen (under a private Xvfb when there is no display).  The schematic SVG figures
 # come from doc/Flow_aligned_surfaces/fig/make_figures.py, the session plot from replay_session;
-# the ParaView screenshots from the plugin's tests (demo/Flow_aligned_surfaces/ParaView/test).
+# the ParaView screenshots from the plugin's tests (demo/Flow_aligned_surfaces/ParaView/test), the
+# tutorial's screenshots of the whole GUI from paraview_tutorial_gui.
 set -euo pipefail
 source "$(dirname "$0")/lib/help.sh"
 exit_if_help_asked "$@"
@@ -55,10 +56,17 @@ if [ -d "$build/demo/Flow_aligned_surfaces/ParaView" ]; then
   (cd "$build" && ctest -R "paraview_gui|paraview_main_job_script" --output-on-failure)
   cp "$build/demo/Flow_aligned_surfaces/ParaView/test/paraview_gui.png" "$fig/fas_paraview_gui.png"
   cp "$build/demo/Flow_aligned_surfaces/ParaView/test/main_job/main_job.png" "$fig/fas_paraview_main_job.png"
+  # The tutorial's screenshots of the whole GUI (needs the cylinder data: the test exists only then).
+  if [ -f "$cylinder" ]; then
+    (cd "$build" && ctest -R "^paraview_tutorial_gui$" --output-on-failure)
+    cp "$build"/demo/Flow_aligned_surfaces/ParaView/test/tutorial/fas_tutorial_*.png "$fig/"
+  else
+    echo "make-figures: $cylinder not found; fas_tutorial_*.png unchanged" >&2
+  fi
 else
   echo "make-figures: ParaView not found; fas_paraview_*.png unchanged" >&2
 fi
 echo "make-figures: wrote $fig/fas_texture_noise.png, fas_texture_arrows.png, fas_texture_seed_curves.png,"
 echo "  fas_seeding_seed_curves.png, fas_seeding_stream_surfaces.png, fas_seeding_stream_lines.png,"
 echo "  fas_main_job_{tangential,orthogonal}_scene.png, fas_main_job_cfd_{tangential,orthogonal}_scene.png,"
-echo "  fas_paraview_gui.png, fas_paraview_main_job.png (with ParaView)"
+echo "  fas_paraview_gui.png, fas_paraview_main_job.png, fas_tutorial_*.png (with ParaView)"
