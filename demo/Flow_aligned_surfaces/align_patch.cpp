@@ -456,12 +456,14 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   Progress progress(name);
   FAS::Flow_aligned_deformation<Mesh, Flow> deformation(
       tm, scene.flow, alignment,
-      CGAL::parameters::number_of_iterations(200).visitor([&](const FAS::Iteration_report& r) {
-        iterations.push_back(r);
-        flux_after.push_back(FAS::normalized_flux(tm, scene.flow));
-        progress(r);
-        collection.add(tm, scene.flow);
-      }));
+      CGAL::parameters::number_of_iterations(200)
+          .visitor([&](const FAS::Iteration_report& r) {
+            iterations.push_back(r);
+            flux_after.push_back(FAS::normalized_flux(tm, scene.flow));
+            progress(r);
+            collection.add(tm, scene.flow);
+          })
+          .callback(std::function<bool(double)>([&](double done) { return progress(done); })));
   Run_summary summary;
   summary.alignment = name;
   summary.faces = tm.number_of_faces();

@@ -362,12 +362,31 @@ private:
 /// silences them with the rest of standard output.
 class Progress {
 public:
-  explicit Progress(std::string name)
-      : name_(std::move(name)), start_(std::chrono::steady_clock::now()), last_(start_)
+  /// `fractions`: the library's `callback` (a deformation's `run()`) gives the share of the
+  /// iterations done, and the lines are printed then; otherwise (single `step()`s) by the visitor.
+  explicit Progress(std::string name, bool fractions = true)
+      : name_(std::move(name)), fractions_(fractions), start_(std::chrono::steady_clock::now()), last_(start_)
   {
   }
 
+  /// The deformation's `visitor`: the iteration's report.
   void operator()(const CGAL::Flow_aligned_surfaces::Iteration_report& r)
+  {
+    report_ = r;
+    if (!fractions_)
+      print(std::string());
+  }
+
+  /// The library's `callback`, called after the visitor.  Never asks to stop.
+  bool operator()(double fraction_done)
+  {
+    print(" (" + std::to_string(std::lround(100 * fraction_done)) + " % of the most)");
+    return true;
+  }
+
+private:
+  // A line at most once a second.
+  void print(const std::string& share)
   {
     const auto now = std::chrono::steady_clock::now();
     if (printed_ && now - last_ < std::chrono::seconds(1))
@@ -375,13 +394,14 @@ public:
     printed_ = true;
     last_ = now;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
-    std::cout << name_ << ": iteration " << r.iteration << ", flux " << r.normalized_flux << ", "
-              << std::round(10 * elapsed) / 10 << " s elapsed" << std::endl;
+    std::cout << name_ << ": iteration " << report_.iteration << share << ", flux " << report_.normalized_flux
+              << ", " << std::round(10 * elapsed) / 10 << " s elapsed" << std::endl;
   }
 
-private:
   std::string name_;
+  bool fractions_;
   std::chrono::steady_clock::time_point start_, last_;
+  CGAL::Flow_aligned_surfaces::Iteration_report report_;
   bool printed_ = false;
 };
 

@@ -248,17 +248,8 @@ inline Flow_texture_of_mesh flow_texture_of_mesh(const Mesh& tm, const Flow& flo
   auto uv = copy.add_property_map<Mesh::Vertex_index, std::array<double, 2>>("v:uv").first;
   auto mask = copy.add_property_map<Mesh::Face_index, double>("f:mask", 1).first;
   FAS::parametrize_tangential(copy, flow, r, s, FAS::parameters::normalized(false));
-  if (!(scale > 0)) {
-    double lo = 0, hi = 0;
-    bool first = true;
-    for (auto v : copy.vertices())
-      if (std::isfinite(r[v])) {
-        lo = first ? r[v] : std::min(lo, r[v]);
-        hi = first ? r[v] : std::max(hi, r[v]);
-        first = false;
-      }
-    scale = hi > lo ? -scale / (hi - lo) : 1;
-  }
+  if (!(scale > 0))
+    scale = scale < 0 ? FAS::flow_texture_scale(copy, r, -scale) : 1;
   FAS::compute_flow_texture_coordinates(copy, r, s, uv, scale);
   FAS::compute_flow_texture_mask(copy, flow, r, mask);
   Flow_texture_of_mesh result;

@@ -222,7 +222,7 @@ int main(int argc, char** argv)
 
     const std::string stem = s.file.stem().string();
     try {
-      Progress progress(stem);
+      Progress progress(stem, false); // replayed iterations are single step()s
       FAS::Flow_aligned_deformation<Mesh, Flow> deformation(tm, *flow, s.session.alignment,
                                                             CGAL::parameters::visitor(std::ref(progress)));
       const FAS::Session_replay_report replay =

@@ -275,6 +275,35 @@ TEST(FlowTexture, BadInputIsNamed)
                           {"compute_flow_texture_mask", "tm"});
 }
 
+// The automatic scale: `repeats` over the range of the finite values of r, whatever the size.
+TEST(FlowTexture, ScaleGivesTheRepeatsOverTheRangeOfR)
+{
+  Mesh tm;
+  FAS::make_planar_patch(tm, Point_3(1, 0, 0), Vector_3(0, 0, 1), 2.0, 2.0, 200);
+  auto r = tm.add_property_map<Vertex, double>("v:r", 0).first;
+  for (Vertex v : tm.vertices())
+    r[v] = 5 * tm.point(v).x(); // x in [0, 2]: r in [0, 10]
+  EXPECT_DOUBLE_EQ(FAS::flow_texture_scale(tm, r, 3), 0.3);
+  EXPECT_DOUBLE_EQ(FAS::flow_texture_scale(tm, r, -2), -0.2);
+  r[*tm.vertices().begin()] = std::numeric_limits<double>::infinity(); // left out
+  for (Vertex v : tm.vertices())
+    if (tm.point(v).x() == 2.0)
+      r[v] = std::nan("");
+  const double range = [&] {
+    double lo = 1e300, hi = -1e300;
+    for (Vertex v : tm.vertices())
+      if (std::isfinite(r[v]))
+        lo = std::min(lo, r[v]), hi = std::max(hi, r[v]);
+    return hi - lo;
+  }();
+  EXPECT_DOUBLE_EQ(FAS::flow_texture_scale(tm, r, 3), 3 / range);
+  for (Vertex v : tm.vertices())
+    r[v] = 7;
+  EXPECT_EQ(FAS::flow_texture_scale(tm, r, 3), 1.0) << "no range: scale 1";
+  expect_invalid_argument([&] { FAS::flow_texture_scale(tm, r, 0); }, {"flow_texture_scale", "repeats"});
+  expect_invalid_argument([&] { FAS::flow_texture_scale(tm, r, std::nan("")); }, {"repeats", "nan"});
+}
+
 } // namespace
 
 } // namespace test_flow_texture

@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <random>
 #include <stdexcept>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -356,6 +357,48 @@ void compute_flow_texture_coordinates(const TriangleMesh& tm, RMap r_map, SMap s
     put(uv_map, v,
         std::array<double, 2>{CGAL::to_double(get(r_map, v)) * scale + offset,
                               CGAL::to_double(get(s_map, v)) * scale});
+}
+
+/*!
+\ingroup PkgFlowAlignedSurfacesRef
+
+\brief Returns the `scale` of `compute_flow_texture_coordinates()` that puts `repeats` texture
+repeats along the flow over the whole surface: `repeats` divided by the range of the finite
+values of \f$ r \f$ on the vertices of `tm` (1 when there is no range: no vertex, or \f$ r \f$
+constant).
+
+The scale that shows the texture's structure depends on the flow's speed and the surface's size
+(with the unnormalized parametrization \f$ r \f$ grows like the time of flight): a fixed scale
+shows a few flat bands on one data set and noise on another.  This one shows the same number of
+repeats on every surface.
+
+\tparam TriangleMesh a model of `VertexListGraph`
+\tparam RMap a model of `ReadablePropertyMap` with the vertices as key type and a number type
+convertible to `double` as value type
+
+\param tm the mesh
+\param r_map the parametrization's \f$ r \f$
+\param repeats the number of repeats along the flow (finite, not zero; negative mirrors the
+texture)
+
+\throws std::invalid_argument naming `repeats` if it is not finite or zero.
+\sa `compute_flow_texture_coordinates()`
+*/
+template <class TriangleMesh, class RMap>
+double flow_texture_scale(const TriangleMesh& tm, RMap r_map, double repeats)
+{
+  if (!std::isfinite(repeats) || repeats == 0)
+    throw std::invalid_argument("flow_texture_scale: repeats must be finite and not zero (got " +
+                                std::to_string(repeats) + ")");
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (auto v : vertices(tm)) {
+    const double r = CGAL::to_double(get(r_map, v));
+    if (std::isfinite(r)) {
+      lo = (std::min)(lo, r);
+      hi = (std::max)(hi, r);
+    }
+  }
+  return hi > lo ? repeats / (hi - lo) : 1.0;
 }
 
 } // namespace Flow_aligned_surfaces

@@ -11,6 +11,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fas_plugin_test as t
 
+from vtkmodules.vtkFiltersCore import vtkProbeFilter
+
 setup = t.Setup(globals())
 data = XMLImageDataReader(FileName=[setup.field()])
 
@@ -130,11 +132,31 @@ def check(surface, seeds_proxy, name, case):
     return out
 
 
-# 1. ParaView's own Line source, every property at the library's default.
+# 1. ParaView's own Line source, every property at its default: the surface is as long as the
+#    data's largest extent at the seed points' mean speed (VTK's probe filter samples it), in 200
+#    time lines, and lies on the flow's stream surfaces.
 line = Line(Point1=[-2.5, 0.3, -0.5], Point2=[-2.5, 1.5, 0.5], Resolution=20)
 surface = StreamSurfaceFromCurve(Input=data, Seeds=line)
 surface.Velocity = ["POINTS", "velocity"]
-first = check(surface, line, "defaults", "defaults")
+first = t.fetch(surface)
+seed_points = t.fetch(line)
+probe = vtkProbeFilter()
+probe.SetInputData(seed_points)
+probe.SetSourceData(t.fetch(data))
+probe.Update()
+speeds = [math.sqrt(sum(c * c for c in probe.GetOutput().GetPointData().GetArray("velocity").GetTuple3(i)))
+          for i in range(seed_points.GetNumberOfPoints())]
+bounds = data.GetDataInformation().GetBounds()
+expected_time = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]) / (sum(speeds) / len(speeds))
+t_values = point_array(first, "t")
+step = t.field_value(first, "time_line_step")
+if first.GetNumberOfCells() == 0 or not (max(t_values) <= expected_time * (1 + 1e-9) and
+                                          abs(step - expected_time / 200) < 1e-9 * expected_time):
+    raise AssertionError("defaults: t up to %g with time-line step %g; expected at most %g in steps of %g" % (
+        max(t_values), step, expected_time, expected_time / 200))
+t.expect_spread_over_ranks(first, "defaults")
+expect_on_stream_surfaces(first, seed_points, "defaults")
+print("defaults: t up to %g of %g, %d faces" % (max(t_values), expected_time, first.GetNumberOfCells()))
 
 # 2. Backward from behind the cylinder, limited in time, with a given time-line step.
 line.Point1 = [1.5, 0.3, -0.5]

@@ -62,7 +62,7 @@ struct vtkFlowTexture::Internals {
 };
 
 vtkFlowTexture::vtkFlowTexture()
-  : Scale(0.4)
+  : Scale(0)
   , Offset(0)
   , MinRelativeSpeed(0)
   , Texture(NOISE)
@@ -159,7 +159,10 @@ int vtkFlowTexture::RequestData(
     });
     const auto [r, s, mask] = parametrize_and_mask(tm);
     auto uv = tm.add_property_map<Vertex, std::array<double, 2>>("v:uv").first;
-    FAS::compute_flow_texture_coordinates(tm, r, s, uv, this->Scale, this->Offset);
+    // Scale 0: three repeats along the flow over the surface, whatever the flow's speed and the
+    // surface's size.
+    const double scale = this->Scale == 0 ? FAS::flow_texture_scale(tm, r, 3) : this->Scale;
+    FAS::compute_flow_texture_coordinates(tm, r, s, uv, scale, this->Offset);
     const vtkSmartPointer<vtkImageData> texture = texture_piece();
 
     auto surface = vtkSmartPointer<vtkPolyData>::New();

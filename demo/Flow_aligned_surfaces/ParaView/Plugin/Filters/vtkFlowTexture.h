@@ -13,8 +13,9 @@
 /// surface (the tangential output of vtkFlowAlignedSurface).
 ///
 /// Output port 0: the surface with the point arrays `r`, `s` (the unnormalized tangential
-/// parametrization) and `texture_coordinates` = (r Scale + Offset, s Scale), which is the point
-/// data's TCoords (ParaView's texture mapping uses it), and the cell array `texture_mask`, the
+/// parametrization) and `texture_coordinates` = (r Scale + Offset, s Scale) (Scale 0: three
+/// repeats along the flow over the surface, `flow_texture_scale()`), which is the point data's
+/// TCoords (ParaView's texture mapping uses it), and the cell array `texture_mask`, the
 /// mask b(gamma) in [0, 1] per face (0: the texture follows the flow, 1: show the texture's mean
 /// colour).  Output port 1: the texture, an RGB image (unsigned char) of TextureWidth x
 /// TextureHeight texels whose x axis runs along the flow once mapped.

@@ -121,8 +121,19 @@ int vtkGrowBoundary::RequestData(
     FAS::Alignment_report aligned;
     std::size_t iterations = 0;
     std::vector<double> growth_step(input_vertices, 0.);
+    // Progress per growth step; Abort (AbortExecute) stops before the next one, keeping the
+    // steps done.
+    int done = 0;
     for (int step = 1; step <= this->NumberOfGrowthSteps; ++step)
     {
+      if (this->GetAbortExecute())
+      {
+        this->SetAbortExecute(0);
+        this->Modified(); // the output is not the requested one: the next update computes it
+        vtkWarningMacro(<< "Grow Boundary: cancelled after growth step " << done << " of "
+                        << this->NumberOfGrowthSteps << "; the output shows the surface grown so far");
+        break;
+      }
       FAS::Growth_report r;
       if (this->GrowthMode == ACROSS_FLOW)
         r = deformation.grow(this->Distance, FAS::parameters::across_flow(true));
@@ -140,6 +151,8 @@ int vtkGrowBoundary::RequestData(
       growth_step.resize(tm.number_of_vertices(), double(step));
       aligned = iterate(deformation, field, std::size_t(this->NumberOfIterations));
       iterations += aligned.number_of_iterations;
+      done = step;
+      this->UpdateProgress(double(step) / double(this->NumberOfGrowthSteps));
     }
 
     const auto [result, flux] = aligned_surface_output(tm, field);

@@ -12,6 +12,9 @@
 #include <vtkObjectFactory.h>
 #include <vtkStringArray.h>
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -44,6 +47,25 @@ void add_per_curve(vtkDataObject* data, const char* name, const std::vector<std:
 bool surface_is_empty(const FAS::Stream_surface_report& r)
 {
   return r.number_of_faces == 0;
+}
+
+// The integration time that carries a particle at the seed curves' mean speed over the data's
+// largest extent (`bounds`): the length of a stream surface when the user gave none.  0 when no
+// seed point has a flow.
+template <class Field>
+double time_across_the_data(const Field& field, const std::vector<Polyline>& curves, const double bounds[6])
+{
+  double speed = 0;
+  std::size_t sampled = 0;
+  for (const Polyline& curve : curves)
+    for (const Point& p : curve)
+      if (const std::optional<Vector> v = field(p))
+      {
+        speed += std::sqrt(v->squared_length());
+        ++sampled;
+      }
+  const double extent = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  return sampled > 0 && speed > 0 ? extent / (speed / double(sampled)) : 0.;
 }
 
 } // namespace
@@ -110,7 +132,23 @@ int vtkStreamSurfaceFromCurve::RequestData(
         "the seed input (port 1) has no line or polyline of two points or more; give it seed "
         "curves (Parametrize and Seed's, a Line source, a contour)");
 
-    const bool limited = this->ArcLengthTimeLines ? this->MaxLength > 0 : this->MaxTime > 0;
+    // No length given: the surface reaches as far as the data's largest extent (a time at the
+    // seeds' mean speed, or that arc length), in 200 time lines unless a step is given.
+    double max_time = this->MaxTime, max_length = this->MaxLength, time_line_step = this->TimeLineStep;
+    if (max_time <= 0 && max_length <= 0)
+    {
+      const double* b = pieces.bounds.data();
+      if (this->ArcLengthTimeLines)
+        max_length = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
+      else
+      {
+        field.probe_points_of([&] { time_across_the_data(field, curves, b); });
+        max_time = time_across_the_data(field, curves, b);
+      }
+      if (time_line_step <= 0)
+        time_line_step = (this->ArcLengthTimeLines ? max_length : max_time) / 200;
+    }
+    const bool limited = this->ArcLengthTimeLines ? max_length > 0 : max_time > 0;
     const std::size_t max_time_lines = this->MaxNumberOfTimeLines > 0
       ? std::size_t(this->MaxNumberOfTimeLines)
       : (limited ? std::numeric_limits<std::size_t>::max() : std::size_t(100));
@@ -119,6 +157,13 @@ int vtkStreamSurfaceFromCurve::RequestData(
       : (this->IntegrationDirection == BOTH ? FAS::Integration_direction::BOTH
                                             : FAS::Integration_direction::FORWARD);
 
+    // Progress per time line of each seed curve; Abort (AbortExecute) stops after the time line
+    // in progress, keeping the surfaces integrated so far.
+    std::size_t current_curve = 0;
+    const auto progress = [&](double fraction) {
+      this->UpdateProgress((double(current_curve) + fraction) / double(curves.size()));
+      return !this->GetAbortExecute();
+    };
     Mesh tm;
     auto u_map = tm.add_property_map<Mesh::Vertex_index, double>("v:u", 0.).first;
     auto t_map = tm.add_property_map<Mesh::Vertex_index, double>("v:t", 0.).first;
@@ -133,10 +178,13 @@ int vtkStreamSurfaceFromCurve::RequestData(
                 FAS::parameters::absolute_tolerance(this->AbsoluteTolerance,
                   FAS::parameters::max_number_of_steps(std::size_t(this->MaxNumberOfSteps),
                     FAS::parameters::seed_parameter_map(
-                      u_map, FAS::parameters::integration_time_map(t_map))))))))));
+                      u_map, FAS::parameters::integration_time_map(t_map,
+                        CGAL::parameters::callback(std::function<bool(double)>(progress))))))))))));
 
-    for (std::size_t c = 0; c < curves.size(); ++c)
+    bool cancelled = false;
+    for (std::size_t c = 0; c < curves.size() && !cancelled; ++c)
     {
+      current_curve = c;
       // The library tells a given parameter from an absent one at compile time (an absent
       // front spacing, time-line step or limit takes a default that depends on the seed or on
       // the other parameters), so the optional ones are passed only when set.
@@ -144,20 +192,20 @@ int vtkStreamSurfaceFromCurve::RequestData(
         reports.push_back(FAS::integrate_stream_surface(field, curves[c], tm, np));
       };
       const auto with_max_length = [&](const auto& np) {
-        if (this->MaxLength > 0)
-          integrate(FAS::parameters::max_length(this->MaxLength, np));
+        if (max_length > 0)
+          integrate(FAS::parameters::max_length(max_length, np));
         else
           integrate(np);
       };
       const auto with_max_time = [&](const auto& np) {
-        if (this->MaxTime > 0)
-          with_max_length(FAS::parameters::max_time(this->MaxTime, np));
+        if (max_time > 0)
+          with_max_length(FAS::parameters::max_time(max_time, np));
         else
           with_max_length(np);
       };
       const auto with_step = [&](const auto& np) {
-        if (this->TimeLineStep > 0)
-          with_max_time(FAS::parameters::time_line_step(this->TimeLineStep, np));
+        if (time_line_step > 0)
+          with_max_time(FAS::parameters::time_line_step(time_line_step, np));
         else
           with_max_time(np);
       };
@@ -174,6 +222,14 @@ int vtkStreamSurfaceFromCurve::RequestData(
           std::to_string(curves.size()) + ": " + e.what());
       }
       curve_of_vertex.resize(tm.number_of_vertices(), c);
+      cancelled = reports.back().stopped;
+    }
+    if (cancelled)
+    {
+      this->SetAbortExecute(0);
+      this->Modified(); // the output is not the requested one: the next update computes it
+      vtkWarningMacro(<< "Stream Surface From Curve: cancelled during seed curve " << reports.size() - 1 << " of "
+                      << curves.size() << "; the output holds what was integrated until then");
     }
 
     std::string empty;
