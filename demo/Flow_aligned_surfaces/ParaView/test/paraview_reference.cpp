@@ -59,7 +59,7 @@ int usage()
                "SEED delaunay|direct\n"
                "       paraview_reference texture FIELD.vti PREFIX <align's 11 patch arguments> SCALE OFFSET "
                "MIN_RELATIVE_SPEED noise|arrows WIDTH HEIGHT FILTER_LENGTH NOISE_SEED ALONG ACROSS\n"
-               "       paraview_reference stream FIELD.vti SEEDS.txt OUT.vtp defaults|backward_time|both_length\n"
+               "       paraview_reference stream FIELD.vti SEEDS.txt OUT.vtp forward_time|backward_time|both_length\n"
                "       paraview_reference grow FIELD.vti IN.vtp OUT.vtp CX CY CZ NX NY NZ SIZE FACES "
                "planar|disk tangential|orthogonal ITERATIONS DISTANCE all|across|DX,DY,DZ STEPS "
                "GROW_ITERATIONS\n";
@@ -168,6 +168,8 @@ FAS::Stream_surface_report stream_surface(const std::string& name, const Field& 
         field, seed, tm,
         P::integration_direction(FAS::Integration_direction::BACKWARD,
                                  P::max_time(2.0, P::time_line_step(0.1, maps))));
+  if (name == "forward_time")
+    return FAS::integrate_stream_surface(field, seed, tm, P::max_time(2.0, P::time_line_step(0.1, maps)));
   if (name == "both_length") {
     const auto tolerances = P::relative_tolerance(1e-9, P::absolute_tolerance(1e-11, maps));
     const auto front = P::front_spacing(0.06, P::tear_angle(0.6, tolerances));
@@ -177,9 +179,7 @@ FAS::Stream_surface_report stream_surface(const std::string& name, const Field& 
                                  P::arc_length_time_lines(true, P::max_length(2.5, P::max_number_of_time_lines(
                                                                                        std::size_t(30), front)))));
   }
-  if (name != "defaults")
-    throw std::invalid_argument("unknown case " + name);
-  return FAS::integrate_stream_surface(field, seed, tm, maps);
+  throw std::invalid_argument("unknown case " + name);
 }
 
 int stream_surfaces(char** argv)

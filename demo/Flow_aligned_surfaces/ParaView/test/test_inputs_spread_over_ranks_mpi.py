@@ -129,9 +129,11 @@ writer.SetInputData(polyline)
 writer.SetDataModeToBinary()  # inline: ParaView 5.11 cannot parse appended data with the current expat
 writer.Write()
 reference_vtp = setup.path("line_surface.vtp")
-setup.run_reference("stream", setup.field(), seeds_txt, reference_vtp, "defaults")
+setup.run_reference("stream", setup.field(), seeds_txt, reference_vtp, "forward_time")
 surface = StreamSurfaceFromCurve(Input=data, Seeds=split_source(line_vtp, -2.5))
 surface.Velocity = ["POINTS", "velocity"]
+surface.MaxTime = 2.0
+surface.TimeLineStep = 0.1
 out = t.fetch(surface)
 t.expect_spread_over_ranks(out, "split seed line")
 curves = out.GetFieldData().GetAbstractArray("termination").GetNumberOfValues()
