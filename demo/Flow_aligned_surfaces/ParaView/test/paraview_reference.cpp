@@ -7,7 +7,7 @@
 //                      tangential|orthogonal ITERATIONS
 //       the patch after ITERATIONS iterations (fewer when it converged)
 //   paraview_reference parametrize ..., paraview_reference texture ...
-//       Parametrize and Seed, Flow Texture on that patch (see the functions for the arguments)
+//       Parametrize And Seed, Flow Texture on that patch (see the functions for the arguments)
 //   paraview_reference stream FIELD.vti SEEDS.txt OUT.vtp defaults|backward_time|both_length
 //       the stream surfaces of the seed curves of SEEDS.txt (one curve a line: x y z x y z ...),
 //       with the named parameters of the case (see stream_surfaces()); point data u and t, and
@@ -276,7 +276,7 @@ int grow(char** argv)
   return write_surface(argv[4], tm, {growth_step}) ? 0 : 1;
 }
 
-// ---- Parametrize and Seed, Flow Texture (issue 16, item 2) ----
+// ---- Parametrize And Seed, Flow Texture ----
 
 using Vertex = Mesh::Vertex_index;
 
@@ -447,7 +447,7 @@ int texture(char** argv)
   return write_text(prefix + "_texture.txt", texels.str()) ? 0 : 1;
 }
 
-// ---- end of Parametrize and Seed, Flow Texture ----
+// ---- end of Parametrize And Seed, Flow Texture ----
 
 } // namespace
 

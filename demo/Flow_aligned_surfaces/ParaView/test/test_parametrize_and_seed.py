@@ -1,4 +1,4 @@
-"""Parametrize and Seed in pvbatch: the same parametrizations, seed curves and seed points as the
+"""Parametrize And Seed in pvbatch: the same parametrizations, seed curves and seed points as the
 library called directly, closed-form facts of the cylinder flow, and bad surfaces."""
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
@@ -169,7 +169,7 @@ p.IntrinsicDelaunay = 0
 expect_same_as_library(p, reference("circular_point", stream_disk, "circular", source="-1.8,0.6,0.1",
                                     delaunay="direct"), ["geodesic_distance"], "circular from a point")
 
-# 5. The workflow in one pipeline: Flow-Aligned Surface into Parametrize and Seed.
+# 5. The workflow in one pipeline: Flow-Aligned Surface into Parametrize And Seed.
 aligned = FlowAlignedSurface(Input=data)
 aligned.Velocity = ["POINTS", "velocity"]
 aligned.Center = [-1.8, 0.5, 0.0]
@@ -182,7 +182,7 @@ chained.Velocity = ["POINTS", "velocity"]
 with t.Messages() as messages:
     chained_out = t.fetch_port(chained, 0)
 if "ERROR" in messages.text() or chained_out.GetPointData().GetArray("r") is None:
-    raise AssertionError("Flow-Aligned Surface into Parametrize and Seed failed: " + messages.text())
+    raise AssertionError("Flow-Aligned Surface into Parametrize And Seed failed: " + messages.text())
 if t.fetch_port(chained, 1).GetNumberOfCells() < 10:
     raise AssertionError("the chained pipeline gives fewer than 10 seed curves")
 
@@ -195,6 +195,6 @@ p.Surface = Line(Point1=[-2, 0, 0], Point2=[-1.5, 0.5, 0])
 t.expect_error_keeps_outputs(p, range(3), before, ["Surface input (port 1) has no polygons"], "no triangles")
 p.Surface = Transform(Input=stream_surface, Transform="Transform")
 p.Surface.Transform.Translate = [100.0, 0.0, 0.0]
-t.expect_error_keeps_outputs(p, range(3), before, ["Parametrize and Seed: parametrize_tangential"],
+t.expect_error_keeps_outputs(p, range(3), before, ["Parametrize And Seed: parametrize_tangential"],
                              "surface outside the data")
-print("Parametrize and Seed: all checks passed")
+print("Parametrize And Seed: all checks passed")

@@ -251,6 +251,18 @@ inline void require_property(bool in_range, const char* label, double value, con
   throw std::invalid_argument(os.str());
 }
 
+/// The paper's alignment parameters as the panels name them (Flow-Aligned Surface, Grow Boundary).
+/// \throws std::invalid_argument naming the first one out of its range.
+inline void require_alignment_properties(double eta, double theta_max, double epsilon, int iterations)
+{
+  const double pi = 3.141592653589793;
+  require_property(eta > 0 && eta <= pi, "Max Rotation Angle", eta, "in (0, pi] radians (0.1 as in the paper)");
+  require_property(theta_max > 0 && theta_max <= pi, "Max Dihedral Angle", theta_max,
+                   "in (0, pi] radians (pi/2 as in the paper)");
+  require_property(epsilon >= 0, "Convergence Angle", epsilon, ">= 0 radians (1e-6 as in the paper)");
+  require_property(iterations >= 0 && iterations <= 100000, "Number Of Iterations", iterations, "from 0 to 100,000");
+}
+
 /// Bounds (xmin, xmax, ymin, ymax, zmin, zmax) in words, for messages ("x a..b, y c..d, z e..f").
 inline std::string bounds_text(const double b[6])
 {

@@ -6,11 +6,13 @@
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
 #include <CGAL/Flow_aligned_surfaces/seeds.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -132,7 +134,7 @@ vtkFlowAlignedParametrize::vtkFlowAlignedParametrize()
   , SourceAtCentroid(1)
   , IntrinsicDelaunay(1)
   , NumberOfSeedCurves(10)
-  , SeedPointSpacing(0.1)
+  , SeedPointSpacing(0)
   , RandomSeed(0)
   , Internal(new Internals)
 {
@@ -169,6 +171,12 @@ int vtkFlowAlignedParametrize::RequestData(
   try
   {
     Finish_probes finish_probes(in.field);
+    require_property(std::isfinite(this->Angle), "Angle", this->Angle, "finite (radians)");
+    require_property(this->NumberOfSeedCurves >= 0 && this->NumberOfSeedCurves <= 100000, "Number Of Seed Curves",
+                     this->NumberOfSeedCurves, "from 0 to 100,000");
+    require_property(this->SeedPointSpacing >= 0, "Seed Point Spacing", this->SeedPointSpacing,
+                     ">= 0 (0: a twentieth of the surface's largest extent)");
+    require_property(this->RandomSeed >= 0, "Random Seed", this->RandomSeed, ">= 0");
     Mesh tm = surface_mesh(input_surface);
     auto surface = vtkSmartPointer<vtkPolyData>::New();
     surface->ShallowCopy(input_surface);
@@ -218,10 +226,15 @@ int vtkFlowAlignedParametrize::RequestData(
 
     vtkSmartPointer<vtkPolyData> curves =
       iso_contours(tm, f, std::size_t(this->NumberOfSeedCurves), contoured);
+    // Spacing 0: a twentieth of the surface's largest extent, taken when the filter runs (the
+    // surface has no bounds yet when a script creates the filter).
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(tm);
+    const double spacing = this->SeedPointSpacing > 0
+      ? this->SeedPointSpacing
+      : 0.05 * std::max({ box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin() });
     std::vector<Point> seeds;
-    if (this->SeedPointSpacing > 0)
-      FAS::sample_seed_points(tm, this->SeedPointSpacing, std::back_inserter(seeds),
-        CGAL::parameters::random_seed(unsigned(this->RandomSeed)));
+    FAS::sample_seed_points(tm, spacing, std::back_inserter(seeds),
+      CGAL::parameters::random_seed(unsigned(this->RandomSeed)));
 
     vtkPolyData::GetData(outputVector, 0)->ShallowCopy(surface);
     vtkPolyData::GetData(outputVector, 1)->ShallowCopy(curves);
@@ -232,7 +245,7 @@ int vtkFlowAlignedParametrize::RequestData(
   catch (const std::exception& e)
   {
     const bool kept = in.kept.restore(outputVector);
-    vtkErrorMacro(<< "Parametrize and Seed: " << e.what()
+    vtkErrorMacro(<< "Parametrize And Seed: " << e.what()
                   << (kept ? "; the previous output is kept" : ""));
     return 1;
   }

@@ -16,7 +16,8 @@
 /// `geodesic_distance` (circular; field data `source_point_id`).  Output port 1: the
 /// iso-contours of `r` (or of the distance) at NumberOfSeedCurves values evenly spaced inside its
 /// range, as polylines with the iso-value as point and cell array of the same name.  Output
-/// port 2: seed points on the surface, no two closer than SeedPointSpacing (vertex cells).
+/// port 2: seed points on the surface, no two closer than SeedPointSpacing (vertex cells; 0: a
+/// twentieth of the surface's largest extent).
 ///
 /// On bad input (no 3-component array, no triangles on port 1, a surface outside the data) it
 /// reports the error and keeps its previous outputs.
@@ -65,13 +66,13 @@ public:
   vtkGetMacro(IntrinsicDelaunay, vtkTypeBool);
   vtkBooleanMacro(IntrinsicDelaunay, vtkTypeBool);
   /// The number of iso-contours (seed curves); 0 for none.
-  vtkSetClampMacro(NumberOfSeedCurves, int, 0, 100000);
+  vtkSetMacro(NumberOfSeedCurves, int);
   vtkGetMacro(NumberOfSeedCurves, int);
   /// The smallest distance between two seed points; 0 for no seed points.
-  vtkSetClampMacro(SeedPointSpacing, double, 0., VTK_DOUBLE_MAX);
+  vtkSetMacro(SeedPointSpacing, double);
   vtkGetMacro(SeedPointSpacing, double);
   /// The seed of the random generator of the seed points.
-  vtkSetClampMacro(RandomSeed, int, 0, VTK_INT_MAX);
+  vtkSetMacro(RandomSeed, int);
   vtkGetMacro(RandomSeed, int);
 
 protected:

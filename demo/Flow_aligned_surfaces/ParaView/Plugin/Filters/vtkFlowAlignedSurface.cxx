@@ -104,14 +104,8 @@ void check_properties(vtkFlowAlignedSurface* f)
                    "> 0 (the side of the square or the diameter of the disk; 0: placed from the data)");
   require_property(f->GetNumberOfFaces() >= 2 && f->GetNumberOfFaces() <= 10000000, "Number Of Faces",
                    f->GetNumberOfFaces(), "from 2 to 10,000,000");
-  require_property(f->GetNumberOfIterations() >= 0 && f->GetNumberOfIterations() <= 100000,
-                   "Number Of Iterations", f->GetNumberOfIterations(), "from 0 to 100,000");
-  require_property(f->GetMaxRotationAngle() > 0 && f->GetMaxRotationAngle() <= vtkMath::Pi(),
-                   "Max Rotation Angle", f->GetMaxRotationAngle(), "in (0, pi] radians (0.1 as in the paper)");
-  require_property(f->GetMaxDihedralAngle() > 0 && f->GetMaxDihedralAngle() <= vtkMath::Pi(),
-                   "Max Dihedral Angle", f->GetMaxDihedralAngle(), "in (0, pi] radians (pi/2 as in the paper)");
-  require_property(f->GetConvergenceAngle() >= 0, "Convergence Angle", f->GetConvergenceAngle(),
-                   ">= 0 radians (1e-6 as in the paper)");
+  require_alignment_properties(f->GetMaxRotationAngle(), f->GetMaxDihedralAngle(), f->GetConvergenceAngle(),
+                               f->GetNumberOfIterations());
   const double* n = f->GetNormal();
   require_property(std::isfinite(n[0] + n[1] + n[2]) && n[0] * n[0] + n[1] * n[1] + n[2] * n[2] > 0, "Normal",
                    std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), "a non-zero vector (its length is shown)");

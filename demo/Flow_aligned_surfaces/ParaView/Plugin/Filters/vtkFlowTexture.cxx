@@ -140,6 +140,19 @@ int vtkFlowTexture::RequestData(
   try
   {
     Finish_probes finish_probes(in.field);
+    require_property(std::isfinite(this->Scale), "Scale", this->Scale, "finite (0: three repeats over the surface)");
+    require_property(std::isfinite(this->Offset), "Offset", this->Offset, "finite");
+    require_property(this->MinRelativeSpeed >= 0 && this->MinRelativeSpeed <= 1, "Min Relative Speed",
+                     this->MinRelativeSpeed, "in [0, 1]");
+    require_property(this->TextureWidth >= 1 && this->TextureWidth <= 16384, "Texture Width", this->TextureWidth,
+                     "from 1 to 16,384 texels");
+    require_property(this->TextureHeight >= 1 && this->TextureHeight <= 16384, "Texture Height",
+                     this->TextureHeight, "from 1 to 16,384 texels");
+    require_property(this->NoiseSeed >= 0, "Noise Seed", this->NoiseSeed, ">= 0");
+    require_property(this->ArrowsAlong >= 1 && this->ArrowsAlong <= 4096, "Arrows Along", this->ArrowsAlong,
+                     "from 1 to 4,096");
+    require_property(this->ArrowsAcross >= 1 && this->ArrowsAcross <= 4096, "Arrows Across", this->ArrowsAcross,
+                     "from 1 to 4,096");
     pieces.require_samples();
     Mesh tm = surface_mesh(input_surface);
     // The parameter r along the flow and the mask b(gamma) (on several ranks their samples are

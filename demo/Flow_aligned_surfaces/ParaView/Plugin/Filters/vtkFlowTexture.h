@@ -50,20 +50,20 @@ public:
   /// NOISE (filtered along x) or ARROWS (pointing along x).
   vtkSetClampMacro(Texture, int, NOISE, ARROWS);
   vtkGetMacro(Texture, int);
-  vtkSetClampMacro(TextureWidth, int, 1, 16384);
+  vtkSetMacro(TextureWidth, int);
   vtkGetMacro(TextureWidth, int);
-  vtkSetClampMacro(TextureHeight, int, 1, 16384);
+  vtkSetMacro(TextureHeight, int);
   vtkGetMacro(TextureHeight, int);
   /// Noise: the length of the box filter along x, in texels, in [1, TextureWidth].
   vtkSetMacro(FilterLength, double);
   vtkGetMacro(FilterLength, double);
   /// Noise: the seed of the noise.
-  vtkSetClampMacro(NoiseSeed, int, 0, VTK_INT_MAX);
+  vtkSetMacro(NoiseSeed, int);
   vtkGetMacro(NoiseSeed, int);
   /// Arrows: the number of arrows per tile along x and across (y).
-  vtkSetClampMacro(ArrowsAlong, int, 1, 4096);
+  vtkSetMacro(ArrowsAlong, int);
   vtkGetMacro(ArrowsAlong, int);
-  vtkSetClampMacro(ArrowsAcross, int, 1, 4096);
+  vtkSetMacro(ArrowsAcross, int);
   vtkGetMacro(ArrowsAcross, int);
 
 protected:

@@ -11,6 +11,7 @@
 #include <vtkMath.h>
 #include <vtkObjectFactory.h>
 
+#include <cmath>
 #include <iterator>
 #include <string>
 #include <vector>
@@ -100,6 +101,12 @@ int vtkGrowBoundary::RequestData(
   try
   {
     Finish_probes finish_probes(in.field);
+    require_property(std::isfinite(this->Distance) && this->Distance > 0, "Distance", this->Distance,
+                     "> 0 (the width of each grown strip, in the data's units)");
+    require_property(this->NumberOfGrowthSteps >= 1 && this->NumberOfGrowthSteps <= 1000, "Number Of Growth Steps",
+                     this->NumberOfGrowthSteps, "from 1 to 1,000");
+    require_alignment_properties(this->MaxRotationAngle, this->MaxDihedralAngle, this->ConvergenceAngle,
+                                 this->NumberOfIterations);
     pieces.require_samples();
     const Distributed_velocity_field& field = in.field; // outlives the deformation, as tm does
     Mesh tm = mesh_from_polydata(surface, "the surface (input 1)");

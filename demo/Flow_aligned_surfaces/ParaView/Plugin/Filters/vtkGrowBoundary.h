@@ -55,7 +55,7 @@ public:
   vtkSetVector3Macro(GrowthDirection, double);
   vtkGetVector3Macro(GrowthDirection, double);
   /// The number of growth steps, each followed by the iterations.
-  vtkSetClampMacro(NumberOfGrowthSteps, int, 1, 1000);
+  vtkSetMacro(NumberOfGrowthSteps, int);
   vtkGetMacro(NumberOfGrowthSteps, int);
   /// TANGENTIAL (a stream surface) or ORTHOGONAL (a seeding surface).
   vtkSetClampMacro(Alignment, int, TANGENTIAL, ORTHOGONAL);
@@ -68,7 +68,7 @@ public:
   vtkSetMacro(ConvergenceAngle, double);
   vtkGetMacro(ConvergenceAngle, double);
   /// The largest number of iterations after each growth step (100).
-  vtkSetClampMacro(NumberOfIterations, int, 0, 100000);
+  vtkSetMacro(NumberOfIterations, int);
   vtkGetMacro(NumberOfIterations, int);
 
 protected:

@@ -124,13 +124,14 @@ int vtkStreamSurfaceFromCurve::RequestData(
   try
   {
     Finish_probes finish_probes(in.field);
+    this->CheckProperties();
     pieces.require_samples();
     const Distributed_velocity_field& field = in.field;
     const std::vector<Polyline> curves = polylines_from_polydata(seeds);
     if (curves.empty())
       throw std::invalid_argument(
         "the seed input (port 1) has no line or polyline of two points or more; give it seed "
-        "curves (Parametrize and Seed's, a Line source, a contour)");
+        "curves (Parametrize And Seed's, a Line source, a contour)");
 
     // No length given: the surface reaches as far as the data's largest extent (a time at the
     // seeds' mean speed, or that arc length), in 200 time lines unless a step is given.
@@ -298,6 +299,22 @@ int vtkStreamSurfaceFromCurve::RequestData(
     vtkErrorMacro(<< "Stream Surface From Curve: " << e.what() << (kept ? "; the previous output is kept" : ""));
     return 1;
   }
+}
+
+void vtkStreamSurfaceFromCurve::CheckProperties()
+{
+  const char* zero_or_more = ">= 0 (0: the default)";
+  require_property(this->FrontSpacing >= 0, "Front Spacing", this->FrontSpacing, zero_or_more);
+  require_property(this->TimeLineStep >= 0, "Time Line Step", this->TimeLineStep, zero_or_more);
+  require_property(this->MaxTime >= 0, "Max Time", this->MaxTime, zero_or_more);
+  require_property(this->MaxLength >= 0, "Max Length", this->MaxLength, zero_or_more);
+  require_property(this->MaxNumberOfTimeLines >= 0, "Max Number Of Time Lines", this->MaxNumberOfTimeLines,
+                   zero_or_more);
+  require_property(this->MaxNumberOfVertices >= 1, "Max Number Of Vertices", this->MaxNumberOfVertices, ">= 1");
+  require_property(this->TearAngle > 0, "Tear Angle", this->TearAngle, "> 0 radians (pi or more: no tear)");
+  require_property(this->RelativeTolerance > 0, "Relative Tolerance", this->RelativeTolerance, "> 0");
+  require_property(this->AbsoluteTolerance > 0, "Absolute Tolerance", this->AbsoluteTolerance, "> 0");
+  require_property(this->MaxNumberOfSteps >= 1, "Max Number Of Steps", this->MaxNumberOfSteps, ">= 1");
 }
 
 void vtkStreamSurfaceFromCurve::PrintSelf(ostream& os, vtkIndent indent)

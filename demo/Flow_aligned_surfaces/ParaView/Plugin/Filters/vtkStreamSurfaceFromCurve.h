@@ -1,5 +1,5 @@
 // Stream Surface from Curve: the stream surface of the input data set's flow seeded by every
-// line and polyline of a second input (the seed curves of Parametrize and Seed, ParaView's Line
+// line and polyline of a second input (the seed curves of Parametrize And Seed, ParaView's Line
 // source, a contour, ...), integrated by the package's advancing front
 // (integrate_stream_surface.h).
 #ifndef vtkStreamSurfaceFromCurve_h
@@ -44,32 +44,32 @@ public:
   vtkGetMacro(IntegrationDirection, int);
   /// h: the largest distance between neighbouring particles of the front; 0: the mean segment
   /// length of each seed curve.
-  vtkSetClampMacro(FrontSpacing, double, 0., VTK_DOUBLE_MAX);
+  vtkSetMacro(FrontSpacing, double);
   vtkGetMacro(FrontSpacing, double);
   /// Delta: the step between time lines; 0: h over the median speed at the seed (h with
   /// ArcLengthTimeLines), and thin strips of sheared fronts are left out.
-  vtkSetClampMacro(TimeLineStep, double, 0., VTK_DOUBLE_MAX);
+  vtkSetMacro(TimeLineStep, double);
   vtkGetMacro(TimeLineStep, double);
   /// Whether the time-line parameter is the arc length (the field is normalized).
   vtkSetMacro(ArcLengthTimeLines, bool);
   vtkGetMacro(ArcLengthTimeLines, bool);
   vtkBooleanMacro(ArcLengthTimeLines, bool);
   /// The largest integration time (time time lines); 0: no limit.
-  vtkSetClampMacro(MaxTime, double, 0., VTK_DOUBLE_MAX);
+  vtkSetMacro(MaxTime, double);
   vtkGetMacro(MaxTime, double);
   /// The largest arc length (with ArcLengthTimeLines); 0: no limit.
-  vtkSetClampMacro(MaxLength, double, 0., VTK_DOUBLE_MAX);
+  vtkSetMacro(MaxLength, double);
   vtkGetMacro(MaxLength, double);
   /// The largest number of time lines per direction; 0: no limit when MaxTime (MaxLength with
   /// ArcLengthTimeLines) is given, else 100.
-  vtkSetClampMacro(MaxNumberOfTimeLines, int, 0, VTK_INT_MAX);
+  vtkSetMacro(MaxNumberOfTimeLines, int);
   vtkGetMacro(MaxNumberOfTimeLines, int);
   /// The largest number of vertices of each surface (1000000).
-  vtkSetClampMacro(MaxNumberOfVertices, int, 1, VTK_INT_MAX);
+  vtkSetMacro(MaxNumberOfVertices, int);
   vtkGetMacro(MaxNumberOfVertices, int);
   /// The angle between the flow directions of neighbouring particles above which the front is
   /// refined or torn (radians, pi/4).
-  vtkSetClampMacro(TearAngle, double, 0., VTK_DOUBLE_MAX);
+  vtkSetMacro(TearAngle, double);
   vtkGetMacro(TearAngle, double);
   /// The Dormand-Prince integrator's relative (1e-10) and absolute (1e-12) tolerances, and its
   /// largest number of steps per particle (100000).
@@ -77,7 +77,7 @@ public:
   vtkGetMacro(RelativeTolerance, double);
   vtkSetMacro(AbsoluteTolerance, double);
   vtkGetMacro(AbsoluteTolerance, double);
-  vtkSetClampMacro(MaxNumberOfSteps, int, 1, VTK_INT_MAX);
+  vtkSetMacro(MaxNumberOfSteps, int);
   vtkGetMacro(MaxNumberOfSteps, int);
 
 protected:
@@ -101,6 +101,8 @@ protected:
   int MaxNumberOfSteps;
 
 private:
+  // Every property in its range, or std::invalid_argument naming it as the panel does.
+  void CheckProperties();
   vtkStreamSurfaceFromCurve(const vtkStreamSurfaceFromCurve&) = delete;
   void operator=(const vtkStreamSurfaceFromCurve&) = delete;
 
