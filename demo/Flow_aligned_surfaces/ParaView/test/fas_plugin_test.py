@@ -22,6 +22,19 @@ class Setup:
         self.plugin, self.reference, self.workdir = sys.argv[1:4]
         os.makedirs(self.workdir, exist_ok=True)
         LoadPlugin(self.plugin, remote=False, ns=ns)
+        self.filters = ns  # the plugin's filters, by proxy name
+
+    def patch_in_cylinder_flow(self, data, faces, iterations):
+        """Flow-Aligned Surface on the cylinder image `data` (point array `velocity`) with the
+        tests' usual patch: upstream of the cylinder, 0.8 wide, tilted off the flow."""
+        surface = self.filters["FlowAlignedSurface"](Input=data)
+        surface.Velocity = ["POINTS", "velocity"]
+        surface.Center = [-1.8, 0.5, 0.0]
+        surface.Normal = [1.0, 0.3, 0.2]
+        surface.Size = 0.8
+        surface.NumberOfFaces = faces
+        surface.NumberOfIterations = iterations
+        return surface
 
     def path(self, name):
         return os.path.join(self.workdir, name)

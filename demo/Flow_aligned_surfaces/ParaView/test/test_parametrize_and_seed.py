@@ -170,13 +170,7 @@ expect_same_as_library(p, reference("circular_point", stream_disk, "circular", s
                                     delaunay="direct"), ["geodesic_distance"], "circular from a point")
 
 # 5. The workflow in one pipeline: Flow-Aligned Surface into Parametrize And Seed.
-aligned = FlowAlignedSurface(Input=data)
-aligned.Velocity = ["POINTS", "velocity"]
-aligned.Center = [-1.8, 0.5, 0.0]
-aligned.Normal = [1.0, 0.3, 0.2]
-aligned.Size = 0.8
-aligned.NumberOfFaces = 800
-aligned.NumberOfIterations = 25
+aligned = setup.patch_in_cylinder_flow(data, faces=800, iterations=25)
 chained = ParametrizeAndSeed(Input=data, Surface=aligned)
 chained.Velocity = ["POINTS", "velocity"]
 with t.Messages() as messages:

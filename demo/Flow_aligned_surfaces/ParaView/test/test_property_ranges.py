@@ -11,13 +11,7 @@ import fas_plugin_test as t
 
 setup = t.Setup(globals())
 data = XMLImageDataReader(FileName=[setup.field()])
-surface = FlowAlignedSurface(Input=data)
-surface.Velocity = ["POINTS", "velocity"]
-surface.Center = [-1.8, 0.5, 0.0]
-surface.Normal = [1.0, 0.3, 0.2]
-surface.Size = 0.8
-surface.NumberOfFaces = 400
-surface.NumberOfIterations = 10
+surface = setup.patch_in_cylinder_flow(data, faces=400, iterations=10)
 seeds = ParametrizeAndSeed(Input=data, Surface=surface)
 seeds.Velocity = ["POINTS", "velocity"]
 seeds.NumberOfSeedCurves = 2
