@@ -1,5 +1,5 @@
 // What the tests on the real CFD data of ../shared/data share: where the files are (empty
-// when absent, so that the caller skips visibly), and the check that issue 3 asks of every
+// when absent, so that the caller skips visibly), and the check asked of every
 // field read from them: a patch placed in the fluid aligns, tangentially to normalized flux
 // <= 0.02 and orthogonally to >= 0.9.
 

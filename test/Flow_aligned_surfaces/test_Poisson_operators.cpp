@@ -132,7 +132,7 @@ TEST(PoissonOperators, FaceStiffnessIsTheDenseStiffnessOfTheGradients)
   }
 }
 
-// L is assembled column by column without triplets (issue 18); it must be the matrix that
+// L is assembled column by column without triplets; it must be the matrix that
 // Eigen's setFromTriplets() makes of the faces' stiffness matrices, entry for entry and bit for
 // bit (the same sums in the same order), also with the vertices in a random order and on a mesh
 // of two components with a boundary.  Fails if an entry is missing, duplicated, misplaced or

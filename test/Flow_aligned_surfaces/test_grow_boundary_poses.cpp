@@ -1,4 +1,4 @@
-// Growing works whatever the patch's pose (issue 15, item 1).  A rectangular patch is placed
+// Growing works whatever the patch's pose.  A rectangular patch is placed
 // tangent to an exact stream surface of three analytic flows (the cylinders of the helical flow,
 // the planes through a point source, the half-planes of the harmonic saddle), turned by 0..90
 // degrees about its normal from the flow's direction, aligned tangentially, and grown across the

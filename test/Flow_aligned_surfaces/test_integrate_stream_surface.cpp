@@ -272,8 +272,7 @@ FAS::Stream_surface_report expect_the_trapezoid_up_to_the_box_face(const Polylin
       return std::nullopt;
     return Vector_3(1, 0, 0);
   };
-  // The integrator's boundary tolerance, 1e-12 + 1e-10 |x| by default (a stream line's
-  // 1e-10 + 1e-8 |x| before issue 15), with |x| <= 2.
+  // The integrator's boundary tolerance, 1e-12 + 1e-10 |x| by default, with |x| <= 2.
   const double tolerance = 3e-8;
   const auto on_boundary = [&](const Point_3& p, double) { return std::abs(p.x() - 1) <= tolerance; };
   const Surface s(boxed, seed,

@@ -1,6 +1,6 @@
 // How much closer stream lines on a tricubic grid field keep the first integral of the sampled
 // flow than on the trilinear one, against the closed-form first integrals: the claims of the
-// documentation of Regular_grid_flow_field_3 and of the manual (issue 15, item 5).  The lines are
+// documentation of Regular_grid_flow_field_3 and of the manual.  The lines are
 // integrated at tolerance 1e-10, so the interpolation, not the integrator, sets the drift.
 // Figures at 16^3 to 128^3 are in benchmark/Flow_aligned_surfaces/RESULTS.md.
 

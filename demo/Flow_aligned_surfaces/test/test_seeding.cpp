@@ -174,8 +174,9 @@ TEST(StreamLinesWithArrays, VTKArraysAreThoseOfTheFlow)
       EXPECT_NEAR(lines.velocity[3 * k], v->x(), 1e-12);
       EXPECT_NEAR(lines.velocity[3 * k + 1], v->y(), 1e-12);
       EXPECT_NEAR(lines.velocity[3 * k + 2], v->z(), 1e-12);
-      if (i > 0)
+      if (i > 0) {
         EXPECT_GT(lines.integration_time[k], lines.integration_time[k - 1]);
+      }
       if (p == seeds[std::size_t(lines.seed_ids[l])]) {
         seed_found = true;
         EXPECT_EQ(lines.integration_time[k], 0);

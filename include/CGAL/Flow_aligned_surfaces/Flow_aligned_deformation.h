@@ -332,7 +332,7 @@ public:
     // refinement from X: the default solver solves C in single precision with a copy of a large
     // factor (half the bytes to read), whose error is proportional to C, the step, not to X'
     // (and is largest in C's translation, which translate_as_the_exact_correction() sets;
-    // RESULTS.md, issue 18, stop 29).
+    // RESULTS.md).
     m_residual.setZero(x.rows(), 3);
     Face_pass face_pass;
 #ifdef CGAL_LINKED_WITH_TBB
@@ -817,7 +817,7 @@ private:
     if (!(current.twice_area > 0) || !std::isfinite(current.twice_area))
       return current;
     // Products by reciprocals: three divisions fewer per face than dividing here and in
-    // measure_alignment() (2 % of GTRANSF at 3.2e5 faces; RESULTS.md, issue 18, stop 30).
+    // measure_alignment() (2 % of GTRANSF at 3.2e5 faces; RESULTS.md).
     current.inverse_twice_area = 1 / current.twice_area;
     current.normal = cross * current.inverse_twice_area;
     current.centroid = (a + b + c) * (1. / 3);
@@ -840,7 +840,7 @@ private:
   // `add_term(j, term)` in face order.  Per face this is the same computation as one face at a
   // time (`transform_face()`: the same results, bit for bit).  By stages, the square roots and
   // divisions of neighbouring faces, whose latencies are most of GTRANSF face by face, overlap
-  // in the processor (about 25 % less time at 8e4 faces; RESULTS.md, issue 18).
+  // in the processor (about 25 % less time at 8e4 faces; RESULTS.md).
   template <class Matrix, class AddTerm>
   void transform_faces(const Matrix& x, std::size_t begin, std::size_t end, Face_pass& pass, AddTerm add_term)
   {
@@ -1141,7 +1141,7 @@ private:
   // component, three per component.  Symmetric patches have several faces at the same distance;
   // a tolerance makes the choice (the lowest index among them) independent of rounding, so equal
   // inputs in other mesh types or precisions anchor the same face.  Centroids are recomputed in
-  // the second pass rather than stored (fresh memory is slow to touch, issue 18).
+  // the second pass rather than stored (fresh memory is slow to touch).
   static std::vector<Eigen::Index> central_face_vertices(const std::vector<internal::Reference_face>& faces,
                                                          const Positions& reference,
                                                          const std::vector<std::size_t>& face_component,
@@ -1224,7 +1224,7 @@ private:
 
     // Small weight: it only has to remove the translational null space.  A large one pins
     // the constrained face's orientation and leaves a kink there.  L + W is factored in place
-    // of L (no copy of L: fresh memory is slow to touch, issue 18), and L's diagonal entries are
+    // of L (no copy of L: fresh memory is slow to touch), and L's diagonal entries are
     // restored bit for bit afterwards.
     const double constraint_weight = m_relative_constraint_weight * m_ops.L.diagonal().mean();
     std::vector<double> unconstrained;

@@ -239,7 +239,7 @@ Eigen::Matrix3d boundary_vertex_frame(const TriangleMesh& tm, VertexIndexMap vim
 // to test exactly are those of a new face with a near old face or another new face whose boxes
 // meet, found in a grid of the new faces' boxes (Box_cell_index): CGAL's self-intersection test
 // of the local mesh sorted and scanned all its boxes, old pairs included, and cost 40 % of the
-// guard at 5e3 faces (issue 18, item 3).
+// guard at 5e3 faces.
 template <class TriangleMesh, class VertexIndexMap>
 void check_grown_surface(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x,
                          const std::vector<Eigen::Vector3d>& added,

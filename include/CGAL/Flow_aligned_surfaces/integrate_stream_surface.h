@@ -944,7 +944,7 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
   // The stream lines' own options: tolerances, max_time / max_length, steps, direction.
   internal::Streamline_options lines = internal::read_streamline_options(np, "integrate_stream_surface");
   // Tighter than a stream line's defaults: the vertices then follow the sampled field as closely
-  // as its interpolation allows (issue 15: 1e-8 drifted up to 1.6 × that floor on a trilinear grid).
+  // as its interpolation allows (1e-8 drifted up to 1.6 × that floor on a trilinear grid).
   if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::relative_tolerance_t>::value)
     lines.tolerances.relative = 1e-10;
   if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::absolute_tolerance_t>::value)

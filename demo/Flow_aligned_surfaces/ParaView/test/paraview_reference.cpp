@@ -135,7 +135,7 @@ int align(char** argv)
   return write_surface(argv[3], aligned_surface(field, argv + 4), {}) ? 0 : 1;
 }
 
-// ---- Stream Surface from Curve and Grow Boundary (issue 16, item 2) ----
+// ---- Stream Surface From Curve and Grow Boundary ----
 
 // The seed curves of a text file, one a line: x y z x y z ...
 std::vector<std::vector<K::Point_3>> read_seed_curves(const char* filename)

@@ -8,7 +8,7 @@
 // tests the boxes listed there, each once.  The guard of `grow_boundary()` asks this of every face of the
 // surface against the few hundred faces of the new strip: a query costs a few probes, where
 // CGAL's box intersection would sort the whole surface, and a node-based hash set one
-// allocation-chasing lookup per cell (issue 18, item 3).
+// allocation-chasing lookup per cell.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_BOX_CELL_INDEX_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_BOX_CELL_INDEX_H

@@ -134,7 +134,7 @@ Mesh_arrays make_mesh_arrays(const TriangleMesh& tm, VertexIndexMap vim, FaceInd
     return i;
   };
   // One reservation: growing by doubling would touch about twice the memory, and fresh memory
-  // is expensive on its first touch (a page fault per 4 KiB; issue 18).
+  // is expensive on its first touch (a page fault per 4 KiB).
   arrays.interior_edges.reserve(num_edges(tm));
   for (auto e : edges(tm)) {
     const auto h = halfedge(e, tm);

@@ -139,7 +139,7 @@ struct Degenerate_face {
 /// `setFromTriplets()` does, so the matrix is the same to the last bit.  Unlike
 /// `setFromTriplets()` it needs no triplet list and no transposed copy (9 triplets of 16 bytes
 /// and 9 more entries per face): it touches about a third of the memory, and on a machine whose
-/// page faults are slow the first touch of fresh memory is most of the assembly time (issue 18).
+/// page faults are slow the first touch of fresh memory is most of the assembly time.
 inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m,
                                                              const std::vector<Reference_face>& faces)
 {
@@ -256,7 +256,7 @@ make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions
 /// down, the new faces' entries merged in): each entry is the old sum plus the new faces'
 /// contributions in increasing face order, so the result is what `make_poisson_operators()`
 /// makes of the whole mesh, to the last bit, with a fraction of the work and little fresh memory
-/// (the arrays grow by half again when full, so repeated growing mostly reuses them; issue 18).
+/// (the arrays grow by half again when full, so repeated growing mostly reuses them).
 /// Returns the first degenerate new face, if any, and then leaves `ops` untouched.
 /// \pre `face_vertices[j] == ops.faces[j].vertices` for the old faces; `ops.G` is empty.
 inline std::optional<Degenerate_face>
