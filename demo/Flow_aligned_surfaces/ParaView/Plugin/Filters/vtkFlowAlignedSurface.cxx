@@ -156,6 +156,9 @@ struct vtkFlowAlignedSurface::Internals {
   vtkMTimeType default_input_time = 0;
   Velocity_selection default_selection;
   int default_alignment = -1;
+  // The patch placed for Size 0, and the alignment it was placed for.
+  std::optional<Default_patch> placed;
+  int placed_alignment = -1;
   int alignment = -1;
   bool restart = true;
   std::vector<std::vector<Point>> positions; // after 0, 1, ... iterations
@@ -329,18 +332,24 @@ std::array<double, 7> vtkFlowAlignedSurface::Internals::requested_pose(vtkFlowAl
   if (f->Size > 0)
     return { f->Center[0], f->Center[1], f->Center[2], f->Normal[0], f->Normal[1],
       f->Normal[2], f->Size };
-  // Size 0: the default patch, placed now (its samples probed from every rank in one exchange).
+  // Size 0: the default patch, placed once per input and alignment (its samples probed from
+  // every rank in one exchange), not at every time step played.
   const bool orthogonal = f->Alignment == vtkFlowAlignedSurface::ORTHOGONAL;
-  in.field.probe_points_of([&] { default_patch(in.field, pieces.bounds.data(), orthogonal); });
-  const std::optional<Default_patch> patch = default_patch(in.field, pieces.bounds.data(), orthogonal);
-  if (!patch)
-    throw std::invalid_argument("Size is 0 (place the patch from the data), but the Input has no flow sample "
-                                "on a lattice over its bounds (" + bounds_text(pieces.bounds.data()) +
-                                "); set Center, Normal and Size");
-  if (!in.key || in.key->size != patch->size)
-    vtkOutputWindowDisplayText(("Flow-Aligned Surface: Size 0: the patch placed " + patch->description +
-      ", centre " + point_text(patch->center.data()) + ", normal " + point_text(patch->normal.data()) +
-      ", size " + std::to_string(patch->size) + "\n").c_str());
+  if (!in.placed || pieces.changed || in.placed_alignment != f->Alignment)
+  {
+    in.placed.reset();
+    in.field.probe_points_of([&] { default_patch(in.field, pieces.bounds.data(), orthogonal); });
+    in.placed = default_patch(in.field, pieces.bounds.data(), orthogonal);
+    in.placed_alignment = f->Alignment;
+    if (!in.placed)
+      throw std::invalid_argument("Size is 0 (place the patch from the data), but the Input has no flow sample "
+                                  "on a lattice over its bounds (" + bounds_text(pieces.bounds.data()) +
+                                  "); set Center, Normal and Size");
+    vtkOutputWindowDisplayText(("Flow-Aligned Surface: Size 0: the patch placed " + in.placed->description +
+      ", centre " + point_text(in.placed->center.data()) + ", normal " + point_text(in.placed->normal.data()) +
+      ", size " + std::to_string(in.placed->size) + "\n").c_str());
+  }
+  const Default_patch* patch = &*in.placed;
   return { patch->center[0], patch->center[1], patch->center[2], patch->normal[0], patch->normal[1],
     patch->normal[2], patch->size };
 }
