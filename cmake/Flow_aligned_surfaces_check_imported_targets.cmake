@@ -28,8 +28,11 @@ set(fas_debian_package_of_utf8cpp "libutfcpp-dev")
 set(fas_debian_package_of_FFMPEG "libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev")
 set(fas_debian_package_of_MPI "libopenmpi-dev")
 set(fas_debian_package_of_Python3 "python3-dev")
-set(fas_debian_package_of_Qt5 "qtbase5-dev")
+set(fas_debian_package_of_Qt5 "qtbase5-dev libqt5opengl5-dev")
 set(fas_debian_package_of_Threads "libc6-dev")
+set(fas_debian_package_of_LibXml2 "libxml2-dev")
+set(fas_debian_package_of_hdf5 "libhdf5-dev")
+set(fas_debian_package_of_NetCDF "libnetcdf-dev")
 
 # The targets of `directory` and of its subdirectories, into `out`.
 function(fas_targets_of_directory directory out)

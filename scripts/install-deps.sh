@@ -72,6 +72,9 @@ if [ "$vtk_set" = paraview ]; then
     # The plugin's help pages (ParaView's "?" button): Qt's Help CMake package (qttools5-dev, which
     # pulls in qtbase5-dev), qhelpgenerator and xmlpatterns; without them the plugin has no help.
     qttools5-dev qttools5-dev-tools qtxmlpatterns5-dev-tools
+    # The plugin's GUI side links ParaView's pqCore, whose link interface names Qt5::OpenGL and
+    # VTK's libxml2, HDF5 and NetCDF modules.
+    libqt5opengl5-dev libxml2-dev libhdf5-dev libnetcdf-dev
     # What ParaView's CMake package and its VTK modules look for (paraview-dev does not depend on them):
     libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libswresample-dev
     libexpat1-dev libdouble-conversion-dev libutfcpp-dev python3-dev

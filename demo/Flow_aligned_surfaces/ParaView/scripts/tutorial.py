@@ -43,7 +43,7 @@ surface = FlowAlignedSurface(Input=data)  # Filters > Flow-Aligned Surfaces > Fl
 shown = Show(surface, view)  # Apply, with the defaults
 ColorBy(shown, ("CELLS", "normalized_flux"))  # the colour selector of the toolbar
 shown.SetScalarBarVisibility(view, True)
-# The colour map editor's "Rescale to custom range": 0 (aligned) to 1 (across the flow).
+# 0 (aligned) to 1 (across the flow): the GUI's plugin sets this range; pvpython sets it here.
 GetColorTransferFunction("normalized_flux").RescaleTransferFunction(0.0, 1.0)
 view.CameraPosition = [0.25, -0.55, 0.75]  # the mouse: closer to the cylinder and the patch
 view.CameraFocalPoint = [0.7, 0.2, 0.2]
@@ -149,7 +149,7 @@ if case_file:
     step("openfoam_surface")
 
     # [openfoam_stream]
-    foam_seeds = ParametrizeAndSeed(Input=case, Surface=foam_surface)
+    foam_seeds = ParametrizeAndSeed(case, Surface=foam_surface)  # the flow first, see the text
     foam_seeds.Velocity = ["CELLS", "U"]  # every filter's Velocity selector: U
     foam_seeds.NumberOfSeedCurves = 1
     foam_curves = Show(OutputPort(foam_seeds, 1), view)

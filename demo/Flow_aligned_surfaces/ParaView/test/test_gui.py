@@ -25,6 +25,27 @@ try:
     display = Show(surface, view)
     ColorBy(display, ("CELLS", "normalized_flux"))
     display.SetScalarBarVisibility(view, True)
+    # The plugin's GUI side gives the colour map of normalized_flux [0, 1], locked ("Never"
+    # rescaled), once the GUI has processed the representation's signals; a range the user sets
+    # afterwards is kept when the array is picked again.
+    sys.path.insert(0, os.environ["FAS_GUI_TESTS"])
+    import gui_window
+    gui_window.process_events()
+    flux_map = GetColorTransferFunction("normalized_flux")
+    points = list(flux_map.RGBPoints)
+    mode = flux_map.GetProperty("AutomaticRescaleRangeMode").GetData()
+    if mode != "Never" or (points[0], points[-4]) != (0.0, 1.0):
+        raise AssertionError("the colour map of normalized_flux: rescale mode %s, range %g to %g" % (
+            mode, points[0], points[-4]))
+    # The toolbar's colour selector: another array, then normalized_flux again (ColorBy would
+    # rescale to the data by itself).
+    flux_map.RescaleTransferFunction(0.0, 0.5)
+    display.SetScalarColoring("velocity", servermanager.GetAssociationFromString("POINTS"))
+    display.SetScalarColoring("normalized_flux", servermanager.GetAssociationFromString("CELLS"))
+    gui_window.process_events()
+    points = list(flux_map.RGBPoints)
+    if (points[0], points[-4]) != (0.0, 0.5):
+        raise AssertionError("a range set by the user was not kept: %g to %g" % (points[0], points[-4]))
     outline = Show(data, view)
     outline.SetRepresentationType("Outline")
     view.ViewSize = [800, 600]
@@ -40,10 +61,12 @@ try:
         raise AssertionError("the GUI's Flow-Aligned Surface: %d faces, flux %g at iteration %g" % (
             output.GetNumberOfCells(), flux, iteration))
     SaveScreenshot(os.environ["FAS_GUI_SCREENSHOT"], view, ImageResolution=[800, 600])
-    print("GUI: Flow-Aligned Surface applied, flux %g at iteration %g" % (flux, iteration))
-    sys.stdout.flush()
+    print("GUI: Flow-Aligned Surface applied, flux %g at iteration %g" % (flux, iteration),
+          file=sys.__stdout__)
+    sys.__stdout__.flush()
     os._exit(0)
 except BaseException:
-    traceback.print_exc()
-    sys.stderr.flush()
+    # To the process's own stderr: the GUI keeps sys.stderr for its Python shell.
+    traceback.print_exc(file=sys.__stderr__)
+    sys.__stderr__.flush()
     os._exit(1)

@@ -45,4 +45,12 @@ for label, name, value, said, range_text in cases:
     proxy.SetPropertyWithName(name, value)
     t.expect_error_keeps_outputs(proxy, ports, before, [label, said, range_text], "%s %s = %s" % (label, name, value))
     proxy.SetPropertyWithName(name, good_value)
-print("property ranges: all %d checks passed" % len(cases))
+# A Velocity that names an array the input does not have (what a filter created in pvpython with
+# keyword inputs only gets): the message names the property and lists the input's arrays.
+before = t.output_sizes(seeds, [0, 1, 2])
+seeds.Velocity = ["POINTS", "no_such_array"]
+t.expect_error_keeps_outputs(seeds, [0, 1, 2], before,
+                             ["Parametrize And Seed", "the property Velocity is 'no_such_array'",
+                              "'velocity' (point data)"], "Velocity no_such_array")
+seeds.Velocity = ["POINTS", "velocity"]
+print("property ranges: all %d checks passed" % (len(cases) + 1))

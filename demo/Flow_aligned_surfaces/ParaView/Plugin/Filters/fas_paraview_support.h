@@ -68,6 +68,29 @@ private:
   std::variant<FAS::Regular_grid_flow_field_3<Kernel>, FAS::VTK_flow_field_3<Kernel>> m_field;
 };
 
+/// The message for a *Velocity* property that names an array `data_set` does not have, with the
+/// arrays it has.  In pvpython this happens when a filter of two inputs is created with keyword
+/// inputs only: paraview.simple first connects the active source to port 0, and the selector takes
+/// its default from that source's arrays before the keywords change the inputs.
+inline std::string missing_velocity_message(vtkDataSet* data_set, const std::string& array_name)
+{
+  std::string arrays;
+  auto list = [&arrays](vtkFieldData* data, const char* where) {
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a) {
+      vtkDataArray* array = data->GetArray(a);
+      if (array == nullptr || array->GetNumberOfComponents() != 3 || array->GetName() == nullptr)
+        continue;
+      arrays += (arrays.empty() ? "'" : ", '") + std::string(array->GetName()) + "' (" + where + ")";
+    }
+  };
+  list(data_set->GetPointData(), "point data");
+  list(data_set->GetCellData(), "cell data");
+  return "the property Velocity is '" + array_name + "', an array the input does not have; its " +
+         "3-component arrays: " + (arrays.empty() ? std::string("none") : arrays) +
+         " (in pvpython, give the flow data first, e.g. ParametrizeAndSeed(reader, Surface=surface):" +
+         " created with keyword inputs only, a filter takes its Velocity from the active source)";
+}
+
 /// The velocity field of `data_set`'s array `selection` (the first 3-component array when its
 /// name is empty; a cell array is sampled per cell, see `with_selected_association()`).  An image that is a piece of a larger one (`whole_extent`, from the pipeline;
 /// null: the image is whole) samples bit for bit as the whole image would, so that its pieces on
@@ -123,6 +146,9 @@ inline Velocity_field make_velocity_field(vtkDataSet* data_set, const Velocity_s
   }
   if (array_name.empty())
     return Velocity_field(FAS::VTK_flow_field_3<Kernel>(data_set));
+  if (data_set->GetPointData()->GetArray(array_name.c_str()) == nullptr &&
+      data_set->GetCellData()->GetArray(array_name.c_str()) == nullptr)
+    throw std::invalid_argument(missing_velocity_message(data_set, array_name));
   return Velocity_field(FAS::VTK_flow_field_3<Kernel>(with_selected_association(data_set, selection),
                                                       FAS::parameters::array_name(array_name)));
 }
