@@ -72,54 +72,67 @@ public:
 
   Distributed_velocity_field() : m_state(std::make_shared<State>()) {}
 
-  /// Called by every rank at the start of every update, collective when distributed: samples
-  /// this rank's piece of the input of `input_information` (a data set, or the 3D blocks of a
-  /// composite data set: `flow_data_set()`; none when the piece has no cells) with the array
+  /// Samples this rank's piece of the input of `input_information` (a data set, or the 3D blocks
+  /// of a composite data set: `flow_data_set()`; none when the piece has no cells) with the array
   /// `selection` (empty name: the active vectors), anew when either changed since the last
-  /// update, and gathers on rank 0 the state of every rank's piece.  The calling thread is the
-  /// one that may exchange.  Never throws: a piece that cannot be sampled is reported in
-  /// `errors`.
-  Distributed_input update(vtkInformation* input_information, const Velocity_selection& selection)
+  /// sampling.  Not collective: RequestInformation calls it for the panel's default patch, and
+  /// the update that follows finds the field built (and still reports the piece as changed).
+  /// Never throws: a piece that cannot be sampled is reported by the next update.
+  void sample_piece(vtkInformation* input_information, const Velocity_selection& selection)
   {
     State& s = *m_state;
     vtkDataObject* input = input_information != nullptr ? vtkDataObject::GetData(input_information) : nullptr;
+    if (s.have_field && input != nullptr && input->GetMTime() == s.input_time && selection == s.selection)
+      return;
     const int* whole_extent =
       input_information != nullptr && input_information->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())
       ? input_information->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())
       : nullptr;
-    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-    const bool several = controller != nullptr && controller->GetNumberOfProcesses() > 1;
-    const bool changed =
-      !s.have_field || input == nullptr || input->GetMTime() != s.input_time || selection != s.selection;
-    if (changed)
+    const bool several = global_controller() != nullptr;
+    s.local.reset();
+    s.local_error.clear();
+    s.flow = flow_data_set(input);
+    try
     {
-      s.local.reset();
-      s.local_error.clear();
-      s.flow = flow_data_set(input);
-      try
+      if (s.flow.data_set == nullptr && vtkCompositeDataSet::SafeDownCast(input) != nullptr)
       {
-        if (s.flow.data_set == nullptr && vtkCompositeDataSet::SafeDownCast(input) != nullptr)
-        {
-          if (!several)
-            throw std::invalid_argument("the Input (" + std::string(input->GetClassName()) +
-                                        ") has no block with 3D cells: there is no volume to sample the flow in" +
-                                        (s.flow.note.empty() ? std::string() : " (" + s.flow.note + ")"));
-        }
-        else if (!several || (s.flow.data_set != nullptr && s.flow.data_set->GetNumberOfCells() > 0))
-          s.local = make_velocity_field(s.flow.data_set, selection, whole_extent);
+        if (!several)
+          throw std::invalid_argument("the Input (" + std::string(input->GetClassName()) +
+                                      ") has no block with 3D cells: there is no volume to sample the flow in" +
+                                      (s.flow.note.empty() ? std::string() : " (" + s.flow.note + ")"));
       }
-      catch (const std::exception& e)
-      {
-        s.local_error = e.what();
-      }
-      s.input_time = input != nullptr ? input->GetMTime() : 0;
-      s.selection = selection;
-      s.have_field = s.local_error.empty();
+      else if (!several || (s.flow.data_set != nullptr && s.flow.data_set->GetNumberOfCells() > 0))
+        s.local = make_velocity_field(s.flow.data_set, selection, whole_extent);
     }
+    catch (const std::exception& e)
+    {
+      s.local_error = e.what();
+    }
+    s.input_time = input != nullptr ? input->GetMTime() : 0;
+    s.selection = selection;
+    s.have_field = s.local_error.empty();
+    s.sampled_since_update = true;
+  }
+
+  /// This rank's field of its piece (`sample_piece()`): null when the piece has no cells or
+  /// cannot be sampled.
+  const Velocity_field* piece_field() const { return m_state->local ? &*m_state->local : nullptr; }
+  /// What `piece_field()` samples.
+  const Flow_data_set& piece() const { return m_state->flow; }
+
+  /// Called by every rank at the start of every update, collective when distributed: samples
+  /// this rank's piece (`sample_piece()`) and gathers on rank 0 the state of every rank's piece.
+  /// The calling thread is the one that may exchange.  Never throws: a piece that cannot be
+  /// sampled is reported in `errors`.
+  Distributed_input update(vtkInformation* input_information, const Velocity_selection& selection)
+  {
+    State& s = *m_state;
+    sample_piece(input_information, selection);
+    const bool changed = std::exchange(s.sampled_since_update, false);
     std::array<double, 6> local_bounds{ { 1, -1, 1, -1, 1, -1 } };
     if (s.flow.data_set != nullptr && s.flow.data_set->GetNumberOfCells() > 0)
       s.flow.data_set->GetBounds(local_bounds.data());
-    Distributed_input pieces = start(several ? controller : nullptr, local_bounds, changed);
+    Distributed_input pieces = start(global_controller(), local_bounds, changed);
     pieces.note = s.flow.note;
     return pieces;
   }
@@ -267,6 +280,13 @@ public:
   std::size_t number_of_exchanges() const { return m_state->exchanges; }
 
 private:
+  // The global controller when there are several processes; null for one.
+  static vtkMultiProcessController* global_controller()
+  {
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    return controller != nullptr && controller->GetNumberOfProcesses() > 1 ? controller : nullptr;
+  }
+
   // Gathers on rank 0 the state of every rank's piece (collective; `controller` null: one process).
   Distributed_input start(vtkMultiProcessController* controller, const std::array<double, 6>& local_bounds,
     bool changed)
@@ -400,6 +420,7 @@ private:
     Velocity_selection selection;
     Flow_data_set flow;                              // what `local` samples
     bool have_field = false;
+    bool sampled_since_update = false;               // `local` sampled anew since the last update
   };
   std::shared_ptr<State> m_state;
 };

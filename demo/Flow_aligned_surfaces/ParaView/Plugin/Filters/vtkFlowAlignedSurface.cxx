@@ -64,27 +64,6 @@ void make_patch(Mesh& tm, int shape, const Patch_pose& pose, int faces)
     FAS::make_planar_patch(tm, c, n, pose.size, pose.size, std::size_t(faces));
 }
 
-// The default patch of `input` sampled locally (for the panel's defaults, before any update);
-// nothing when the input has no data yet or cannot be sampled (the update says why).
-std::optional<Default_patch> local_default_patch(vtkDataObject* input, const Velocity_selection& selection,
-                                                 bool orthogonal)
-{
-  const Flow_data_set flow = flow_data_set(input);
-  if (flow.data_set == nullptr || flow.data_set->GetNumberOfCells() == 0)
-    return std::nullopt;
-  try
-  {
-    const Velocity_field field = make_velocity_field(flow.data_set, selection);
-    double bounds[6];
-    flow.data_set->GetBounds(bounds);
-    return default_patch(field, bounds, orthogonal);
-  }
-  catch (const std::exception&)
-  {
-    return std::nullopt;
-  }
-}
-
 // `info` = the ranges (value, value + span) of the components of `value`: their minima are the
 // defaults ParaView's panel takes (DoubleRangeDomain, default_mode min).
 void set_range_info(vtkDoubleArray* info, const std::array<double, 3>& value, double span)
@@ -251,14 +230,15 @@ int vtkFlowAlignedSurface::RequestInformation(
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), int(steps.size()));
   const double range[2] = { 0., double(iterations) };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  this->OfferDefaultPatch(vtkDataObject::GetData(inputVector[0], 0));
+  this->OfferDefaultPatch(inputVector[0]->GetInformationObject(0));
   return 1;
 }
 
-void vtkFlowAlignedSurface::OfferDefaultPatch(vtkDataObject* input)
+void vtkFlowAlignedSurface::OfferDefaultPatch(vtkInformation* input_information)
 {
   Internals& in = *this->Internal;
   const Velocity_selection selection = selected_velocity(this);
+  vtkDataObject* input = input_information != nullptr ? vtkDataObject::GetData(input_information) : nullptr;
   const vtkMTimeType input_time = input != nullptr ? input->GetMTime() : 0;
   if (input_time == in.default_input_time && selection == in.default_selection &&
       this->Alignment == in.default_alignment)
@@ -268,8 +248,14 @@ void vtkFlowAlignedSurface::OfferDefaultPatch(vtkDataObject* input)
   in.default_alignment = this->Alignment;
   for (vtkDoubleArray* info : { in.center_info.Get(), in.normal_info.Get(), in.size_info.Get() })
     info->SetNumberOfTuples(0);
-  const std::optional<Default_patch> patch =
-    local_default_patch(input, selection, this->Alignment == ORTHOGONAL);
+  // This rank's piece, sampled here once for the update that follows as well.
+  in.field.sample_piece(input_information, selection);
+  const Velocity_field* piece_field = in.field.piece_field();
+  if (piece_field == nullptr || in.field.piece().data_set->GetNumberOfCells() == 0)
+    return;
+  double bounds[6];
+  in.field.piece().data_set->GetBounds(bounds);
+  const std::optional<Default_patch> patch = default_patch(*piece_field, bounds, this->Alignment == ORTHOGONAL);
   if (!patch)
     return;
   set_range_info(in.center_info, patch->center, 8 * patch->size);

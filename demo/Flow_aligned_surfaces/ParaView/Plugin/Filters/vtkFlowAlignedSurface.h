@@ -129,7 +129,7 @@ protected:
 private:
   vtkFlowAlignedSurface(const vtkFlowAlignedSurface&) = delete;
   // Computes the default patch for `input` (when it, the array or the alignment changed).
-  void OfferDefaultPatch(vtkDataObject* input);
+  void OfferDefaultPatch(vtkInformation* inputInformation);
   void operator=(const vtkFlowAlignedSurface&) = delete;
 
   struct Internals;
