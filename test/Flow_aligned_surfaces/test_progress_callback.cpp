@@ -9,6 +9,7 @@
 #include <CGAL/Flow_aligned_surfaces/grow_boundary.h>
 #include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
+#include <CGAL/Flow_aligned_surfaces/parametrize.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -335,6 +336,86 @@ TEST(ProgressCallback, StreamSurfaceEndingBeforeItsLimitsEndsAtOne)
   expect_fractions(recorder.fractions, s.report.number_of_time_lines, false);
   ASSERT_GE(recorder.fractions.size(), 2u);
   EXPECT_LT(recorder.fractions[recorder.fractions.size() - 2], 0.2);
+}
+
+// The parametrizations: r and s written by runs with and without a callback, and by a run
+// stopped after `stop_at` reports (0: never), into maps that start at -1.
+struct Parametrization_run {
+  bool returned = false;
+  std::vector<double> r, s, fractions;
+};
+
+template <class Parametrize>
+Parametrization_run run_parametrization(const Mesh& tm, std::size_t stop_at, const Parametrize& parametrize)
+{
+  Mesh copy = tm;
+  auto r = copy.add_property_map<Mesh::Vertex_index, double>("v:r", -1.).first;
+  auto s = copy.add_property_map<Mesh::Vertex_index, double>("v:s", -1.).first;
+  Recorder recorder;
+  recorder.stop_at = stop_at;
+  Parametrization_run run;
+  run.returned = parametrize(copy, r, s, recorder.callback());
+  for (auto v : copy.vertices()) {
+    run.r.push_back(r[v]);
+    run.s.push_back(s[v]);
+  }
+  run.fractions = recorder.fractions;
+  return run;
+}
+
+// A plane patch in the point source's flow: the tangential and the orthogonal parametrizations.
+void expect_parametrization_reports(bool tangential)
+{
+  const Mesh tm = patch_before_the_source();
+  const auto parametrize = [&](Mesh& m, auto r, auto s, auto callback) {
+    return tangential ? FAS::parametrize_tangential(m, source, r, s, CGAL::parameters::callback(callback))
+                      : FAS::parametrize_orthogonal(m, source, r, s, CGAL::parameters::callback(callback));
+  };
+  const auto plain = [&](Mesh& m, auto r, auto s, auto) {
+    return tangential ? FAS::parametrize_tangential(m, source, r, s) : FAS::parametrize_orthogonal(m, source, r, s);
+  };
+  const Parametrization_run expected = run_parametrization(tm, 0, plain);
+  const Parametrization_run observed = run_parametrization(tm, 0, parametrize);
+  EXPECT_TRUE(expected.returned);
+  EXPECT_TRUE(observed.returned);
+  EXPECT_EQ(observed.fractions, (std::vector<double>{1. / 3, 2. / 3, 1.}));
+  EXPECT_EQ(observed.r, expected.r); // bit for bit
+  EXPECT_EQ(observed.s, expected.s);
+  for (std::size_t stop_at : {1u, 2u}) {
+    const Parametrization_run stopped = run_parametrization(tm, stop_at, parametrize);
+    EXPECT_FALSE(stopped.returned) << "stopped at report " << stop_at;
+    EXPECT_EQ(stopped.fractions.size(), stop_at);
+    EXPECT_EQ(stopped.r, std::vector<double>(tm.number_of_vertices(), -1.)) << "r written after a stop";
+    EXPECT_EQ(stopped.s, std::vector<double>(tm.number_of_vertices(), -1.)) << "s written after a stop";
+  }
+}
+
+TEST(ProgressCallback, TangentialParametrizationReportsItsStagesAndAStopWritesNothing)
+{
+  expect_parametrization_reports(true);
+}
+
+TEST(ProgressCallback, OrthogonalParametrizationReportsItsStagesAndAStopWritesNothing)
+{
+  expect_parametrization_reports(false);
+}
+
+TEST(ProgressCallback, GeodesicDistanceReportsTheHeatStepAndAStopWritesNothing)
+{
+  const Mesh tm = patch_before_the_source();
+  const Mesh::Vertex_index middle = *tm.vertices().begin();
+  const auto distance = [&](Mesh& m, auto d, auto, auto callback) {
+    return FAS::compute_geodesic_distance(m, middle, d, CGAL::parameters::callback(callback));
+  };
+  const auto plain = [&](Mesh& m, auto d, auto, auto) { return FAS::compute_geodesic_distance(m, middle, d); };
+  const Parametrization_run expected = run_parametrization(tm, 0, plain);
+  const Parametrization_run observed = run_parametrization(tm, 0, distance);
+  EXPECT_TRUE(observed.returned);
+  EXPECT_EQ(observed.fractions, (std::vector<double>{0.5, 1.}));
+  EXPECT_EQ(observed.r, expected.r);
+  const Parametrization_run stopped = run_parametrization(tm, 1, distance);
+  EXPECT_FALSE(stopped.returned);
+  EXPECT_EQ(stopped.r, std::vector<double>(tm.number_of_vertices(), -1.));
 }
 
 } // namespace

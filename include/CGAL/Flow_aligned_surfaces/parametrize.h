@@ -34,6 +34,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/heat_method.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/parametrization.h>
+#include <CGAL/Flow_aligned_surfaces/internal/progress_callback.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -48,6 +49,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -97,11 +99,13 @@ Surface_operators<TriangleMesh> make_surface_operators(const TriangleMesh& tm, c
 /// back-substitution per column.  Since the rows of D sum to zero over a component (G maps
 /// constants to zero), summing the rows of (L + W) x = D y gives w x_c = 0: the soft
 /// constraint is exact for any w > 0, and w = mean diag(L) keeps L + W well conditioned.
-/// The final shift removes the rounding left at x_c.
-inline Eigen::MatrixXd solve_constrained_poisson(const Poisson_operators& ops,
-                                                 const std::vector<Eigen::Index>& constrained,
-                                                 const std::vector<std::size_t>& vertex_component,
-                                                 const Eigen::MatrixXd& rhs)
+/// The final shift removes the rounding left at x_c.  `callback` hears `factored` after the
+/// factorization; nothing when it stops the work there.
+inline std::optional<Eigen::MatrixXd> solve_constrained_poisson(const Poisson_operators& ops,
+                                                                const std::vector<Eigen::Index>& constrained,
+                                                                const std::vector<std::size_t>& vertex_component,
+                                                                const Eigen::MatrixXd& rhs,
+                                                                const Progress_callback& callback, double factored)
 {
   Eigen::SparseMatrix<double> system = ops.L;
   const double weight = ops.L.diagonal().mean();
@@ -109,22 +113,30 @@ inline Eigen::MatrixXd solve_constrained_poisson(const Poisson_operators& ops,
     system.coeffRef(v, v) += weight;
   Default_sparse_linear_solver solver;
   factor_or_throw(solver, system, "L + W");
+  if (!report_progress(callback, factored))
+    return std::nullopt;
   Eigen::MatrixXd x = solver.solver().solve(rhs);
   shift_to_constraints(x, constrained, vertex_component);
   return x;
 }
 
-/// Solves eq. (7) on `s` for the guidance `a` (n x 3, b_j = a_j x n_j) and writes r and s.
+/// Solves eq. (7) on `s` for the guidance `a` (n x 3, b_j = a_j x n_j) and writes r and s;
+/// `callback` hears 2/3 after the factorization and 1 at the end.  Returns false, writing
+/// nothing, when the callback stops the work after the factorization.
 template <class TriangleMesh, class RMap, class SMap>
-void solve_parametrization(const Surface_operators<TriangleMesh>& s, const Positions& a,
+bool solve_parametrization(const Surface_operators<TriangleMesh>& s, const Positions& a,
                            const std::vector<Eigen::Index>& constrained, RMap r_map, SMap s_map,
-                           const std::string& caller)
+                           const std::string& caller, const Progress_callback& callback)
 {
   const Eigen::MatrixXd c = cross_field(s.faces, a, caller);
-  const Eigen::MatrixXd rs =
-      solve_constrained_poisson(s.ops, constrained, s.faces.vertex_component, s.ops.D * c);
-  write_vertex_values(s.vertices, rs, 0, r_map);
-  write_vertex_values(s.vertices, rs, 1, s_map);
+  const std::optional<Eigen::MatrixXd> rs =
+      solve_constrained_poisson(s.ops, constrained, s.faces.vertex_component, s.ops.D * c, callback, 2. / 3);
+  if (!rs)
+    return false;
+  write_vertex_values(s.vertices, *rs, 0, r_map);
+  write_vertex_values(s.vertices, *rs, 1, s_map);
+  report_progress(callback, 1.);
+  return true;
 }
 
 /// The per-call data of the parametrization functions: the checked surface, its constrained
@@ -211,8 +223,17 @@ floating-point value type
     \cgalParamDescription{property maps associating indices in `[0, num_vertices(tm))`, `[0, num_faces(tm))`}
     \cgalParamDefault{an automatically indexed internal map}
   \cgalParamNEnd
+  \cgalParamNBegin{callback}
+    \cgalParamDescription{CGAL's progress callback (`CGAL::parameters::callback()`), called with
+      `1/3` once the field is sampled at the face centroids, `2/3` once the system is factored and
+      `1` once `r_map` and `s_map` are written; if it returns `false` before the last call, the
+      function returns `false` and `r_map` and `s_map` are untouched (see \ref fas_progress)}
+    \cgalParamType{a callable convertible to `std::function<bool(double)>`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
+\returns `true`, or `false` when the `callback` stopped the work (nothing written)
 \throws std::invalid_argument if `tm` is empty, not a valid manifold triangle mesh, has a
 degenerate face or a coordinate that is not finite; if `constraint_vertex` is not a vertex of
 `tm`; if no face of `tm` gets a usable direction.  `r_map` and `s_map` are then untouched.
@@ -221,16 +242,19 @@ degenerate face or a coordinate that is not finite; if `constraint_vertex` is no
 */
 template <class TriangleMesh, class FlowField, class RMap, class SMap,
           class NamedParameters = parameters::Default_named_parameters>
-void parametrize_tangential(const TriangleMesh& tm, const FlowField& field, RMap r_map, SMap s_map,
+bool parametrize_tangential(const TriangleMesh& tm, const FlowField& field, RMap r_map, SMap s_map,
                             const NamedParameters& np = CGAL::parameters::default_values())
 {
   const std::string caller = "parametrize_tangential";
   const bool normalize =
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::normalized_t()), true);
+  const internal::Progress_callback callback = internal::progress_callback(np);
   auto in = internal::make_parametrization_input(tm, field, np, caller);
+  if (!internal::report_progress(callback, 1. / 3))
+    return false;
   const internal::Positions a =
       internal::tangential_guidance(in.surface.faces, std::move(in.velocities), normalize);
-  internal::solve_parametrization(in.surface, a, in.constrained, r_map, s_map, caller);
+  return internal::solve_parametrization(in.surface, a, in.constrained, r_map, s_map, caller, callback);
 }
 
 /*!
@@ -293,11 +317,12 @@ floating-point value type
       constrained vertex}
     \cgalParamDefault{none: \f$ r_c \f$ is the Householder frame's}
   \cgalParamNEnd
-  \cgalParamNBegin{constraint_vertex, vertex_point_map, geom_traits, vertex_index_map, face_index_map}
+  \cgalParamNBegin{constraint_vertex, vertex_point_map, geom_traits, vertex_index_map, face_index_map, callback}
     \cgalParamDescription{as in `parametrize_tangential()`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
+\returns `true`, or `false` when the `callback` stopped the work (nothing written)
 \throws std::invalid_argument if `angle` is not finite, if `gradient_direction` is not finite,
 zero or normal to the surface at a constrained vertex, and in the cases of
 `parametrize_tangential()`.  `r_map` and `s_map` are then untouched.
@@ -305,18 +330,21 @@ zero or normal to the surface at a constrained vertex, and in the cases of
 */
 template <class TriangleMesh, class FlowField, class RMap, class SMap,
           class NamedParameters = parameters::Default_named_parameters>
-void parametrize_orthogonal(const TriangleMesh& tm, const FlowField& field, RMap r_map, SMap s_map,
+bool parametrize_orthogonal(const TriangleMesh& tm, const FlowField& field, RMap r_map, SMap s_map,
                             const NamedParameters& np = CGAL::parameters::default_values())
 {
   const std::string caller = "parametrize_orthogonal";
   const double alpha = internal::orthogonal_parametrization_angle(np, caller);
   const bool normalize =
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::normalized_t()), false);
+  const internal::Progress_callback callback = internal::progress_callback(np);
   auto in = internal::make_parametrization_input(tm, field, np, caller);
+  if (!internal::report_progress(callback, 1. / 3))
+    return false;
   const internal::Positions a = internal::orthogonal_guidance(
       in.surface.arrays, in.surface.faces, std::move(in.velocities), in.constrained, alpha, normalize,
       internal::orthogonal_gradient_direction(np, caller), caller);
-  internal::solve_parametrization(in.surface, a, in.constrained, r_map, s_map, caller);
+  return internal::solve_parametrization(in.surface, a, in.constrained, r_map, s_map, caller, callback);
 }
 
 /*!
@@ -381,15 +409,23 @@ floating-point value type
   \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map}
     \cgalParamDescription{as in `parametrize_tangential()`}
   \cgalParamNEnd
+  \cgalParamNBegin{callback}
+    \cgalParamDescription{CGAL's progress callback (`CGAL::parameters::callback()`), called with
+      `0.5` after the heat step and `1` once `distance_map` is written; if the first call returns
+      `false`, the function returns `false` and `distance_map` is untouched (see \ref fas_progress)}
+    \cgalParamType{a callable convertible to `std::function<bool(double)>`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
+\returns `true`, or `false` when the `callback` stopped the work (nothing written)
 \throws std::invalid_argument if `source` is not a vertex of `tm`, or `tm` is empty, not a
 valid manifold triangle mesh, has a degenerate face or a coordinate that is not finite.
 `distance_map` is then untouched.
 \sa `extract_iso_contours()`, `parametrize_orthogonal()`
 */
 template <class TriangleMesh, class DistanceMap, class NamedParameters = parameters::Default_named_parameters>
-void compute_geodesic_distance(const TriangleMesh& tm,
+bool compute_geodesic_distance(const TriangleMesh& tm,
                                typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
                                DistanceMap distance_map,
                                const NamedParameters& np = CGAL::parameters::default_values())
@@ -418,9 +454,13 @@ void compute_geodesic_distance(const TriangleMesh& tm,
       internal::make_intrinsic_triangulation(positions, arrays.face_vertices);
   if (intrinsic)
     internal::make_intrinsic_delaunay(triangulation);
-  const Eigen::VectorXd d = internal::heat_method_distance(
-      triangulation, positions.rows(), vertex_component, arrays.face_component, source_index);
-  internal::write_vertex_values(vertices, Eigen::MatrixXd(d), 0, distance_map);
+  const std::optional<Eigen::VectorXd> d =
+      internal::heat_method_distance(triangulation, positions.rows(), vertex_component, arrays.face_component,
+                                     source_index, internal::progress_callback(np));
+  if (!d)
+    return false;
+  internal::write_vertex_values(vertices, Eigen::MatrixXd(*d), 0, distance_map);
+  return true;
 }
 
 } // namespace Flow_aligned_surfaces

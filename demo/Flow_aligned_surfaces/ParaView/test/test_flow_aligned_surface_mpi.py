@@ -4,7 +4,7 @@ of its diagonal; rank 0 holds it, rank 1 outputs nothing (the fetched output wou
 its points twice).  Pieces: the reader's own image pieces (split at x = 0, which the patch
 crosses), RedistributeDataSet's unstructured pieces, and the bad inputs "a rank holds no cells"
 (a correct result), "no rank holds cells" and "a rank's piece has no velocity" (a clear message,
-the previous output kept, no hang)."""
+the previous output kept, no hang), and Abort."""
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
 import os
@@ -104,4 +104,28 @@ for mode, expected_message in [("none", "the input has no cells on any of the 2 
 # And the data back on rank 1: the surface again.
 pieces.Script = t.flow_on_one_rank(1, "all", setup.field())
 t.expect_same_surface(t.fetch(surface, ITERATIONS), tangential, "data back on rank 1")
-print("Flow-Aligned Surface on 2 ranks: all checks passed")
+Delete(surface)
+
+# 5. Abort (ParaView's Abort button sets it on rank 0's filter; here a progress observer does):
+# rank 0 stops after the iteration in progress and releases rank 1, the output is the library's
+# surface of that iteration, and the next time step asked for goes on from there.
+surface = surface_of(reader, "Tangential (stream surface)")
+algorithm = surface.GetClientSideObject()
+aborts = []
+def abort_once(caller, event):
+    if caller.GetProgress() > 0.3 and not aborts:
+        aborts.append(caller.GetProgress())
+        caller.SetAbortExecute(1)
+tag = algorithm.AddObserver("ProgressEvent", abort_once)
+with t.Messages() as messages:
+    cancelled = t.fetch(surface, ITERATIONS)
+algorithm.RemoveObserver(tag)
+t.expect_message(messages, ["cancelled after iteration"], "abort on 2 ranks")
+stopped_at = int(t.field_value(cancelled, "iteration"))
+if not 1 <= stopped_at < ITERATIONS:
+    raise AssertionError("abort at progress %s on 2 ranks: the output shows iteration %d" % (aborts, stopped_at))
+t.expect_same_surface(cancelled, reference("tangential_stopped", "tangential", stopped_at),
+                      "2 ranks, aborted at iteration %d" % stopped_at)
+t.expect_same_surface(t.fetch(surface, ITERATIONS - 1),
+                      reference("tangential_after_stop", "tangential", ITERATIONS - 1), "2 ranks, after the abort")
+print("Flow-Aligned Surface on 2 ranks: all checks passed (abort stopped at iteration %d)" % stopped_at)

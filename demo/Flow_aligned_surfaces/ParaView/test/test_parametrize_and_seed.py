@@ -191,4 +191,30 @@ p.Surface = Transform(Input=stream_surface, Transform="Transform")
 p.Surface.Transform.Translate = [100.0, 0.0, 0.0]
 t.expect_error_keeps_outputs(p, range(3), before, ["Parametrize And Seed: parametrize_tangential"],
                              "surface outside the data")
+
+# 7. Abort (what ParaView's Abort button sets, here from a progress observer at the first stage
+# the parametrization reports): a warning and the previous outputs kept; the next change computes
+# them.
+p.Surface = stream_surface
+p.NumberOfSeedCurves = 3
+before = t.output_sizes(p, range(3))
+algorithm = p.GetClientSideObject()
+stages = []
+def abort_at_first_stage(caller, event):
+    if 0 < caller.GetProgress() < 1 and not stages:
+        stages.append(caller.GetProgress())
+        caller.SetAbortExecute(1)
+tag = algorithm.AddObserver("ProgressEvent", abort_at_first_stage)
+p.NumberOfSeedCurves = 4
+with t.Messages() as messages:
+    after = t.output_sizes(p, range(3))
+algorithm.RemoveObserver(tag)
+t.expect_message(messages, ["cancelled before the parametrization was solved", "the previous output is kept"],
+                 "abort")
+if after != before or abs(stages[0] - 1.0 / 3) > 1e-12:
+    raise AssertionError("abort at progress %s: outputs %s, before %s" % (stages, after, before))
+p.NumberOfSeedCurves = 5
+values = t.fetch_port(p, 1).GetCellData().GetArray("r")
+if len({values.GetValue(i) for i in range(values.GetNumberOfTuples())}) != 5:
+    raise AssertionError("after an abort, the next change did not compute the 5 seed curves")
 print("Parametrize And Seed: all checks passed")

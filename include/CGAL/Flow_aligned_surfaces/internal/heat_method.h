@@ -21,6 +21,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
+#include <CGAL/Flow_aligned_surfaces/internal/progress_callback.h>
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -31,6 +32,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -211,10 +213,14 @@ using Heat_method_solver =
 /// The heat-method distance from `source` on `t` (vertex_component and face_component as in
 /// Mesh_arrays; `number_of_vertices` vertices): +infinity on the other components.  Two
 /// factorizations, M + tL and L + W (W = the mean diagonal of L at the source and at one vertex
-/// of each other component), one solve each; only the lower triangles are assembled.
-inline Eigen::VectorXd heat_method_distance(const Intrinsic_triangulation& t, Eigen::Index number_of_vertices,
-                                            const std::vector<std::size_t>& vertex_component,
-                                            const std::vector<std::size_t>& face_component, Eigen::Index source)
+/// of each other component), one solve each; only the lower triangles are assembled.  `callback`
+/// hears 1/2 after the heat step and 1 at the end; nothing when it stops the work after the heat
+/// step.
+inline std::optional<Eigen::VectorXd> heat_method_distance(const Intrinsic_triangulation& t,
+                                                           Eigen::Index number_of_vertices,
+                                                           const std::vector<std::size_t>& vertex_component,
+                                                           const std::vector<std::size_t>& face_component,
+                                                           Eigen::Index source, const Progress_callback& callback)
 {
   using Triplet = Eigen::Triplet<double>;
   const std::size_t n = t.vertices.size();
@@ -264,6 +270,8 @@ inline Eigen::VectorXd heat_method_distance(const Intrinsic_triangulation& t, Ei
   Eigen::VectorXd h0 = Eigen::VectorXd::Zero(m);
   h0[source] = 1;
   const Eigen::VectorXd h = solver.solver().solve(h0);
+  if (!report_progress(callback, 0.5))
+    return std::nullopt;
 
   // Normalized -grad h per face and its divergence D X.
   Eigen::VectorXd divergence = Eigen::VectorXd::Zero(m);
@@ -303,6 +311,7 @@ inline Eigen::VectorXd heat_method_distance(const Intrinsic_triangulation& t, Ei
   for (Eigen::Index i = 0; i < m; ++i)
     d[i] = vertex_component[std::size_t(i)] == component ? d[i] - at_source
                                                          : std::numeric_limits<double>::infinity();
+  report_progress(callback, 1.);
   return d;
 }
 

@@ -266,8 +266,14 @@ void add_point_velocities(vtkPolyData* polydata, const Field& field)
   polydata->GetPointData()->AddArray(sampled);
 }
 
-/// \throws std::invalid_argument naming the panel's property `label`, its `value` and the `range`
-/// it must be in, unless `in_range`.
+/// After Abort: clears the request.  The outputs keep what the filter kept, as VTK 9.2's
+/// executive stamps them up to date (a Modified() inside RequestData comes before that stamp): the
+/// next change of a property, of the input or of the time step asked for computes them anew.
+inline void abort_handled(vtkAlgorithm* filter)
+{
+  filter->SetAbortExecute(0);
+}
+
 inline void require_property(bool in_range, const char* label, double value, const char* range)
 {
   if (in_range)

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <functional>
 #include <tuple>
 #include <utility>
 
@@ -60,12 +61,12 @@ Vertex nearest_vertex(const Mesh& tm, const Point& p)
 // The named parameters of the guidance's normalization: none (the library's default) or
 // normalized(yes).
 template <class Call>
-void with_normalization(int normalization, const Call& call)
+bool with_normalization(int normalization, const std::function<bool(double)>& progress, const Call& call)
 {
+  const auto base = CGAL::parameters::callback(progress);
   if (normalization == vtkFlowAlignedParametrize::LIBRARY_DEFAULT)
-    call(CGAL::parameters::default_values());
-  else
-    call(FAS::parameters::normalized(normalization == vtkFlowAlignedParametrize::NORMALIZED));
+    return call(base);
+  return call(FAS::parameters::normalized(normalization == vtkFlowAlignedParametrize::NORMALIZED, base));
 }
 
 // The iso-contours of `f` at `n` evenly spaced values, as polylines with the value as point and
@@ -178,6 +179,11 @@ int vtkFlowAlignedParametrize::RequestData(
                      ">= 0 (0: a twentieth of the surface's largest extent)");
     require_property(this->RandomSeed >= 0, "Random Seed", this->RandomSeed, ">= 0");
     Mesh tm = surface_mesh(input_surface);
+    // Progress per stage of the parametrization; Abort (AbortExecute) stops before the next stage.
+    const std::function<bool(double)> progress = [this](double fraction) {
+      this->UpdateProgress(fraction);
+      return !this->GetAbortExecute();
+    };
     auto surface = vtkSmartPointer<vtkPolyData>::New();
     surface->ShallowCopy(input_surface);
     const char* contoured = "r";
@@ -189,8 +195,9 @@ int vtkFlowAlignedParametrize::RequestData(
         : Point(this->SourcePoint[0], this->SourcePoint[1], this->SourcePoint[2]);
       const Vertex source_vertex = nearest_vertex(tm, source);
       f = tm.add_property_map<Vertex, double>("v:distance", 0.).first;
-      FAS::compute_geodesic_distance(tm, source_vertex, f,
-        FAS::parameters::intrinsic_delaunay(this->IntrinsicDelaunay != 0));
+      if (!FAS::compute_geodesic_distance(tm, source_vertex, f,
+            FAS::parameters::intrinsic_delaunay(this->IntrinsicDelaunay != 0, CGAL::parameters::callback(progress))))
+        return this->Cancelled(outputVector);
       contoured = "geodesic_distance";
       add_vertex_array(surface, tm, contoured, 1, [&](Vertex v) { return f[v]; });
       add_field_value(surface, "source_point_id", double(source_vertex.idx()));
@@ -200,24 +207,26 @@ int vtkFlowAlignedParametrize::RequestData(
       pieces.require_samples();
       // The parameters along and across the flow (on several ranks their samples are
       // exchanged first, in one go).
-      const auto parametrize = [&](Mesh& m) {
+      const auto parametrize = [&](Mesh& m, const std::function<bool(double)>& report) {
         Scalar_map r = m.add_property_map<Vertex, double>("v:r", 0.).first;
         Scalar_map s = m.add_property_map<Vertex, double>("v:s", 0.).first;
-        if (this->Parametrization == ORTHOGONAL)
-          with_normalization(this->Normalization, [&](const auto& np) {
-            FAS::parametrize_orthogonal(m, in.field, r, s, FAS::parameters::angle(this->Angle, np));
-          });
-        else
-          with_normalization(this->Normalization,
-            [&](const auto& np) { FAS::parametrize_tangential(m, in.field, r, s, np); });
-        return std::make_pair(r, s);
+        const bool done = this->Parametrization == ORTHOGONAL
+          ? with_normalization(this->Normalization, report, [&](const auto& np) {
+              return FAS::parametrize_orthogonal(m, in.field, r, s, FAS::parameters::angle(this->Angle, np));
+            })
+          : with_normalization(this->Normalization, report,
+              [&](const auto& np) { return FAS::parametrize_tangential(m, in.field, r, s, np); });
+        return std::make_tuple(done, r, s);
       };
       in.field.probe_points_of([&] {
         Mesh copy = tm;
-        parametrize(copy);
+        parametrize(copy, {});
       });
       Scalar_map s;
-      std::tie(f, s) = parametrize(tm);
+      bool done = false;
+      std::tie(done, f, s) = parametrize(tm, progress);
+      if (!done)
+        return this->Cancelled(outputVector);
       add_vertex_array(surface, tm, "r", 1, [&](Vertex v) { return f[v]; });
       add_vertex_array(surface, tm, "s", 1, [&](Vertex v) { return s[v]; });
     }
@@ -249,6 +258,15 @@ int vtkFlowAlignedParametrize::RequestData(
                   << (kept ? "; the previous output is kept" : ""));
     return 1;
   }
+}
+
+int vtkFlowAlignedParametrize::Cancelled(vtkInformationVector* outputVector)
+{
+  const bool kept = this->Internal->kept.restore(outputVector);
+  abort_handled(this);
+  vtkWarningMacro(<< "Parametrize And Seed: cancelled before the parametrization was solved"
+                  << (kept ? "; the previous output is kept" : ""));
+  return 1;
 }
 
 void vtkFlowAlignedParametrize::PrintSelf(ostream& os, vtkIndent indent)

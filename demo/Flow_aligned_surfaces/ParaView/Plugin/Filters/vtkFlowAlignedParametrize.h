@@ -95,6 +95,8 @@ protected:
 private:
   vtkFlowAlignedParametrize(const vtkFlowAlignedParametrize&) = delete;
   void operator=(const vtkFlowAlignedParametrize&) = delete;
+  // After Abort: keeps the previous output, says so, and lets the next update compute anew.
+  int Cancelled(vtkInformationVector* outputVector);
 
   struct Internals;
   Internals* Internal;

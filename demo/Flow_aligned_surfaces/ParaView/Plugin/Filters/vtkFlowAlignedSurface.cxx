@@ -440,8 +440,7 @@ std::size_t vtkFlowAlignedSurface::Internals::iterate(vtkFlowAlignedSurface* f, 
   {
     if (f->GetAbortExecute())
     {
-      f->SetAbortExecute(0);
-      f->Modified(); // the output is not the requested one: the next update goes on
+      abort_handled(f);
       vtkWarningWithObjectMacro(f, << "Flow-Aligned Surface: cancelled after iteration " << in.positions.size() - 1 << " of "
                       << requested << "; the output shows it, and the next update goes on from there");
       break;

@@ -135,8 +135,7 @@ int vtkGrowBoundary::RequestData(
     {
       if (this->GetAbortExecute())
       {
-        this->SetAbortExecute(0);
-        this->Modified(); // the output is not the requested one: the next update computes it
+        abort_handled(this);
         vtkWarningMacro(<< "Grow Boundary: cancelled after growth step " << done << " of "
                         << this->NumberOfGrowthSteps << "; the output shows the surface grown so far");
         break;

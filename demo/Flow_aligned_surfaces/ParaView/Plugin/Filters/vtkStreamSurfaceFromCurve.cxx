@@ -227,8 +227,7 @@ int vtkStreamSurfaceFromCurve::RequestData(
     }
     if (cancelled)
     {
-      this->SetAbortExecute(0);
-      this->Modified(); // the output is not the requested one: the next update computes it
+      abort_handled(this);
       vtkWarningMacro(<< "Stream Surface From Curve: cancelled during seed curve " << reports.size() - 1 << " of "
                       << curves.size() << "; the output holds what was integrated until then");
     }
