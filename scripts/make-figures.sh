@@ -29,7 +29,8 @@ fi
 cp "$work/texture/textured.png" "$fig/fas_texture_noise.png"
 cp "$work/texture/arrows_rendered.png" "$fig/fas_texture_arrows.png"
 cp "$work/texture/aligned_flux.png" "$fig/fas_texture_seed_curves.png"
-# The seeding workflow of Figures 4 and 5, from the main job.
+# The seeding workflow of Figures 4 and 5: the main job's stage pictures (each in its scene's
+# obstacle, outline and camera).
 "$build/demo/Flow_aligned_surfaces/align_patch" --faces 3000 --output "$work/main_job" | tee "$work/main_job.log"
 if [ ! -f "$work/main_job/orthogonal_stream_surfaces.png" ]; then
   echo "make-figures: the main job's pictures were not rendered (see above); seeding figures unchanged" >&2

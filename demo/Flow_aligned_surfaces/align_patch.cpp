@@ -5,8 +5,10 @@
 // iteration as CSV, a JSON summary and open_in_paraview.py (every output with the colouring and
 // camera of the pictures); and, when built with VTK rendering and a display (or Xvfb) is there,
 // pictures (PNG): the scene of each alignment (the initial patch beside the aligned one with
-// what it seeds, the obstacle and the domain, as the paper's Figures 4 and 5), the surfaces
-// coloured by flux, and the tangential one with its LIC-like texture.
+// what it seeds, the obstacle and the domain, as the paper's Figures 4 and 5) and one picture
+// per stage in the same context and camera (the initial and aligned surfaces coloured by flux,
+// the seed curves, the stream surfaces, the stream lines, the tangential surface with its
+// LIC-like texture).
 // The seeding workflow of the paper's Figures 4 and 5 on each aligned surface: the tangential
 // one grown across the flow first; its parametrization (with the deformation's own
 // factorization) gives seed curves (iso-contours of r, VTP), one stream surface per distinct
@@ -182,17 +184,65 @@ std::optional<std::ofstream> open_output(const std::filesystem::path& path)
 
 using Polyline = std::vector<Point>;
 
+// A stage picture of an alignment (initial, aligned, seed curves, ...): its file and what it
+// shows, drawn in the context of the alignment's scene picture (stage_picture()).
+struct Stage {
+  std::string file;
+  Scene_view view;
+  std::string scalar_name = "normalized_flux";
+  std::array<double, 2> scalar_range{0, 1};
+};
+
+// `tm` coloured by the normalized flux of its faces, with `lines` over it.
+Scene_view flux_view(const Mesh& tm, const Flow& flow, const std::string& title,
+                     std::vector<Scene_lines> lines = {})
+{
+  return Scene_view{{to_scene_surface(tm, face_fluxes(tm, flow), {0.8, 0.8, 0.8})}, std::move(lines), title};
+}
+
+// `tm` with the LIC-like `texture` of its parametrization, masked where grad r leaves the flow.
+Scene_surface textured_surface(const Mesh& tm, Flow_texture_of_mesh texture)
+{
+  Scene_surface textured = to_scene_surface(tm, {}, {1, 1, 1});
+  textured.texture = std::make_shared<const FAS::Texture_image>(std::move(texture.texture));
+  textured.texture_coordinates = std::move(texture.texture_coordinates);
+  textured.face_mask = std::move(texture.face_mask);
+  return textured;
+}
+
+// The stream surfaces coloured by their time-line parameter |t| (Figure 3's time lines: the mean
+// of |t| over each face), with their seed curves.
+Stage stream_surfaces_stage(const std::string& name, const Mesh& surfaces, const Scene_lines& seed_curves)
+{
+  const auto t = surfaces.property_map<Mesh::Vertex_index, double>("v:t").first;
+  std::vector<double> by_time;
+  double largest = 0;
+  for (Mesh::Face_index f : surfaces.faces()) {
+    double mean = 0;
+    for (Mesh::Vertex_index v : vertices_around_face(surfaces.halfedge(f), surfaces))
+      mean += std::abs(t[v]) / 3;
+    by_time.push_back(mean);
+    largest = std::max(largest, mean);
+  }
+  return Stage{name + "_stream_surfaces.png",
+               Scene_view{{to_scene_surface(surfaces, std::move(by_time), {0.8, 0.8, 0.8})},
+                          {seed_curves},
+                          "stream surfaces"},
+               "|t| (arc length from the seed curve)",
+               {0, largest > 0 ? largest : 1}};
+}
+
 // The seeding workflow on the aligned surface `tm` of `deformation`: seed curves from its
 // parametrization (iso-contours of r, each with its value), one stream surface per distinct seed
 // curve (distinct_stream_surfaces.h: forward and backward in one mesh, arc-length time lines up
 // to twice the patch size), and stream lines from seed points on an orthogonal surface; all
-// written as VTP, with pictures when `pictures`, and added to `view` (the scene picture's).  A
-// tangential surface's stream surfaces carry their LIC-like texture (`textured_view`, and the
+// written as VTP, added to `view` (the scene picture's) and to `stages` (a stage picture each).
+// A tangential surface's stream surfaces carry their LIC-like texture (`textured_view`, and the
 // texture image written as `texture_file`, empty when not written).
 // Returns false when a file cannot be written.
 bool seed_and_integrate(const std::string& name, Mesh& tm,
                         const FAS::Flow_aligned_deformation<Mesh, Flow>& deformation, const Scene& scene,
-                        const std::filesystem::path& out, bool pictures, Scene_view& view,
+                        const std::filesystem::path& out, Scene_view& view, std::vector<Stage>& stages,
                         std::optional<Scene_view>& textured_view, std::string& texture_file)
 {
   const bool tangential = deformation.alignment() == FAS::Alignment::TANGENTIAL;
@@ -284,49 +334,31 @@ bool seed_and_integrate(const std::string& name, Mesh& tm,
     const Stream_lines<Point> lines = integrate_stream_lines(scene.flow, seed_points, 2 * scene.size);
     number_of_lines = lines.lines.size();
     view.lines.push_back(to_scene_lines(lines.lines, {0.6, 0.05, 0.05}, 2));
+    stages.push_back(
+        {name + "_stream_lines.png", flux_view(tm, scene.flow, "stream lines", {view.lines.back()})});
     ok = write_polylines_VTP((out / (name + "_stream_lines.vtp")).string(), lines.lines, lines.point_data(),
                              lines.cell_data(), Active_scalars{"IntegrationTime", ""}, &error);
-    if (ok && pictures) { // the stream lines through the seeding surface (Figure 5)
-      write_picture(out / (name + "_stream_lines.png"), tm, flux_with_polylines(tm, scene.flow, lines.lines));
-    }
   }
   if (!ok) {
     std::cerr << "error: " << error << "\n";
     return false;
   }
-  view.lines.push_back(to_scene_lines(seed_curves, {0.02, 0.02, 0.02}, 4));
-  if (!surfaces.is_empty()) // the stream surfaces, translucent, beyond the aligned patch
+  const Scene_lines seed_lines = to_scene_lines(seed_curves, {0.02, 0.02, 0.02}, 4);
+  view.lines.push_back(seed_lines);
+  stages.push_back({name + "_seed_curves.png",
+                    flux_view(tm, scene.flow, "seed curves (iso-contours of r)", {seed_lines})});
+  if (!surfaces.is_empty()) { // the stream surfaces, translucent, beyond the aligned patch
     view.surfaces.push_back(to_scene_surface(surfaces, {}, {0.98, 0.8, 0.3}, 0.6));
-  if (texture && pictures) {
-    Scene_surface textured = to_scene_surface(surfaces, {}, {1, 1, 1});
-    textured.texture = std::make_shared<const FAS::Texture_image>(std::move(texture->texture));
-    textured.texture_coordinates = std::move(texture->texture_coordinates);
-    textured.face_mask = std::move(texture->face_mask);
-    textured_view = Scene_view{{std::move(textured)}, {}, "stream surface, LIC-like texture"};
+    stages.push_back(stream_surfaces_stage(name, surfaces, seed_lines));
   }
+  if (texture)
+    textured_view =
+        Scene_view{{textured_surface(surfaces, std::move(*texture))}, {}, "stream surface, LIC-like texture"};
   std::cout << name << ": " << seed_curves.size() << " seed curves, " << integrated.number_of_surfaces()
             << " distinct stream surfaces of " << surfaces.number_of_faces() << " triangles (flux "
-            << (surfaces_flux ? *surfaces_flux : FAS::Normalized_flux()) << ")" << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
+            << (surfaces_flux ? *surfaces_flux : FAS::Normalized_flux()) << ")"
+            << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
             << "\n";
-  if (pictures) {
-    if (write_picture(out / (name + "_seed_curves.png"), tm,
-                      flux_with_polylines(tm, scene.flow, seed_curves)) &&
-        !surfaces.is_empty()) {
-      // The stream surfaces coloured by their time-line parameter |t| (Figure 3's time lines).
-      Surface_rendering by_time;
-      double largest = 0;
-      for (Mesh::Face_index f : surfaces.faces()) {
-        double mean = 0;
-        for (Mesh::Vertex_index v : vertices_around_face(surfaces.halfedge(f), surfaces))
-          mean += std::abs(t[v]) / 3;
-        by_time.face_scalars.push_back(mean);
-        largest = std::max(largest, mean);
-      }
-      by_time.scalar_range = {0, largest > 0 ? largest : 1};
-      by_time.scalar_bar_title = "|t| (arc length from the seed curve)";
-      write_picture(out / (name + "_stream_surfaces.png"), surfaces, by_time);
-    }
-  }
   tm.remove_property_map(r);
   tm.remove_property_map(s);
   return true;
@@ -400,8 +432,7 @@ Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view 
   Scene_picture picture;
   picture.outline_bounds = {outline_box.xmin(), outline_box.xmax(), outline_box.ymin(),
                             outline_box.ymax(), outline_box.zmin(), outline_box.zmax()};
-  picture.views.push_back(
-      {{to_scene_surface(initial, face_fluxes(initial, scene.flow), {0.8, 0.8, 0.8})}, {outline}, "initial " + kind + " patch"});
+  picture.views.push_back(flux_view(initial, scene.flow, "initial " + kind + " patch", {outline}));
   aligned.lines.push_back(outline);
   aligned.title = std::string(kind == "tangential" ? "grown, " : "") + "aligned, seeded";
   picture.views.push_back(std::move(aligned));
@@ -420,6 +451,44 @@ Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view 
   picture.camera =
     oblique_camera(focus, double(picture.width) / double(picture.views.size()) / double(picture.height), side);
   return picture;
+}
+
+// The stages before the seeding: the initial patch, the aligned one, and a tangential one with
+// the LIC-like texture of Section 6 (2 repeats per patch size).
+std::vector<Stage> aligned_stages(const std::string& name, const Mesh& initial, const Mesh& tm,
+                                  const Scene& scene)
+{
+  const std::string aligned_title = name == "tangential" ? "grown, aligned" : "aligned";
+  std::vector<Stage> stages{
+      {name + "_initial.png", flux_view(initial, scene.flow, "initial " + name + " patch")},
+      {name + "_aligned.png", flux_view(tm, scene.flow, aligned_title)}};
+  if (name != "tangential")
+    return stages;
+  try {
+    stages.push_back({name + "_textured.png",
+                      Scene_view{{textured_surface(tm, flow_texture_of_mesh(tm, scene.flow, 2 / scene.size))},
+                                 {},
+                                 aligned_title + ", LIC-like texture"},
+                      ""});
+  } catch (const std::exception& e) {
+    std::cerr << name << ": the aligned surface gets no texture: " << e.what() << "\n";
+  }
+  return stages;
+}
+
+// Pictures (PNG, through VTK) are extras: without a display the job goes on without them, and
+// the first failure (the reason is the same for all) stops the rest.  The scene NAME_scene.png
+// (the paper's Figures 4 and 5: the initial patch beside the aligned one and what it seeds),
+// then each stage in the scene's context.
+void write_pictures(const std::filesystem::path& out, const std::string& name, const Scene_picture& picture,
+                    const std::vector<Stage>& stages)
+{
+  if (!write_scene_picture(out / (name + "_scene.png"), picture))
+    return;
+  for (const Stage& stage : stages)
+    if (!write_scene_picture(out / stage.file,
+                             stage_picture(picture, stage.view, stage.scalar_name, stage.scalar_range)))
+      return;
 }
 
 struct Run_summary {
@@ -446,8 +515,6 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   // The iterations as time steps of a ParaView collection, from the initial patch on.
   Iteration_collection collection(out, name);
   collection.add(tm, scene.flow);
-  // Pictures (PNG, through VTK) are extras: without a display the job goes on without them.
-  bool pictures = write_flux_picture(out / (name + "_initial.png"), tm, scene.flow);
 
   std::vector<FAS::Iteration_report> iterations;
   // The flux of the surface each iteration made: an iteration's report measures the surface it
@@ -494,18 +561,16 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
   }
   if (!write_surface(out / (name + "_aligned"), tm, scene.flow))
     return std::nullopt;
-  pictures = pictures && write_flux_picture(out / (name + "_aligned.png"), tm, scene.flow);
-  if (pictures && tangential) // the LIC-like texture of the stream surface (Section 6)
-    write_textured_picture(out / (name + "_textured.png"), tm, scene.flow, 2 / scene.size);
-  Scene_view aligned_view{{to_scene_surface(tm, face_fluxes(tm, scene.flow), {0.8, 0.8, 0.8})}, {}, "aligned"};
+  std::vector<Stage> stages = aligned_stages(name, initial, tm, scene);
+  Scene_view aligned_view = flux_view(tm, scene.flow, "aligned");
   std::optional<Scene_view> textured_view;
   std::string texture_file;
-  if (!seed_and_integrate(name, tm, deformation, scene, out, pictures, aligned_view, textured_view, texture_file))
+  if (!seed_and_integrate(name, tm, deformation, scene, out, aligned_view, stages, textured_view,
+                          texture_file))
     return std::nullopt;
   const bool has_stream_surfaces = aligned_view.surfaces.size() > 1, has_stream_lines = !tangential;
   const Scene_picture picture = scene_picture(scene, initial, aligned_view, name, std::move(textured_view));
-  if (pictures) // the paper's Figures 4 and 5: the initial patch beside the aligned one and what it seeds
-    write_scene_picture(out / (name + "_scene.png"), picture);
+  write_pictures(out, name, picture, stages);
   // The obstacle of the picture, for ParaView (an extra, as the pictures).
   std::string obstacle_error;
   const bool has_obstacle = !picture.obstacle.defined.empty() &&
@@ -640,7 +705,9 @@ int main(int argc, char** argv)
       "the per-face normalized flux), the iterations (a ParaView collection, .pvd), the flux of every\n"
       "iteration (CSV), seed curves, one stream surface per distinct seed curve and, for the orthogonal\n"
       "one, stream lines (VTP), pictures (PNG, when built with VTK's rendering: the scene of each\n"
-      "alignment, *_scene.png), open_in_paraview.py (every output in ParaView, as the pictures show it)\n"
+      "alignment, *_scene.png, and one picture per stage in the scene's context: *_initial.png,\n"
+      "*_aligned.png, *_seed_curves.png, *_stream_surfaces.png, orthogonal_stream_lines.png,\n"
+      "tangential_textured.png), open_in_paraview.py (every output in ParaView, as the pictures show it)\n"
       "and summary.json (the inputs, the package's version, the results, every file written).  Progress\n"
       "lines (iteration, flux, elapsed time) go to standard output.  Exit status: 0 on success, 1 when\n"
       "the run fails or the output folder is refused (nothing is written then), 2 for a bad command line."};

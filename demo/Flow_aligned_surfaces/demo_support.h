@@ -221,13 +221,6 @@ inline Surface_rendering flux_with_polylines(const Mesh& tm, const Flow& flow,
   return what;
 }
 
-/// The picture of `tm` coloured by the normalized flux of its faces (blue 0: tangential, red 1:
-/// orthogonal).
-inline bool write_flux_picture(const std::filesystem::path& path, const Mesh& tm, const Flow& flow)
-{
-  return write_picture(path, tm, flux_with_polylines(tm, flow, {}));
-}
-
 /// The LIC-like texture of the paper's Section 6 on a stream surface: the noise texture, mapped by
 /// the surface's unnormalized tangential parametrization r, s (texture coordinates per vertex, in
 /// vertex index order) and blended to its mean colour by the mask b per face (face index order).
@@ -260,19 +253,6 @@ inline Flow_texture_of_mesh flow_texture_of_mesh(const Mesh& tm, const Flow& flo
   for (auto f : copy.faces())
     result.face_mask[f.idx()] = mask[f];
   return result;
-}
-
-/// The picture of a stream surface `tm` with the LIC-like texture of its unnormalized tangential
-/// parametrization (`scale` texture repeats per unit of r), masked where grad r leaves the flow.
-inline bool write_textured_picture(const std::filesystem::path& path, const Mesh& tm, const Flow& flow,
-                                   double scale)
-{
-  const Flow_texture_of_mesh texture = flow_texture_of_mesh(tm, flow, scale);
-  Surface_rendering what;
-  what.texture = &texture.texture;
-  what.texture_coordinates = texture.texture_coordinates;
-  what.face_mask = texture.face_mask;
-  return write_picture(path, tm, what);
 }
 
 /// The orthogonal surface of the seeding programs: a tilted disk of `faces` triangles beside the

@@ -37,6 +37,7 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -273,7 +274,7 @@ inline bool render_scene_PNG(const std::string& filename, const Scene_picture& p
   const double n = double(picture.views.size());
   // The colour bar in a strip of its own below the views: over a view it hid the surfaces.
   const bool bar = !picture.scalar_name.empty();
-  const double strip = bar ? 0.12 : 0;
+  const double strip = bar ? scene_bar_strip : 0;
   if (bar) {
     auto renderer = vtkSmartPointer<vtkRenderer>::New();
     renderer->SetViewport(0, 0, 1, strip);
@@ -285,9 +286,12 @@ inline bool render_scene_PNG(const std::string& filename, const Scene_picture& p
     actor->SetLabelFormat("%.2g");
     actor->SetOrientationToHorizontal();
     actor->SetTextPositionToPrecedeScalarBar();
+    // At least 480 pixels wide, centred: narrower, as 0.4 of a one-view picture, its labels ran
+    // into each other.
+    const double bar_width = std::max(0.4, std::min(0.8, 480.0 / double(picture.width)));
     actor->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    actor->GetPositionCoordinate()->SetValue(0.3, 0.05);
-    actor->SetWidth(0.4);
+    actor->GetPositionCoordinate()->SetValue((1 - bar_width) / 2, 0.05);
+    actor->SetWidth(bar_width);
     actor->SetHeight(0.9);
     for (vtkTextProperty* text : {actor->GetTitleTextProperty(), actor->GetLabelTextProperty()}) {
       text->SetColor(0.1, 0.1, 0.1);

@@ -159,6 +159,32 @@ inline Render_camera oblique_camera(const CGAL::Bbox_3& focus, double aspect, do
   return camera;
 }
 
+/// One stage of `scene` in a picture of its own: `view` with the scene's obstacle, domain
+/// outline and camera, the colour bar of `scalar_name` over `scalar_range` in its strip below
+/// (empty name: no bar, and no strip).  Its view is the size of one of the scene's, so that the
+/// camera frames the stage as the scene frames it and the stage pictures can be compared with
+/// each other and with the scene.
+inline Scene_picture stage_picture(const Scene_picture& scene, Scene_view view,
+                                   const std::string& scalar_name, const std::array<double, 2>& scalar_range)
+{
+  const auto& b = scene.outline_bounds;
+  view.lines.push_back(box_outline(CGAL::Bbox_3(b[0], b[2], b[4], b[1], b[3], b[5])));
+  Scene_picture stage;
+  stage.width = scene.width / std::max<std::size_t>(1, scene.views.size());
+  const bool scene_bar = !scene.scalar_name.empty(), stage_bar = !scalar_name.empty();
+  const double view_height = double(scene.height) * (scene_bar ? 1 - scene_bar_strip : 1);
+  stage.height = std::size_t(std::lround(view_height / (stage_bar ? 1 - scene_bar_strip : 1)));
+  stage.views.push_back(std::move(view));
+  stage.scalar_name = scalar_name;
+  stage.scalar_range = scalar_range;
+  stage.obstacle = scene.obstacle;
+  stage.outline_bounds = scene.outline_bounds;
+  stage.obstacle_color = scene.obstacle_color;
+  stage.background = scene.background;
+  stage.camera = scene.camera;
+  return stage;
+}
+
 /// Renders `picture` to `path`; prints why and returns false when it cannot (no VTK rendering
 /// in the build, no display).
 inline bool write_scene_picture(const std::filesystem::path& path, const Scene_picture& picture)

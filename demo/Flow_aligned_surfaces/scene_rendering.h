@@ -61,6 +61,9 @@ struct Scene_view {
   std::string title;
 };
 
+/// The share of a scene picture's height that its colour bar's strip takes, below the views.
+constexpr double scene_bar_strip = 0.12;
+
 /// A scene picture: its views side by side under one camera, the colour map of the surfaces'
 /// face scalars with a colour bar titled `scalar_name`, and the obstacle in every view.
 struct Scene_picture {
