@@ -54,6 +54,27 @@ try:
     view.CameraFocalPoint = [-1.0, 0.3, 0.0]
     view.CameraViewUp = [0.0, 0.0, 1.0]
     Render(view)
+    # Every filter with its defaults on the real CFD data, each output shown as Apply shows it
+    # (defaults_check.py): converged surfaces, seed curves, a stream surface, a visible texture,
+    # no warning; the surfaces coloured by normalized_flux on [0, 1].
+    folder = os.environ.get("FAS_DEFAULTS_DATA")
+    if folder:
+        import defaults_check
+        defaults_view = CreateView("RenderView")
+        def shown(proxy):
+            display = Show(proxy, defaults_view)
+            gui_window.process_events(0.1)
+            if proxy.GetXMLName() == "FlowAlignedSurface":
+                display.SetScalarColoring("normalized_flux", servermanager.GetAssociationFromString("CELLS"))
+        for name in defaults_check.DATA_SETS:
+            print("GUI: " + defaults_check.check_defaults(folder, name, globals(), shown), file=sys.__stdout__)
+        gui_window.process_events()
+        defaults_points = list(GetColorTransferFunction("normalized_flux").RGBPoints)
+        if (defaults_points[0], defaults_points[-4]) != (0.0, 0.5):
+            raise AssertionError("the defaults changed the user's range of normalized_flux: %g to %g" % (
+                defaults_points[0], defaults_points[-4]))
+        Delete(defaults_view)
+        SetActiveView(view)
     output = servermanager.Fetch(surface)
     flux = output.GetFieldData().GetArray("normalized_flux").GetValue(0)
     iteration = output.GetFieldData().GetArray("iteration").GetValue(0)
