@@ -19,7 +19,7 @@
 # Takes about 35 to 45 minutes on 2 cores (the cold CI run is most of it), so it is not part of
 # .ci/run.  Run it whenever scripts/install-deps.sh, the top-level CMakeLists.txt, a writer or
 # reader of VTK files, or a tool the tests use changes, and record its last result in
-# benchmark/Flow_aligned_surfaces/RESULTS.md.  The logs stay in ROOT_DIR.log/.
+# benchmark/Flow_aligned_surfaces/RESULTS.md, "CI and fresh-machine times".  The logs stay in ROOT_DIR.log/.
 # Exit status: 0 when both commands pass, 1 when one fails, 2 for a bad command line.
 set -euo pipefail
 source "$(dirname "$0")/lib/help.sh"

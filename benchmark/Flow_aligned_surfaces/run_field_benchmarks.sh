@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The speed and memory figures of the flow fields read from data (RESULTS.md, "Issue 3"): configures a Release build,
+# The speed and memory figures of the flow fields read from data (RESULTS.md, "Sampling fields", "Memory of a loaded field", "Readers"): configures a Release build,
 # builds the four programs, runs them one after the other and keeps their output in results/:
 #   bench_grid_sampling   trilinear sampling, ns/query (target <= 50 ns at coherent positions)
 #   bench_point_location  1 M unstructured cells, package vs CGAL AABB_tree peer (<= 1 us coherent)

@@ -2,7 +2,7 @@
 # Reproduces the paper's Table 1 (and the grid-sampling figures) and writes RESULTS.md:
 # configures a Release build, builds bench_deformation and bench_grid_sampling, runs them
 # single-threaded, keeps their JSON in results/ beside this script and regenerates the
-# generated part of RESULTS.md (make_results.py).  About 1-3 minutes on 2 cores.
+# generated part of RESULTS.md, "Alignment iterations (Table 1)" (make_results.py).  About 1-3 minutes on 2 cores.
 #
 #   benchmark/Flow_aligned_surfaces/run_table1.sh [--quick] [BUILD_DIR]
 #

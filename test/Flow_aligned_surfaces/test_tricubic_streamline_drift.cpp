@@ -2,7 +2,8 @@
 // flow than on the trilinear one, against the closed-form first integrals: the claims of the
 // documentation of Regular_grid_flow_field_3 and of the manual.  The lines are
 // integrated at tolerance 1e-10, so the interpolation, not the integrator, sets the drift.
-// Figures at 16^3 to 128^3 are in benchmark/Flow_aligned_surfaces/RESULTS.md.
+// Figures at 16^3 to 128^3 are in benchmark/Flow_aligned_surfaces/RESULTS.md, "Stream lines and
+// stream surfaces".
 
 #include "test_kernel.h"
 

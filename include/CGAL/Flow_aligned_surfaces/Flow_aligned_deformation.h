@@ -332,7 +332,7 @@ public:
     // refinement from X: the default solver solves C in single precision with a copy of a large
     // factor (half the bytes to read), whose error is proportional to C, the step, not to X'
     // (and is largest in C's translation, which translate_as_the_exact_correction() sets;
-    // RESULTS.md).
+    // RESULTS.md, "The solver").
     m_residual.setZero(x.rows(), 3);
     Face_pass face_pass;
 #ifdef CGAL_LINKED_WITH_TBB
@@ -817,7 +817,8 @@ private:
     if (!(current.twice_area > 0) || !std::isfinite(current.twice_area))
       return current;
     // Products by reciprocals: three divisions fewer per face than dividing here and in
-    // measure_alignment() (2 % of GTRANSF at 3.2e5 faces; RESULTS.md).
+    // measure_alignment() (2 % of GTRANSF at 3.2e5 faces; RESULTS.md,
+    // "Alignment iterations (Table 1)").
     current.inverse_twice_area = 1 / current.twice_area;
     current.normal = cross * current.inverse_twice_area;
     current.centroid = (a + b + c) * (1. / 3);
@@ -840,7 +841,8 @@ private:
   // `add_term(j, term)` in face order.  Per face this is the same computation as one face at a
   // time (`transform_face()`: the same results, bit for bit).  By stages, the square roots and
   // divisions of neighbouring faces, whose latencies are most of GTRANSF face by face, overlap
-  // in the processor (about 25 % less time at 8e4 faces; RESULTS.md).
+  // in the processor (about 25 % less time at 8e4 faces; RESULTS.md,
+  // "Alignment iterations (Table 1)").
   template <class Matrix, class AddTerm>
   void transform_faces(const Matrix& x, std::size_t begin, std::size_t end, Face_pass& pass, AddTerm add_term)
   {

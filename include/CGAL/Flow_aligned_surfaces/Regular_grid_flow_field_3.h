@@ -58,7 +58,8 @@ namespace Flow_aligned_surfaces {
 /// differentiable, exact for fields quadratic in each coordinate and third-order accurate, where
 /// the trilinear blend is second-order and has derivatives that jump at every cell face.  How much
 /// closer stream lines on it keep the first integrals of the sampled flow depends on the flow
-/// (median drift over stream lines, benchmark/Flow_aligned_surfaces/RESULTS.md): on the ABC flow
+/// (median drift over stream lines, benchmark/Flow_aligned_surfaces/RESULTS.md, "Stream lines and
+/// stream surfaces"): on the ABC flow
 /// over one period [0, 2π]³, 5, 15, 31 and 66 times closer at 16³, 32³, 64³ and 128³ nodes; 5 to
 /// 8 times closer inside Hill's spherical vortex at 16³ to 32³ nodes (a quadratic field,
 /// reproduced exactly away from the vortex's boundary); but no closer on the cellular flow

@@ -76,7 +76,7 @@ namespace Flow_aligned_surfaces {
 /// A query costs what VTK's locator and cell functions cost: on the solver cells of the
 /// CYLINDER data 1.2 to 2.8 times an `Unstructured_flow_field_3` query, on an image 33 to 71
 /// times a `Regular_grid_flow_field_3` query on the same samples (which finds the voxel by
-/// arithmetic; benchmark/Flow_aligned_surfaces/RESULTS.md).  For a `vtkImageData`, a
+/// arithmetic; benchmark/Flow_aligned_surfaces/RESULTS.md, "Sampling fields").  For a `vtkImageData`, a
 /// `Regular_grid_flow_field_3` of its array gives the same samples faster.
 ///
 /// \tparam GeomTraits a model of `Kernel`; the coordinates are converted to `double` with

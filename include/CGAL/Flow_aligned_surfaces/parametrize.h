@@ -379,7 +379,8 @@ triangle at the vertex):
 
 The two systems have the same sparsity: one fill-reducing ordering serves both factorizations.
 
-Accuracy (benchmark/Flow_aligned_surfaces/RESULTS.md, sphere caps, mean relative error against
+Accuracy (benchmark/Flow_aligned_surfaces/RESULTS.md, "Parametrization and geodesic distance",
+sphere caps, mean relative error against
 the great-circle distance): on a regular cap as CGAL's, in either mode (1.03 / 0.51 / 0.26 % at
 2.4k / 9.6k / 38k faces, CGAL 1.03 / 0.51 / 0.26 %); on the same cap with the vertices jittered
 by 0.3 of an edge, so that many triangles are not Delaunay, the default is 0.7 times CGAL's

@@ -122,7 +122,7 @@ private:
   // whenever it is free.  The groups' work is uneven when the cut stops at the top's share
   // (at 3.2e5 faces the four hold 36, 33, 10 and 11 % of the work); splitting the range of
   // groups in halves gave both heavy ones to one thread (SOLVE 1.4x faster on two threads than
-  // on one, against 1.7x this way; RESULTS.md).  The order does not change
+  // on one, against 1.7x this way; RESULTS.md, "The solver").  The order does not change
   // the result: each group writes its own rows and its own buffer.
   template <class Function>
   void for_each_group(const Function& f) const

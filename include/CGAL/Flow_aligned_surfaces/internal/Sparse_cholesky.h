@@ -46,7 +46,8 @@ namespace internal {
 /// (`final_resymbol = 1`).  So the factorization is the faster of the two at every size, and the
 /// back-substitutions, paid every iteration, are always CHOLMOD's simplicial ones, which sweep the
 /// three coordinate columns at once instead of making many small BLAS calls per supernode
-/// (1.6 to 2.8 times faster).  Measured in benchmark/Flow_aligned_surfaces/RESULTS.md.
+/// (1.6 to 2.8 times faster).  Measured in benchmark/Flow_aligned_surfaces/RESULTS.md,
+/// "The solver".
 template <class MatrixType>
 class Cholmod_auto_LDLT : public Eigen::CholmodBase<MatrixType, Eigen::Lower, Cholmod_auto_LDLT<MatrixType>> {
   using Base = Eigen::CholmodBase<MatrixType, Eigen::Lower, Cholmod_auto_LDLT<MatrixType>>;

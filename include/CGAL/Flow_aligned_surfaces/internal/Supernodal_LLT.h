@@ -70,7 +70,7 @@ public:
   /// CHOLMOD_NESDIS, ...) only, or CHOLMOD's default strategy when it is negative (the default:
   /// AMD on these meshes).  METIS's nested dissection gives 2 to 10 % fewer nonzeros on the
   /// patches of the benchmark but no faster solve, and its analysis costs 15 times AMD's
-  /// (benchmark/Flow_aligned_surfaces/RESULTS.md).
+  /// (benchmark/Flow_aligned_surfaces/RESULTS.md, "The solver").
   void use_ordering(int ordering) { m_ordering = ordering; }
 
   /// The symbolic analysis (fill-reducing ordering and pattern of the factor).
@@ -129,7 +129,7 @@ public:
   /// than CHOLMOD's solve below about 1e5 faces: 25 to 35 % slower at 5e3 and 2e4 faces (the
   /// factor in the caches, CHOLMOD's kernel does less per entry), as fast within the noise at 8e4
   /// (1.5e6 nonzeros), 0 to 30 % faster at 3.2e5 (7e6 nonzeros); so from about 1.5e5 faces on
-  /// (benchmark/Flow_aligned_surfaces/RESULTS.md).  The choice does not
+  /// (benchmark/Flow_aligned_surfaces/RESULTS.md, "The solver").  The choice does not
   /// depend on `use_parallelism()`, so that the solutions do not either.
   static constexpr double default_smallest_swept_factor = 3e6;
 
@@ -145,7 +145,8 @@ public:
   /// factorization: 25 to 35 ms of the first construction at 8e4 faces, most of it page faults).
   /// Its sweeps read half the bytes of the double factor's and compute in single precision: the
   /// iterations' SOLVE takes half the time of CHOLMOD's solve at 8e4 faces (1.5e6 nonzeros) and
-  /// 40 % less than the double sweeps at 3.2e5 (benchmark/Flow_aligned_surfaces/RESULTS.md);
+  /// 40 % less than the double sweeps at 3.2e5 (benchmark/Flow_aligned_surfaces/RESULTS.md,
+  /// "The solver");
   /// below 1e6 nonzeros (about 5e4 faces) the copy would cost more than a short alignment saves.
   static constexpr double default_smallest_single_precision_factor = 1e6;
 
@@ -167,7 +168,7 @@ public:
   /// halves the time of the sweeps (four floats per row in one SIMD register against two of two
   /// doubles) and leaves 1 to 10 times the error of the double arithmetic, at most 4e-4 of the
   /// correction on a 400 x 400 grid once the translation is set
-  /// (benchmark/Flow_aligned_surfaces/RESULTS.md).
+  /// (benchmark/Flow_aligned_surfaces/RESULTS.md, "The solver").
   /// `residual`, `base` and `dest` have the same size; `dest` may be neither of the others.
   template <class Base, class Residual, class Dest>
   void solve_correction(const Eigen::MatrixBase<Base>& base, const Eigen::MatrixBase<Residual>& residual,

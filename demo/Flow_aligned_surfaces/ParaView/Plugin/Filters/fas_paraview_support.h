@@ -51,7 +51,7 @@ using Polyline = std::vector<Point>;
 
 /// The velocity of a VTK data set as a `FlowField_3`: point data of an image is copied into a
 /// `Regular_grid_flow_field_3` (the same trilinear samples, 30-70 times faster than a cell
-/// locator; see benchmark/.../RESULTS.md), every other case samples the data set through
+/// locator; see benchmark/.../RESULTS.md, "Sampling fields"), every other case samples the data set through
 /// `VTK_flow_field_3`.  Safe to call concurrently.
 class Velocity_field {
 public:

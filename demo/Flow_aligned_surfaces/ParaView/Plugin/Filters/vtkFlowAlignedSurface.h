@@ -47,7 +47,8 @@ class vtkDoubleArray;
 /// (naming the rank) with the previous output kept.  Then the field data also holds
 /// `number_of_ranks`, `number_of_ranks_with_cells`, `number_of_sampling_ranks` (ranks that
 /// supplied samples of the output), `iterations_computed` and, when iterations were computed,
-/// `exchange_ms_per_iteration` and `step_ms_per_iteration` (see benchmark/.../RESULTS.md).
+/// `exchange_ms_per_iteration` and `step_ms_per_iteration` (see benchmark/.../RESULTS.md,
+/// "ParaView plugin under MPI").
 class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkFlowAlignedSurface : public vtkPolyDataAlgorithm
 {
 public:
