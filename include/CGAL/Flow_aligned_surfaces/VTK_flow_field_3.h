@@ -15,7 +15,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_utils.h>
 
-#include <CGAL/Flow_aligned_surfaces/IO/internal/reader_support.h>
+#include <CGAL/Flow_aligned_surfaces/internal/array_names.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #include <vtkAbstractCellLocator.h>
@@ -141,7 +141,7 @@ public:
     m_data_set = data_set;
     if (data_set->GetNumberOfCells() == 0)
       fail(describe() + " has no cells; expected at least one cell to interpolate in");
-    const IO::internal::Array_names names = IO::internal::array_names(np);
+    const internal::Array_names names = internal::array_names(np);
     find_velocity(names.array_name());
     find_mask(names.mask_name());
 

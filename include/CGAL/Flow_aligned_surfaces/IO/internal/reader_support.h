@@ -10,6 +10,7 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READER_SUPPORT_H
 
 #include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
+#include <CGAL/Flow_aligned_surfaces/internal/array_names.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -27,31 +28,10 @@ namespace Flow_aligned_surfaces {
 namespace IO {
 namespace internal {
 
-/// The value of the string parameter `Tag` of `np`, or nothing if `np` does not set it.
-template <class Tag, class NamedParameters>
-std::optional<std::string> string_parameter(const NamedParameters& np)
-{
-  if constexpr (parameters::is_default_parameter<NamedParameters, Tag>::value)
-    return std::nullopt;
-  else
-    return std::string(parameters::get_parameter(np, Tag()));
-}
-
-/// The velocity and mask array names that the named parameters give; unset where not given.
-struct Array_names {
-  std::optional<std::string> array, mask;
-  /// the velocity array's name, or null if not given
-  const std::string* array_name() const { return array ? &*array : nullptr; }
-  /// the mask array's name, or null if not given
-  const std::string* mask_name() const { return mask ? &*mask : nullptr; }
-};
-
-template <class NamedParameters>
-Array_names array_names(const NamedParameters& np)
-{
-  return Array_names{string_parameter<internal_np::array_name_t>(np),
-                     string_parameter<internal_np::mask_array_name_t>(np)};
-}
+// The array names of the named parameters, shared with the fields that read them
+// (`VTK_flow_field_3`).
+using Flow_aligned_surfaces::internal::Array_names;
+using Flow_aligned_surfaces::internal::array_names;
 
 /// `Field(args...)`; a `std::invalid_argument` by which the constructor refuses values that
 /// the reader did not check itself becomes `fail(its message)`, which throws a `Read_error`
