@@ -163,6 +163,27 @@ class Messages:
         return self.window.GetOutput()
 
 
+class AbortOnce:
+    """While active, sets AbortExecute on `proxy`'s algorithm (what ParaView's Abort button does)
+    at the first progress event whose progress `when` accepts; `progress` holds that progress."""
+
+    def __init__(self, proxy, when):
+        self.algorithm, self.when, self.progress = proxy.GetClientSideObject(), when, []
+
+    def __enter__(self):
+        self.tag = self.algorithm.AddObserver("ProgressEvent", self._observe)
+        return self
+
+    def __exit__(self, *exc):
+        self.algorithm.RemoveObserver(self.tag)
+        return False
+
+    def _observe(self, caller, event):
+        if not self.progress and self.when(caller.GetProgress()):
+            self.progress.append(caller.GetProgress())
+            caller.SetAbortExecute(1)
+
+
 # ---- helpers of the tests of Parametrize and Seed and Flow Texture ----
 
 def fetch_port(proxy, port):

@@ -88,16 +88,9 @@ for prop, value, words in [
 surface.Center = [-1.7, 0.5, 0.0]
 surface.NumberOfIterations = 40
 surface.ConvergenceAngle = 0.0
-algorithm = surface.GetClientSideObject()
-aborts = []
-def abort_after_iterations(caller, event):
-    if caller.GetProgress() > 0.3 and not aborts:
-        aborts.append(caller.GetProgress())
-        caller.SetAbortExecute(1)
-tag = algorithm.AddObserver("ProgressEvent", abort_after_iterations)
-with t.Messages() as m:
+with t.AbortOnce(surface, lambda progress: progress > 0.3) as abort, t.Messages() as m:
     cancelled = t.fetch(surface, 40)
-algorithm.RemoveObserver(tag)
+aborts = abort.progress
 t.expect_message(m, ["cancelled after iteration", "goes on from there"], "abort")
 stopped_at = t.field_value(cancelled, "iteration")
 if not 5 <= stopped_at < 20 or cancelled.GetNumberOfPoints() == 0:

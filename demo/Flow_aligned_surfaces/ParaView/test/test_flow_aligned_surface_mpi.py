@@ -110,16 +110,9 @@ Delete(surface)
 # rank 0 stops after the iteration in progress and releases rank 1, the output is the library's
 # surface of that iteration, and the next time step asked for goes on from there.
 surface = surface_of(reader, "Tangential (stream surface)")
-algorithm = surface.GetClientSideObject()
-aborts = []
-def abort_once(caller, event):
-    if caller.GetProgress() > 0.3 and not aborts:
-        aborts.append(caller.GetProgress())
-        caller.SetAbortExecute(1)
-tag = algorithm.AddObserver("ProgressEvent", abort_once)
-with t.Messages() as messages:
+with t.AbortOnce(surface, lambda progress: progress > 0.3) as abort, t.Messages() as messages:
     cancelled = t.fetch(surface, ITERATIONS)
-algorithm.RemoveObserver(tag)
+aborts = abort.progress
 t.expect_message(messages, ["cancelled after iteration"], "abort on 2 ranks")
 stopped_at = int(t.field_value(cancelled, "iteration"))
 if not 1 <= stopped_at < ITERATIONS:

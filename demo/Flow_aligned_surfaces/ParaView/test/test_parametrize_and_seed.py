@@ -198,17 +198,10 @@ t.expect_error_keeps_outputs(p, range(3), before, ["Parametrize And Seed: parame
 p.Surface = stream_surface
 p.NumberOfSeedCurves = 3
 before = t.output_sizes(p, range(3))
-algorithm = p.GetClientSideObject()
-stages = []
-def abort_at_first_stage(caller, event):
-    if 0 < caller.GetProgress() < 1 and not stages:
-        stages.append(caller.GetProgress())
-        caller.SetAbortExecute(1)
-tag = algorithm.AddObserver("ProgressEvent", abort_at_first_stage)
 p.NumberOfSeedCurves = 4
-with t.Messages() as messages:
+with t.AbortOnce(p, lambda progress: 0 < progress < 1) as abort, t.Messages() as messages:
     after = t.output_sizes(p, range(3))
-algorithm.RemoveObserver(tag)
+stages = abort.progress
 t.expect_message(messages, ["cancelled before the parametrization was solved", "the previous output is kept"],
                  "abort")
 if after != before or abs(stages[0] - 1.0 / 3) > 1e-12:
