@@ -4,7 +4,7 @@
 # Regenerates the user manual's figures that the demo's applications draw
 # (doc/Flow_aligned_surfaces/fig/): the LIC-like and arrow textures of a stream surface (the
 # paper's Figure 8) and the stream surface with its seed curves, from
-# demo/Flow_aligned_surfaces/flow_texture.cpp, and the seeding workflow (Figures 4 and 5) from
+# demo/Flow_aligned_surfaces/flow_texture_demo.cpp, and the seeding workflow (Figures 4 and 5) from
 # the main job, demo/Flow_aligned_surfaces/align_patch.cpp, rendered
 # by VTK off screen (under a private Xvfb when there is no display).  The schematic SVG figures
 # come from doc/Flow_aligned_surfaces/fig/make_figures.py, the session plot from replay_session;

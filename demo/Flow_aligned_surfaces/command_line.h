@@ -241,8 +241,8 @@ public:
   ~Output_folder()
   {
     std::error_code ec;
-    if (!staging_.empty())
-      std::filesystem::remove_all(staging_, ec);
+    if (!m_staging.empty())
+      std::filesystem::remove_all(m_staging, ec);
   }
 
   /// Checks `options.folder` and creates the staging folder; prints why and returns false when
@@ -252,21 +252,21 @@ public:
   {
     namespace fs = std::filesystem;
     std::error_code ec;
-    destination_ = fs::absolute(options.folder, ec).lexically_normal();
-    if (destination_.has_filename() == false) // "out/" names the folder "out"
-      destination_ = destination_.parent_path();
+    m_destination = fs::absolute(options.folder, ec).lexically_normal();
+    if (m_destination.has_filename() == false) // "out/" names the folder "out"
+      m_destination = m_destination.parent_path();
     const auto fail = [&](const std::string& why) {
       std::cerr << "error: --output: " << options.folder << ": " << why << "\n";
       return false;
     };
-    if (ec || !destination_.has_filename() || destination_ == destination_.root_path())
+    if (ec || !m_destination.has_filename() || m_destination == m_destination.root_path())
       return fail("not a folder a program can write into");
-    const fs::file_status status = fs::status(destination_, ec);
+    const fs::file_status status = fs::status(m_destination, ec);
     if (fs::exists(status)) {
       if (!fs::is_directory(status))
         return fail("exists and is not a folder");
       bool empty = true;
-      for (const fs::directory_entry& entry : fs::directory_iterator(destination_, ec)) {
+      for (const fs::directory_entry& entry : fs::directory_iterator(m_destination, ec)) {
         if (!options.overwrite)
           return fail("the folder is not empty (an earlier run?); give --overwrite to replace its files, "
                       "or choose another folder");
@@ -284,7 +284,7 @@ public:
       const auto inside = [this](const fs::path& path) {
         std::error_code ignored;
         const fs::path file = fs::weakly_canonical(path, ignored);
-        const fs::path folder = fs::weakly_canonical(destination_, ignored);
+        const fs::path folder = fs::weakly_canonical(m_destination, ignored);
         return std::mismatch(folder.begin(), folder.end(), file.begin(), file.end()).first == folder.end();
       };
       if (!empty && inside(fs::current_path(ec)))
@@ -293,30 +293,30 @@ public:
         if (!empty && !input.empty() && inside(input))
           return fail("--overwrite would remove the input " + input + "; give a folder of its own");
     }
-    fs::create_directories(destination_.parent_path(), ec);
-    staging_ = destination_.parent_path() /
-               ("." + destination_.filename().string() + ".partial-" + std::to_string(::getpid()));
-    fs::remove_all(staging_, ec); // left by a crashed run that had the same process id
-    if (!fs::create_directory(staging_, ec)) {
-      staging_.clear();
+    fs::create_directories(m_destination.parent_path(), ec);
+    m_staging = m_destination.parent_path() /
+                ("." + m_destination.filename().string() + ".partial-" + std::to_string(::getpid()));
+    fs::remove_all(m_staging, ec); // left by a crashed run that had the same process id
+    if (!fs::create_directory(m_staging, ec)) {
+      m_staging.clear();
       return fail("cannot create a folder beside it" + (ec ? ": " + ec.message() : std::string()));
     }
     return true;
   }
 
   /// Where the run writes its files until commit().
-  const std::filesystem::path& path() const { return staging_; }
+  const std::filesystem::path& path() const { return m_staging; }
   /// Where the files are after commit() (absolute).
-  const std::filesystem::path& destination() const { return destination_; }
+  const std::filesystem::path& destination() const { return m_destination; }
 
   /// The files written so far, relative to path() (with '/'), sorted.
   std::vector<std::string> files() const
   {
     std::vector<std::string> names;
     std::error_code ec;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(staging_, ec))
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(m_staging, ec))
       if (entry.is_regular_file())
-        names.push_back(entry.path().lexically_relative(staging_).generic_string());
+        names.push_back(entry.path().lexically_relative(m_staging).generic_string());
     std::sort(names.begin(), names.end());
     return names;
   }
@@ -327,32 +327,32 @@ public:
   {
     namespace fs = std::filesystem;
     std::error_code ec;
-    if (!fs::exists(destination_, ec)) {
-      fs::rename(staging_, destination_, ec); // all at once
+    if (!fs::exists(m_destination, ec)) {
+      fs::rename(m_staging, m_destination, ec); // all at once
     }
     else {
-      for (const fs::directory_entry& entry : fs::directory_iterator(destination_, ec))
+      for (const fs::directory_entry& entry : fs::directory_iterator(m_destination, ec))
         if (!entry.is_directory())
           fs::remove(entry.path(), ec);
         else // a folder of files (checked by open())
           fs::remove_all(entry.path(), ec);
-      for (const fs::directory_entry& entry : fs::directory_iterator(staging_, ec))
+      for (const fs::directory_entry& entry : fs::directory_iterator(m_staging, ec))
         if (!ec)
-          fs::rename(entry.path(), destination_ / entry.path().filename(), ec);
+          fs::rename(entry.path(), m_destination / entry.path().filename(), ec);
       if (!ec)
-        fs::remove(staging_, ec);
+        fs::remove(m_staging, ec);
     }
     if (ec) {
-      std::cerr << "error: --output: cannot move the results into " << destination_.string() << ": "
+      std::cerr << "error: --output: cannot move the results into " << m_destination.string() << ": "
                 << ec.message() << "\n";
       return false;
     }
-    staging_.clear();
+    m_staging.clear();
     return true;
   }
 
 private:
-  std::filesystem::path destination_, staging_;
+  std::filesystem::path m_destination, m_staging;
 };
 
 // ---- Progress ------------------------------------------------------------------------------
@@ -365,15 +365,16 @@ public:
   /// `fractions`: the library's `callback` (a deformation's `run()`) gives the share of the
   /// iterations done, and the lines are printed then; otherwise (single `step()`s) by the visitor.
   explicit Progress(std::string name, bool fractions = true)
-      : name_(std::move(name)), fractions_(fractions), start_(std::chrono::steady_clock::now()), last_(start_)
+      : m_name(std::move(name)), m_fractions(fractions), m_start(std::chrono::steady_clock::now()),
+        m_last(m_start)
   {
   }
 
   /// The deformation's `visitor`: the iteration's report.
   void operator()(const CGAL::Flow_aligned_surfaces::Iteration_report& r)
   {
-    report_ = r;
-    if (!fractions_)
+    m_report = r;
+    if (!m_fractions)
       print(std::string());
   }
 
@@ -389,20 +390,21 @@ private:
   void print(const std::string& share)
   {
     const auto now = std::chrono::steady_clock::now();
-    if (printed_ && now - last_ < std::chrono::seconds(1))
+    if (m_printed && now - m_last < std::chrono::seconds(1))
       return;
-    printed_ = true;
-    last_ = now;
-    const double elapsed = std::chrono::duration<double>(now - start_).count();
-    std::cout << name_ << ": iteration " << report_.iteration << share << ", flux " << report_.normalized_flux
-              << ", " << std::round(10 * elapsed) / 10 << " s elapsed" << std::endl;
+    m_printed = true;
+    m_last = now;
+    const double elapsed = std::chrono::duration<double>(now - m_start).count();
+    std::cout << m_name << ": iteration " << m_report.iteration << share << ", flux "
+              << m_report.normalized_flux << ", " << std::round(10 * elapsed) / 10 << " s elapsed"
+              << std::endl;
   }
 
-  std::string name_;
-  bool fractions_;
-  std::chrono::steady_clock::time_point start_, last_;
-  CGAL::Flow_aligned_surfaces::Iteration_report report_;
-  bool printed_ = false;
+  std::string m_name;
+  bool m_fractions;
+  std::chrono::steady_clock::time_point m_start, m_last;
+  CGAL::Flow_aligned_surfaces::Iteration_report m_report;
+  bool m_printed = false;
 };
 
 } // namespace fas_demo

@@ -12,8 +12,7 @@
 #define FAS_DEMO_ITERATION_COLLECTION_H
 
 #include "demo_support.h"
-
-#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
+#include "write_then_rename.h"
 
 #include <filesystem>
 #include <iomanip>
@@ -62,14 +61,13 @@ public:
       return false;
     const std::string pvd = (m_out / (m_name + "_iterations.pvd")).string();
     std::string reason;
-    const bool written = CGAL::Flow_aligned_surfaces::IO::internal::write_file_atomically(
-        pvd, reason, [&](std::ostream& os) {
-          os << "<?xml version=\"1.0\"?>\n"
-             << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n";
-          for (std::size_t i = 0; i < m_files.size(); ++i)
-            os << "    <DataSet timestep=\"" << i << "\" group=\"\" part=\"0\" file=\"" << m_files[i] << "\"/>\n";
-          os << "  </Collection>\n</VTKFile>\n";
-        });
+    const bool written = write_stream_then_rename(pvd, reason, [&](std::ostream& os) {
+      os << "<?xml version=\"1.0\"?>\n"
+         << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n";
+      for (std::size_t i = 0; i < m_files.size(); ++i)
+        os << "    <DataSet timestep=\"" << i << "\" group=\"\" part=\"0\" file=\"" << m_files[i] << "\"/>\n";
+      os << "  </Collection>\n</VTKFile>\n";
+    });
     if (!written)
       m_error = "cannot write " + pvd + ": " + reason;
     return written;

@@ -19,8 +19,7 @@
 #define FAS_DEMO_PARAVIEW_SCRIPT_H
 
 #include "surface_rendering.h"
-
-#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
+#include "write_then_rename.h"
 
 #include <array>
 #include <cstddef>
@@ -97,7 +96,8 @@ runs = [
   for (const Paraview_run& r : runs)
     py << "    {'name': '" << r.name << "', 'position': " << detail::python_list(r.camera.position)
        << ", 'focal_point': " << detail::python_list(r.camera.focal_point)
-       << ", 'view_up': " << detail::python_list(r.camera.view_up) << ", 'view_angle': " << r.camera.view_angle
+       << ", 'view_up': " << detail::python_list(r.camera.view_up)
+       << ", 'view_angle': " << r.camera.view_angle
        << ", 'stream_surfaces': " << (r.stream_surfaces ? "True" : "False")
        << ", 'stream_lines': " << (r.stream_lines ? "True" : "False")
        << ", 'obstacle': " << (r.obstacle ? "True" : "False")
@@ -243,8 +243,7 @@ if screenshot:  # pvbatch: a live view at exit ends in GLXBadContext
 )";
   const std::string path = (out / "open_in_paraview.py").string();
   std::string reason;
-  if (CGAL::Flow_aligned_surfaces::IO::internal::write_file_atomically(
-          path, reason, [&](std::ostream& os) { os << py.str(); }))
+  if (write_stream_then_rename(path, reason, [&](std::ostream& os) { os << py.str(); }))
     return true;
   error = "cannot write " + path + ": " + reason;
   return false;

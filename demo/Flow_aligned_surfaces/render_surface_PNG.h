@@ -20,8 +20,8 @@
 #include "surface_rendering.h"
 #include "virtual_display.h"
 #include "vtk_polydata_of_mesh.h"
+#include "write_then_rename.h"
 
-#include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -96,13 +96,15 @@ inline vtkSmartPointer<vtkImageData> make_vtk_image(const CGAL::Flow_aligned_sur
   image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   auto* bytes = static_cast<unsigned char*>(image->GetScalarPointer());
   for (std::size_t i = 0; i < t.pixels.size(); ++i) // VTK's rows run bottom up too
-    bytes[i] = (unsigned char)std::lround(255 * std::clamp(std::isnan(t.pixels[i]) ? 0.0f : t.pixels[i], 0.0f, 1.0f));
+    bytes[i] = (unsigned char)std::lround(
+        255 * std::clamp(std::isnan(t.pixels[i]) ? 0.0f : t.pixels[i], 0.0f, 1.0f));
   return image;
 }
 
 /// Textures `actor` (which draws `surface`) by `texture` at one (u, v) per point of `surface`
 /// (non-finite coordinates map to 0).
-inline void set_texture(vtkActor* actor, vtkPolyData* surface, const CGAL::Flow_aligned_surfaces::Texture_image& texture,
+inline void set_texture(vtkActor* actor, vtkPolyData* surface,
+                        const CGAL::Flow_aligned_surfaces::Texture_image& texture,
                         const std::vector<std::array<double, 2>>& texture_coordinates)
 {
   auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
@@ -178,7 +180,7 @@ inline bool write_window_PNG(vtkRenderWindow* window, const std::string& filenam
     return fail("VTK's PNG writer produced nothing");
   // Written beside `filename` and renamed over it, so that a reader never sees half a picture.
   std::string why;
-  if (!CGAL::Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, why, [&](std::ostream& os) {
+  if (!write_stream_then_rename(filename, why, [&](std::ostream& os) {
         os.write(reinterpret_cast<const char*>(encoded->GetPointer(0)),
                  std::streamsize(encoded->GetNumberOfValues()));
       }))
@@ -257,7 +259,8 @@ bool render_surface_PNG(const std::string& filename, const TriangleMesh& tm, con
   renderer->AddActor(actor);
   if (what.texture != nullptr) {
     detail::set_texture(actor, surface, *what.texture, what.texture_coordinates);
-    if (const vtkSmartPointer<vtkActor> layer = detail::make_mask_layer(points, polys, *what.texture, what.face_mask))
+    if (const vtkSmartPointer<vtkActor> layer =
+            detail::make_mask_layer(points, polys, *what.texture, what.face_mask))
       renderer->AddActor(layer);
   }
   else if (!what.face_scalars.empty()) {

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A polygon mesh as VTK polydata (its points and polygons, numbered by the vertex and face index
-// maps), shared by the demo's renderer (render_surface_PNG.h) and its VTP writer
-// (write_polydata_VTP.h).  Needs VTK's CommonCore and CommonDataModel.
+// maps), shared by the demo's renderer (render_surface_PNG.h), its VTP writer
+// (write_polydata_VTP.h) and the ParaView plugin's filters.  Needs VTK's CommonCore and
+// CommonDataModel.
 
 #ifndef FAS_DEMO_VTK_POLYDATA_OF_MESH_H
 #define FAS_DEMO_VTK_POLYDATA_OF_MESH_H

@@ -30,6 +30,7 @@
 #include <vtkZLibDataCompressor.h>
 
 #include "vtk_polydata_of_mesh.h"
+#include "write_then_rename.h"
 #endif
 
 #include <cstddef>
@@ -83,25 +84,17 @@ inline void add_VTK_arrays(vtkDataSetAttributes* attributes,
 // Writes `polydata` to `filename` (beside it first, then renamed over it).
 inline bool write_VTK_polydata(const std::string& filename, vtkPolyData* polydata, std::string& reason)
 {
-  const std::string partial = filename + ".partial.vtp";
-  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-  writer->SetFileName(partial.c_str());
-  writer->SetInputData(polydata);
-  writer->SetDataModeToBinary(); // inline: readable by ParaView 5.11 whatever the expat
-  writer->SetCompressor(vtkSmartPointer<vtkZLibDataCompressor>::New());
-  if (writer->Write() != 1) {
-    std::remove(partial.c_str());
-    reason = "VTK's XML writer could not write " + partial;
+  return write_then_rename(filename, reason, [&](const std::string& temporary) {
+    auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    writer->SetFileName(temporary.c_str());
+    writer->SetInputData(polydata);
+    writer->SetDataModeToBinary(); // inline: readable by ParaView 5.11 whatever the expat
+    writer->SetCompressor(vtkSmartPointer<vtkZLibDataCompressor>::New());
+    if (writer->Write() == 1)
+      return true;
+    reason = "VTK's XML writer could not write " + temporary;
     return false;
-  }
-  std::error_code ec;
-  std::filesystem::rename(partial, filename, ec);
-  if (ec) {
-    std::remove(partial.c_str());
-    reason = "cannot rename " + partial + ": " + ec.message();
-    return false;
-  }
-  return true;
+  });
 }
 
 } // namespace detail

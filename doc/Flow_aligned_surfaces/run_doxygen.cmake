@@ -6,6 +6,8 @@
 #   cmake -DDOXYGEN_EXECUTABLE=doxygen -DDOXYFILE=<build>/Doxyfile -DWARN_LOG=<log> \
 #         -DHTML_DIR=<build>/html -DMATHJAX_DIR=/usr/share/javascript/mathjax -P run_doxygen.cmake
 
+cmake_minimum_required(VERSION 3.16) # IN_LIST
+
 foreach(var DOXYGEN_EXECUTABLE DOXYFILE WARN_LOG HTML_DIR MATHJAX_DIR)
   if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
     message(FATAL_ERROR "run_doxygen.cmake: -D${var}=... is required")
@@ -63,6 +65,27 @@ endforeach()
 if(NOT remote_fetches STREQUAL "")
   message(FATAL_ERROR "Pages of the manual load from the network; it must read offline:\n"
                       "${remote_fetches}")
+endif()
+
+# The navigation tree: no two entries of the same title, which a reader could not tell apart.
+file(READ "${HTML_DIR}/navtreedata.js" navtree)
+# Each entry is [ "title", "link", children ]; brackets would group CMake's list elements.
+string(REPLACE "[ \"" "@@" navtree "${navtree}")
+string(REPLACE "[" "" navtree "${navtree}")
+string(REPLACE "]" "" navtree "${navtree}")
+string(REGEX MATCHALL "@@[^\"]+" entries "${navtree}")
+set(seen "")
+set(repeated "")
+foreach(entry IN LISTS entries)
+  string(SUBSTRING "${entry}" 2 -1 title)
+  if(title IN_LIST seen AND NOT title IN_LIST repeated)
+    list(APPEND repeated "${title}")
+  endif()
+  list(APPEND seen "${title}")
+endforeach()
+if(repeated)
+  string(REPLACE ";" "', '" repeated "${repeated}")
+  message(FATAL_ERROR "The navigation tree has several entries titled '${repeated}' (${HTML_DIR}/navtreedata.js)")
 endif()
 
 file(READ "${WARN_LOG}" warnings)

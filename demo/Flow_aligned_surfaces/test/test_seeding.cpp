@@ -203,7 +203,7 @@ TEST(WritePolydataVTP, BinaryInlineCompressedWithActiveScalars)
   EXPECT_EQ(bytes.find("format=\"appended\""), std::string::npos);
   EXPECT_NE(bytes.find("format=\"binary\""), std::string::npos);
   EXPECT_EQ(bytes.find("format=\"ascii\""), std::string::npos);
-  EXPECT_FALSE(std::filesystem::exists(file + ".partial.vtp"));
+  EXPECT_FALSE(std::filesystem::exists(temporary_file("seeding_", "lines.partial.vtp")));
 
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
   reader->SetFileName(file.c_str());

@@ -1,9 +1,10 @@
-# Checks that the installed package works for an outside project:
-#   (1) cmake --install <PROJECT_BINARY_DIR> --prefix <WORK_DIR>/prefix
+# Checks that the package installed the header-only way works for an outside project:
+#   (1) cmake -S <PACKAGE_SOURCE_DIR> -B <WORK_DIR>/package (nothing built, ParaView found or not),
+#       then cmake --install <WORK_DIR>/package --prefix <WORK_DIR>/prefix
 #   (2) configure the consumer project with CMAKE_PREFIX_PATH=<prefix>
 #   (3) build it
 #   (4) run it (it returns nonzero when the alignment misses its flux)
-# Run as: cmake -DPROJECT_BINARY_DIR=... -DCONSUMER_SOURCE_DIR=... -DWORK_DIR=... -P run_consumer_test.cmake
+# Run as: cmake -DPACKAGE_SOURCE_DIR=... -DCONSUMER_SOURCE_DIR=... -DWORK_DIR=... -P run_consumer_test.cmake
 # Optional: -DCONSUMER_GENERATOR=..., -DCONSUMER_CXX_COMPILER=..., -DCONSUMER_BUILD_TYPE=...,
 #           -DEXPECT_CHOLMOD=ON|OFF (checks that the CHOLMOD usage requirement reached the consumer),
 #           -DEXPECT_ZLIB=ON|OFF (likewise for zlib: the consumer then reads a gzip NRRD file),
@@ -11,14 +12,13 @@
 #           ParaView's VTK, PARAVIEW_VTK_VERSION).
 cmake_minimum_required(VERSION 3.16)
 
-foreach(var IN ITEMS PROJECT_BINARY_DIR CONSUMER_SOURCE_DIR WORK_DIR)
+foreach(var IN ITEMS PACKAGE_SOURCE_DIR CONSUMER_SOURCE_DIR WORK_DIR)
   if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
     message(FATAL_ERROR "run_consumer_test.cmake: -D${var}=... is required")
   endif()
 endforeach()
-if(NOT EXISTS "${PROJECT_BINARY_DIR}/cmake_install.cmake")
-  message(FATAL_ERROR "run_consumer_test.cmake: ${PROJECT_BINARY_DIR} is not a configured build "
-                      "directory (no cmake_install.cmake)")
+if(NOT EXISTS "${PACKAGE_SOURCE_DIR}/CMakeLists.txt")
+  message(FATAL_ERROR "run_consumer_test.cmake: no CMakeLists.txt in ${PACKAGE_SOURCE_DIR}")
 endif()
 if(NOT EXISTS "${CONSUMER_SOURCE_DIR}/CMakeLists.txt")
   message(FATAL_ERROR "run_consumer_test.cmake: no CMakeLists.txt in ${CONSUMER_SOURCE_DIR}")
@@ -27,6 +27,7 @@ if(NOT CONSUMER_BUILD_TYPE)
   set(CONSUMER_BUILD_TYPE Release)
 endif()
 
+set(package "${WORK_DIR}/package")
 set(prefix "${WORK_DIR}/prefix")
 set(build "${WORK_DIR}/build")
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -45,8 +46,27 @@ function(run_step name)
   message(STATUS "consumer test: step '${name}' done")
 endfunction()
 
-# (1) Install.
-run_step("1/4 install" "${CMAKE_COMMAND}" --install "${PROJECT_BINARY_DIR}" --prefix "${prefix}")
+# The arguments of a configuration of `source` in `binary`, with the test's generator and compiler.
+function(configure_args variable source binary)
+  set(args -S "${source}" -B "${binary}" "-DCMAKE_BUILD_TYPE=${CONSUMER_BUILD_TYPE}")
+  if(CONSUMER_GENERATOR)
+    list(APPEND args -G "${CONSUMER_GENERATOR}")
+  endif()
+  if(CONSUMER_CXX_COMPILER)
+    list(APPEND args "-DCMAKE_CXX_COMPILER=${CONSUMER_CXX_COMPILER}")
+  endif()
+  set(${variable} ${args} PARENT_SCOPE)
+endfunction()
+
+# (1) Configure the package and install it without building anything.
+configure_args(package_args "${PACKAGE_SOURCE_DIR}" "${package}")
+run_step("1/4 configure the package" "${CMAKE_COMMAND}" ${package_args})
+run_step("1/4 install" "${CMAKE_COMMAND}" --install "${package}" --prefix "${prefix}")
+# A plugin that was not built is not installed (it installs, component paraview_plugin, once built).
+file(GLOB_RECURSE plugin_files "${prefix}/lib/*FlowAlignedSurfaces*")
+if(plugin_files)
+  message(FATAL_ERROR "consumer test: step '1/4 install' installed files of a plugin that was not built: ${plugin_files}")
+endif()
 foreach(file IN ITEMS
     include/CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h
     include/CGAL/Flow_aligned_surfaces/align_to_flow.h
@@ -60,15 +80,9 @@ foreach(file IN ITEMS
 endforeach()
 
 # (2) Configure: only the fresh prefix may provide the package (no package registry).
-set(configure_args -S "${CONSUMER_SOURCE_DIR}" -B "${build}"
-    "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_BUILD_TYPE=${CONSUMER_BUILD_TYPE}"
-    -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON)
-if(CONSUMER_GENERATOR)
-  list(APPEND configure_args -G "${CONSUMER_GENERATOR}")
-endif()
-if(CONSUMER_CXX_COMPILER)
-  list(APPEND configure_args "-DCMAKE_CXX_COMPILER=${CONSUMER_CXX_COMPILER}")
-endif()
+configure_args(configure_args "${CONSUMER_SOURCE_DIR}" "${build}")
+list(APPEND configure_args "-DCMAKE_PREFIX_PATH=${prefix}"
+     -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON)
 if(WITH_PARAVIEW_VTK)
   list(APPEND configure_args -DCONSUMER_WITH_PARAVIEW_VTK=ON)
 endif()

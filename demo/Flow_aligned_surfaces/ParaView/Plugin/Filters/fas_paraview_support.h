@@ -12,6 +12,7 @@
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 
 #include "fas_flow_input.h"
+#include "vtk_polydata_of_mesh.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
@@ -153,28 +154,11 @@ inline Velocity_field make_velocity_field(vtkDataSet* data_set, const Velocity_s
                                                       FAS::parameters::array_name(array_name)));
 }
 
-/// `tm` as polygonal data (points in vertex index order, one triangle per face).
+/// `tm` as polygonal data (points in vertex index order, one triangle per face), as the demo
+/// writes and renders its surfaces.
 inline vtkSmartPointer<vtkPolyData> to_polydata(const Mesh& tm)
 {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(vtkIdType(tm.number_of_vertices()));
-  for (Mesh::Vertex_index v : tm.vertices()) {
-    const Point& p = tm.point(v);
-    points->SetPoint(vtkIdType(v.idx()), p.x(), p.y(), p.z());
-  }
-  auto triangles = vtkSmartPointer<vtkCellArray>::New();
-  for (Mesh::Face_index f : tm.faces()) {
-    vtkIdType ids[3];
-    int i = 0;
-    for (Mesh::Vertex_index v : CGAL::vertices_around_face(tm.halfedge(f), tm))
-      ids[i++] = vtkIdType(v.idx());
-    triangles->InsertNextCell(3, ids);
-  }
-  auto polydata = vtkSmartPointer<vtkPolyData>::New();
-  polydata->SetPoints(points);
-  polydata->SetPolys(triangles);
-  return polydata;
+  return fas_demo::vtk_polydata_of_mesh(tm, tm.points(), get(CGAL::vertex_index, tm), get(CGAL::face_index, tm));
 }
 
 /// The triangles of `polydata` as a mesh (vertex i = point i).  \throws std::invalid_argument
