@@ -160,7 +160,7 @@ def solver_section(data):
 
 
 def limits_section(data):
-    """Issue 18: the bytes a solve streams against the bandwidth measured in the same run, and
+    """The bytes a solve streams against the bandwidth measured in the same run, and
     the rate on every core (use_parallelism) beside the single-threaded one."""
     m = data["machine"]
     bandwidth = m.get("read_bandwidth_gb_s_1_thread")
