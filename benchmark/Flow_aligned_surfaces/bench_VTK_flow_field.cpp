@@ -1,4 +1,4 @@
-// Issue 16: the cost of one query of VTK_flow_field_3 (VTK's vtkStaticCellLocator and cell
+// The cost of one query of VTK_flow_field_3 (VTK's vtkStaticCellLocator and cell
 // interpolation) beside the package's own fields on the same data, ../shared/data's CYLINDER:
 // the grid (vtkImageData against Regular_grid_flow_field_3) and the solver's cells
 // (vtkUnstructuredGrid against Unstructured_flow_field_3); random points in the grid's box, and

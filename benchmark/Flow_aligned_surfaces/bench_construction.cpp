@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Issue 18, item 2: the constructor of Flow_aligned_deformation as an outside program sees it.
+// The constructor of Flow_aligned_deformation as an outside program sees it.
 // An outside program builds one deformation, once, in a fresh process; bench_deformation builds
 // many in one long-lived process.  This program does what the outside program does, in a fresh
 // child process per size and case, and splits the constructor into its phases

@@ -494,7 +494,7 @@ std::vector<Solver_config> solver_configs()
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1>>>});
   configs.push_back({"supernodal_llt_double_corrections",
                      "supernodal_llt without the single-precision copy: the corrections swept in double "
-                     "(the default before stop 29)",
+                     "precision",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1, false, true>>>});
   configs.push_back({"supernodal_llt_metis", "the same with METIS's nested dissection at every size",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, CHOLMOD_METIS>>>});
@@ -506,7 +506,7 @@ std::vector<Solver_config> solver_configs()
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1, true>>>});
 #endif
   configs.push_back(
-      {"cholmod_simplicial_ldlt", "CHOLMOD simplicial LDL^T and its own solve (the former default), default ordering strategy",
+      {"cholmod_simplicial_ldlt", "CHOLMOD simplicial LDL^T and its own solve (the default's factor), default ordering strategy",
        measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Cholmod_simplicial, -1>>>});
   configs.push_back({"cholmod_supernodal", "CHOLMOD supernodal LL^T and its own solve, default ordering strategy",
                      measure_solver<CGAL::Eigen_solver_traits<Instrumented_cholmod<Supernodal, -1>>>});

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Issue 5: the heat-method distance of compute_geodesic_distance() beside CGAL's
+// The heat-method distance of compute_geodesic_distance() beside CGAL's
 // Heat_method_3::estimate_geodesic_distances() on the same meshes (the unit sphere, an
 // icosahedron refined by Loop subdivision and pushed onto the sphere), time of the whole call
 // and mean relative error against the great-circle distance; and the time of a tangential
@@ -12,7 +12,7 @@
 // parametrize_tangential() (no factorization, one back-substitution pair), against one step()
 // of the same deformation (GTRANSF + SOLVE).  Plain main(): prints one row per size.
 //
-// Then (issue 15, item 5) a second table on sphere caps (radius 2, polar angle up to 1.2, the disk
+// Then a second table on sphere caps (radius 2, polar angle up to 1.2, the disk
 // patch mapped by the inverse azimuthal equidistant projection, as in test_parametrize.cpp), plain
 // and with the interior vertices jittered by up to 0.3 of the edge length before the mapping
 // (triangles that are not Delaunay): the free compute_geodesic_distance(), intrinsic Delaunay (the

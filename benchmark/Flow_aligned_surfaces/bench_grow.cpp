@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Issue 4: one Flow_aligned_deformation::grow() — offset of the whole boundary, tessellation of
+// One Flow_aligned_deformation::grow() — offset of the whole boundary, tessellation of
 // the strip, placement in M_0, rebuilding the operators and refactoring L + W — on planar
 // patches of about 5e3 and 8e4 faces (targets: 20 ms and 300 ms).  The surface: a 1 x 1
 // patch (make_planar_patch) tilted by 0.3 rad from the sphere of the point source at the

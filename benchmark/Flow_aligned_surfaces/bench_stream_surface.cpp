@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Issue 6: integrate_stream_surface() beside VTK 9.1's vtkStreamSurface (iterative seeding,
+// integrate_stream_surface() beside VTK 9.1's vtkStreamSurface (iterative seeding,
 // RK45) in the same run, on the ABC flow with C = 0 sampled at 64^3 on [0, 2 pi]^3 (trilinear in
 // both), the same seed curve and the same arc length.  The seed curve lies on the level set
 // I = A cos z + B sin x = 0.5 of the first integral: x in [1, 2], y = 2 + 2 (x - 1),
@@ -14,10 +14,9 @@
 // normalized flux against the analytic field; and ours on the analytic field, for the drift of
 // the integration alone.  x_max, the largest x of a vertex, shows how far each surface got.
 //
-// Issue 15: ours also at tolerances 1e-12 (the floor: what the sampled field itself allows) and
-// at the stream lines' defaults 1e-8 / 1e-10 (the surfaces' defaults before issue 15), with the
-// ratio of each drift to the floor, the ratio of VTK's time to each, and the smallest triangle
-// angle.
+// Ours also at tolerances 1e-12 (the floor: what the sampled field itself allows) and at the
+// stream lines' defaults 1e-8 / 1e-10, with the ratio of each drift to the floor, the ratio of
+// VTK's time to each, and the smallest triangle angle.
 //
 // vtkStreamSurface with iterative seeding was seen to run to the domain's boundary whatever its
 // MaximumPropagation (the same surface for 2 and 6), so the default length, 6, takes ours there

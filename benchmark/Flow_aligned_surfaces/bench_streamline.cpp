@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Issue 6: integrate_streamline() beside VTK's vtkStreamTracer (RK45) in the same run.  The ABC
+// integrate_streamline() beside VTK's vtkStreamTracer (RK45) in the same run.  The ABC
 // flow with C = 0, v = (A sin z, B sin x + A cos z, B cos x), A = √3, B = √2, is sampled on a
 // 64³ grid over [0, 2π]³; VTK traces through a vtkImageData holding the very same float samples,
 // ours through Regular_grid_flow_field_3.  Same seeds (pseudo-random in [0.5, 2π - 0.5]³, fixed

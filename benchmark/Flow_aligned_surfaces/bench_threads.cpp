@@ -1,9 +1,9 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Issue 15, item 6: the constructor of a Flow_aligned_deformation (operators + one factorization)
+// The constructor of a Flow_aligned_deformation (operators + one factorization)
 // on a 2e4-face planar patch in the point source |v| = 1/r^2, with the default solver (CHOLMOD
-// simplicial LDL^T: no BLAS, no OpenMP) and with the former default (CHOLMOD's supernodal switch,
+// simplicial LDL^T: no BLAS, no OpenMP) and with CHOLMOD's own choice (its supernodal switch,
 // FAS::internal::Cholmod_auto_LDLT: OpenMP loops and the system's BLAS), alternating, in one run.
 // Prints the threads each kind left in the process (the default runs first, so that the
 // supernodal threads cannot be counted against it), and the median, min and max constructor
@@ -90,7 +90,7 @@ int main(int argc, char** argv)
     former.push_back(construct_ms<Former>(faces));
   }
   print("default (CHOLMOD simplicial)", ours, t1 - t0);
-  print("former default (CHOLMOD auto)", former, t2 - t1);
+  print("CHOLMOD auto (supernodal switch)", former, t2 - t1);
 #else
   print("default (Eigen SimplicialLDLT)", ours, t1 - t0);
 #endif

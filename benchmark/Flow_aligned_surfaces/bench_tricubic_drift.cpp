@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Issue 15, item 5: how much closer stream lines keep the first integral of a sampled flow on the
+// How much closer stream lines keep the first integral of a sampled flow on the
 // tricubic grid field than on the trilinear one, by flow and grid size.  Flows with closed-form
 // first integrals I: the ABC flow with C = 0 (I = A cos z + B sin x, A = √3, B = √2) over one
 // period [0, 2π]³ and over four [0, 8π]³; the cellular flow (sin x cos y, -cos x sin y, 0.3)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The Flow_aligned_surfaces developers.
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Prints the issue-3 tables from the files run_field_benchmarks.sh keeps in results/:
+"""Prints the field tables from the files run_field_benchmarks.sh keeps in results/:
 
     field_benchmarks_summary.py RESULTS_DIR
 

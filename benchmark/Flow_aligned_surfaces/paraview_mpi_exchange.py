@@ -1,4 +1,4 @@
-"""The cost per iteration of Flow-Aligned Surface's sample exchange under MPI (issue 16, item 4).
+"""The cost per iteration of Flow-Aligned Surface's sample exchange under MPI.
 
   mpiexec --allow-run-as-root --oversubscribe -n P pvbatch --mpi paraview_mpi_exchange.py \
       PLUGIN REFERENCE WORKDIR [FACES ...]

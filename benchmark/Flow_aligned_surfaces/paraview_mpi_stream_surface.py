@@ -1,4 +1,4 @@
-"""The cost of Stream Surface From Curve's sample exchanges under MPI (issue 16, item 4).
+"""The cost of Stream Surface From Curve's sample exchanges under MPI.
 
   pvbatch paraview_mpi_stream_surface.py PLUGIN REFERENCE WORKDIR                 (1 process)
   mpiexec --allow-run-as-root --oversubscribe -n P pvbatch --mpi paraview_mpi_stream_surface.py \

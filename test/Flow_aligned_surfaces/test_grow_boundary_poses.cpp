@@ -187,8 +187,9 @@ TEST(GrowBoundaryPoses, HarmonicSaddleEveryPoseModeAndDistance)
   expect_no_failures(sweep("harmonic saddle", saddle, saddle_center, saddle_normal));
 }
 
-// The case: the deformation itself grown across the flow at a pose where the flow runs
-// along the diagonal at two corners, then iterated again: it must reach the alignment again.
+// The case grow() exists for: the deformation itself grown across the flow at a pose where the
+// flow runs along the diagonal at two corners, then iterated again: it must reach the alignment
+// again.
 template <class Flow>
 void expect_reconverges(const Flow& flow, const Point& center, const Vector& normal, int pose, double fraction)
 {

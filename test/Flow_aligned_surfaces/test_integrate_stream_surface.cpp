@@ -211,8 +211,7 @@ TEST(IntegrateStreamSurface, ABCFlowWithoutCKeepsItsFirstIntegralAndHasNoFlux)
   const FAS::ABC_flow<K> abc(std::sqrt(3.), std::sqrt(2.), 0.);
   const Polyline seed = {Point_3(0.5, 0, 0.5), Point_3(1.0, 1.0, 0.7), Point_3(1.5, 2.0, 1.0)};
   // Time lines about h/5 apart (|v| is 1 to 2.2 here): the flux of the flat triangles is first
-  // order in their extent along the stream lines.  (Up to time 1: 100 time lines, where the
-  // former default of max_number_of_time_lines stopped the max_time(2.0) this test once gave.)
+  // order in their extent along the stream lines.  (Up to time 1: 100 time lines.)
   const Surface s(abc, seed,
                   FAS::parameters::front_spacing(
                       0.05, FAS::parameters::time_line_step(0.01, FAS::parameters::max_time(1.0))));

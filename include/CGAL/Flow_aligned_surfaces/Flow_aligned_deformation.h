@@ -841,7 +841,7 @@ private:
   // `add_term(j, term)` in face order.  Per face this is the same computation as one face at a
   // time (`transform_face()`: the same results, bit for bit).  By stages, the square roots and
   // divisions of neighbouring faces, whose latencies are most of GTRANSF face by face, overlap
-  // in the processor (about 25 % less time at 8e4 faces; RESULTS.md,
+  // in the processor (0.61 to 0.69 times the time face by face; RESULTS.md,
   // "Alignment iterations (Table 1)").
   template <class Matrix, class AddTerm>
   void transform_faces(const Matrix& x, std::size_t begin, std::size_t end, Face_pass& pass, AddTerm add_term)

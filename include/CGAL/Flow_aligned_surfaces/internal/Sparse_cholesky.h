@@ -40,13 +40,12 @@ namespace internal {
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
 /// Not the default (it may start threads, see the top of this file); kept for the benchmark's
 /// comparison.  CHOLMOD's LDL^T: factored the way CHOLMOD's own switch chooses (simplicial when
-/// flops / nnz(L) < 40, i.e. below about 5e3 faces; supernodal LL^T above, blocked BLAS-3 and 1.5
-/// to 2.4 times faster there), then left by `cholmod_factorize` as a simplicial LDL^T factor
-/// (`final_super = 0`, `final_ll = 0`) without the zeros of relaxed supernodal amalgamation
-/// (`final_resymbol = 1`).  So the factorization is the faster of the two at every size, and the
-/// back-substitutions, paid every iteration, are always CHOLMOD's simplicial ones, which sweep the
-/// three coordinate columns at once instead of making many small BLAS calls per supernode
-/// (1.6 to 2.8 times faster).  Measured in benchmark/Flow_aligned_surfaces/RESULTS.md,
+/// flops / nnz(L) < 40, i.e. below about 5e3 faces; supernodal LL^T above, blocked BLAS-3), then
+/// left by `cholmod_factorize` as a simplicial LDL^T factor (`final_super = 0`, `final_ll = 0`)
+/// without the zeros of relaxed supernodal amalgamation (`final_resymbol = 1`).  So the
+/// factorization is the one CHOLMOD expects to be faster, and the back-substitutions, paid every
+/// iteration, are always CHOLMOD's simplicial ones, which sweep the three coordinate columns at
+/// once instead of making many small BLAS calls per supernode (1.4 to 3.8 times faster).  Measured in benchmark/Flow_aligned_surfaces/RESULTS.md,
 /// "The solver".
 template <class MatrixType>
 class Cholmod_auto_LDLT : public Eigen::CholmodBase<MatrixType, Eigen::Lower, Cholmod_auto_LDLT<MatrixType>> {

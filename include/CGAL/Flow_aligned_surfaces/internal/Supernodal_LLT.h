@@ -68,8 +68,8 @@ public:
 
   /// Makes the next analyses use the CHOLMOD ordering `ordering` (CHOLMOD_AMD, CHOLMOD_METIS,
   /// CHOLMOD_NESDIS, ...) only, or CHOLMOD's default strategy when it is negative (the default:
-  /// AMD on these meshes).  METIS's nested dissection gives 2 to 10 % fewer nonzeros on the
-  /// patches of the benchmark but no faster solve, and its analysis costs 15 times AMD's
+  /// AMD on these meshes).  METIS's nested dissection gives up to 9 % fewer nonzeros on the
+  /// patches of the benchmark but no faster solve, and its analysis costs up to 18 times AMD's
   /// (benchmark/Flow_aligned_surfaces/RESULTS.md, "The solver").
   void use_ordering(int ordering) { m_ordering = ordering; }
 
@@ -126,9 +126,9 @@ public:
   /// From this many nonzeros of the factor on (by default), solve() sweeps the supernodes;
   /// below, CHOLMOD's own simplicial solve is used.  Sweeping CHOLMOD's factor in place copies
   /// only the row lists (5 MB instead of 63 MB at 3.2e5 faces), but the sweeps are no faster
-  /// than CHOLMOD's solve below about 1e5 faces: 25 to 35 % slower at 5e3 and 2e4 faces (the
+  /// than CHOLMOD's solve below about 1e5 faces: 22 to 36 % slower at 5e3 and 2e4 faces (the
   /// factor in the caches, CHOLMOD's kernel does less per entry), as fast within the noise at 8e4
-  /// (1.5e6 nonzeros), 0 to 30 % faster at 3.2e5 (7e6 nonzeros); so from about 1.5e5 faces on
+  /// (1.5e6 nonzeros), up to 15 % faster at 3.2e5 (7e6 nonzeros); so from about 1.5e5 faces on
   /// (benchmark/Flow_aligned_surfaces/RESULTS.md, "The solver").  The choice does not
   /// depend on `use_parallelism()`, so that the solutions do not either.
   static constexpr double default_smallest_swept_factor = 3e6;
