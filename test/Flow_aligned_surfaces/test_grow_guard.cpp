@@ -1,4 +1,4 @@
-// The two pieces of the guard of grow_boundary() (check_grown_surface() in grow_boundary.h)
+// The two pieces of the guard of grow_boundary() (internal/grow_boundary/check_grown_surface.h)
 // against independent answers: Box_cell_index finds exactly the boxes a brute-force overlap
 // test finds, each once; faces_cross() says of every pair of faces of crumpled meshes what
 // CGAL's Polygon_mesh_processing::self_intersections() says of them.
