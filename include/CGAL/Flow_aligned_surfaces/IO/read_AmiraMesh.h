@@ -43,7 +43,7 @@ namespace internal {
 
 // One data declaration `Location { type[components] name } @section(encoding,size)`.
 struct AmiraMesh_data {
-  Flow_aligned_surfaces::IO::internal::Grid_array array; // located by the data section
+  Grid_array array;                                  // located by the data section
   std::string location, type_name, encoding;         // encoding: empty (raw), HxByteRLE, HxZip, ...
   std::size_t section = 0, compressed_size = 0;
   std::size_t declaration_offset = 0, declaration_line = 0;
@@ -51,10 +51,6 @@ struct AmiraMesh_data {
 };
 
 class AmiraMesh_parser {
-  typedef Flow_aligned_surfaces::IO::internal::Binary_type Binary_type;
-  typedef Flow_aligned_surfaces::IO::internal::Byte_order Byte_order;
-  typedef Flow_aligned_surfaces::IO::internal::Text_cursor Text_cursor;
-
 public:
   AmiraMesh_parser(const std::string& filename, std::string_view contents)
       : in("read_AmiraMesh_flow_field", filename, contents)
@@ -117,8 +113,7 @@ private:
         format = std::string(w);
     if (!known || format.empty())
       in.fail_at(0, 1,
-                 "not an AmiraMesh file: the first line is '" +
-                     Flow_aligned_surfaces::IO::internal::printable(l) +
+                 "not an AmiraMesh file: the first line is '" + printable(l) +
                      "'; expected '# AmiraMesh BINARY-LITTLE-ENDIAN 2.1', '# AmiraMesh 3D BINARY 2.0', "
                      "'# AmiraMesh 3D ASCII 2.0' or the same with Avizo");
     ascii = format == "ASCII";
@@ -183,8 +178,7 @@ private:
             ++in.pos;
           if (in.at_end() || b[in.pos] != ')')
             in.fail_at(t.offset, t.line,
-                       "the section reference '" +
-                           Flow_aligned_surfaces::IO::internal::printable(b.substr(t.offset, in.pos - t.offset)) +
+                       "the section reference '" + printable(b.substr(t.offset, in.pos - t.offset)) +
                            "' has no closing ')'");
           ++in.pos;
         }
@@ -221,8 +215,7 @@ private:
 
   static std::string shown(const Token& t)
   {
-    return t.kind == 0 ? std::string("the end of the header")
-                       : "'" + Flow_aligned_surfaces::IO::internal::printable(t.text) + "'";
+    return t.kind == 0 ? std::string("the end of the header") : "'" + printable(t.text) + "'";
   }
 
   Token expect(char kind, const std::string& what)
@@ -385,8 +378,7 @@ private:
     }
     d.type_name = std::string(tn);
     if (!binary_type(d.type_name, d.array.type))
-      fail_at(type, "unknown data type '" + Flow_aligned_surfaces::IO::internal::printable(tn) + "' of '" +
-                        d.array.name +
+      fail_at(type, "unknown data type '" + printable(tn) + "' of '" + d.array.name +
                         "'; expected byte, sbyte, short, ushort, int, uint, int64, uint64, float or double");
 
     // @N(encoding,size)
@@ -444,8 +436,7 @@ private:
                     ": a grid needs at least 2 nodes along each axis (empty, 1D and 2D lattices are not "
                     "supported)");
     if (m_coord_type_token.kind != 0 && m_coord_type != "uniform")
-      fail_at(m_coord_type_token, "CoordType \"" +
-                                      Flow_aligned_surfaces::IO::internal::printable(m_coord_type) +
+      fail_at(m_coord_type_token, "CoordType \"" + printable(m_coord_type) +
                                       "\" is not supported; this reader reads uniform lattices "
                                       "(CoordType \"uniform\")");
     if (!m_have_bounding_box)
@@ -482,7 +473,7 @@ private:
                                        .find_first_not_of(" \t") == std::string_view::npos;
       if (l.empty() || l[0] != '@' || !blank_after)
         in.fail_at(marker, marker_line,
-                   "found '" + Flow_aligned_surfaces::IO::internal::printable(l) +
+                   "found '" + printable(l) +
                        "' where a data section marker '@N' alone on its line was expected (wrong sizes in "
                        "the header?)");
       AmiraMesh_data* d = nullptr;
@@ -511,7 +502,7 @@ private:
                  "the data '" + d.array.name + "' have too many values (" + std::to_string(d.array.tuples) +
                      " x " + std::to_string(d.array.components) + ")");
     const std::size_t count = d.array.tuples * d.array.components; // < max / 64
-    const std::size_t size = Flow_aligned_surfaces::IO::internal::binary_type_size(d.array.type);
+    const std::size_t size = binary_type_size(d.array.type);
     const std::size_t left = in.left();
     const std::string what = "data section @" + std::to_string(d.section) + " ('" + d.array.name + "', " +
                              std::to_string(d.array.tuples) + " x " + d.type_name + "[" +
@@ -565,8 +556,7 @@ private:
 
 // Expands HxByteRLE data (a control byte c: c < 128 = the next byte c times; c ≥ 128 = the
 // next c − 128 bytes as they are) into exactly `expected` bytes.
-inline std::string expand_HxByteRLE(const Flow_aligned_surfaces::IO::internal::Text_cursor& in,
-                                    const AmiraMesh_data& d, std::size_t expected)
+inline std::string expand_HxByteRLE(const Text_cursor& in, const AmiraMesh_data& d, std::size_t expected)
 {
   // Each pair of input bytes gives at most 127 output bytes: a larger claim is a lying header.
   if (expected / 127 > d.compressed_size)
@@ -603,10 +593,10 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
                                                  const std::optional<std::string>& array_name,
                                                  const std::optional<std::string>& mask_name)
 {
-  const Flow_aligned_surfaces::IO::internal::File_contents contents(filename, "read_AmiraMesh_flow_field");
+  const File_contents contents(filename, "read_AmiraMesh_flow_field");
   AmiraMesh_parser parser(filename, contents.view());
   parser.parse();
-  const Flow_aligned_surfaces::IO::internal::Text_cursor& in = parser.in;
+  const Text_cursor& in = parser.in;
 
   const AmiraMesh_data* velocity = nullptr;
   const AmiraMesh_data* mask = nullptr;
@@ -636,7 +626,7 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
 
   // The chosen fields' data, expanded if compressed.
   std::string expanded[2];
-  Flow_aligned_surfaces::IO::internal::Grid_array arrays[2];
+  Grid_array arrays[2];
   const AmiraMesh_data* chosen[2] = {velocity, mask};
   for (int c = 0; c < 2; ++c) {
     const AmiraMesh_data* d = chosen[c];
@@ -648,20 +638,19 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
     arrays[c] = d->array;
     if (d->encoding.empty())
       continue;
-    const std::size_t bytes = d->array.tuples * d->array.components *
-                              Flow_aligned_surfaces::IO::internal::binary_type_size(d->array.type);
+    const std::size_t bytes = d->array.tuples * d->array.components * binary_type_size(d->array.type);
     if (d->encoding == "HxByteRLE")
       expanded[c] = expand_HxByteRLE(in, *d, bytes);
-    else if (d->encoding == "HxZip" && Flow_aligned_surfaces::IO::internal::have_inflate()) {
-      const std::string why = Flow_aligned_surfaces::IO::internal::inflate_bytes(
-          in.bytes().substr(d->array.begin, d->compressed_size), bytes, expanded[c]);
+    else if (d->encoding == "HxZip" && have_inflate()) {
+      const std::string why =
+          inflate_bytes(in.bytes().substr(d->array.begin, d->compressed_size), bytes, expanded[c]);
       if (!why.empty())
         in.fail_at(d->array.begin, 0, "the HxZip data of '" + d->array.name + "': " + why);
     }
     else
       in.fail_at(d->array.begin, 0,
-                 "the data of '" + d->array.name + "' are compressed with " +
-                     Flow_aligned_surfaces::IO::internal::printable(d->encoding) + ", which is not supported " +
+                 "the data of '" + d->array.name + "' are compressed with " + printable(d->encoding) +
+                     ", which is not supported " +
                      (d->encoding == "HxZip"
                           ? "by this build (it needs zlib: define CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB "
                             "and link zlib)"
@@ -671,8 +660,8 @@ Regular_grid_flow_field_3<K> read_AmiraMesh_grid(const std::string& filename,
     arrays[c].begin = 0;
     arrays[c].file_offset = d->array.begin;
   }
-  return Flow_aligned_surfaces::IO::internal::make_grid_field<K>(
-      in, parser.dimensions, parser.origin, parser.spacing, arrays[0], mask ? &arrays[1] : nullptr);
+  return make_grid_field<K>(in, parser.dimensions, parser.origin, parser.spacing, arrays[0],
+                            mask ? &arrays[1] : nullptr);
 }
 
 } // namespace internal
@@ -744,10 +733,9 @@ bool read_AmiraMesh_flow_field(const std::string& filename, Regular_grid_flow_fi
                                const NamedParameters& np = CGAL::parameters::default_values(),
                                std::string* error = nullptr)
 {
-  const Flow_aligned_surfaces::IO::internal::Array_names names =
-      Flow_aligned_surfaces::IO::internal::array_names(np);
-  return Flow_aligned_surfaces::IO::internal::read_into(
-      "read_AmiraMesh_flow_field", filename, field, error, Flow_aligned_surfaces::IO::internal::reads_in_parallel(np),
+  const internal::Array_names names = internal::array_names(np);
+  return internal::read_into(
+      "read_AmiraMesh_flow_field", filename, field, error, internal::reads_in_parallel(np),
       [&] { return internal::read_AmiraMesh_grid<K>(filename, names.array, names.mask); });
 }
 

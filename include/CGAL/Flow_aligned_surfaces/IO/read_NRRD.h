@@ -41,10 +41,6 @@ namespace IO {
 namespace internal {
 
 class NRRD_header {
-  typedef Flow_aligned_surfaces::IO::internal::Binary_type Binary_type;
-  typedef Flow_aligned_surfaces::IO::internal::Byte_order Byte_order;
-  typedef Flow_aligned_surfaces::IO::internal::Text_cursor Text_cursor;
-
 public:
   NRRD_header(const std::string& filename, std::string_view contents)
       : in("read_NRRD_flow_field", filename, contents)
@@ -66,7 +62,7 @@ public:
     const std::string_view magic = in.read_line();
     if (magic.size() != 8 || magic.substr(0, 7) != "NRRD000" || magic[7] < '1' || magic[7] > '5')
       in.fail_at(0, 1,
-                 "not a NRRD file: the first line is '" + Flow_aligned_surfaces::IO::internal::printable(magic) +
+                 "not a NRRD file: the first line is '" + printable(magic) +
                      "'; expected NRRD0001 to NRRD0005");
     bool have_type = false, have_dimension = false, have_sizes = false;
     std::size_t sizes_line = 0;
@@ -82,7 +78,7 @@ public:
       const std::size_t colon = l.find(": ");
       if (colon == std::string_view::npos)
         in.fail_at(start, line,
-                   "'" + Flow_aligned_surfaces::IO::internal::printable(l) +
+                   "'" + printable(l) +
                        "' is neither a field 'name: value', a 'key:=value' pair nor a comment");
       const std::string field(l.substr(0, colon));
       Text_cursor value("read_NRRD_flow_field", in.file(), l.substr(colon + 2));
@@ -92,7 +88,7 @@ public:
       if (field == "type") {
         type_name = trim(rest);
         if (!binary_type(type_name, type))
-          fail("unknown or unsupported type '" + Flow_aligned_surfaces::IO::internal::printable(type_name) +
+          fail("unknown or unsupported type '" + printable(type_name) +
                "'; expected one of the numeric types (int8 ... uint64, float, double and their synonyms)");
         have_type = true;
       }
@@ -129,8 +125,7 @@ public:
       else if (field == "space directions") {
         const std::string_view first = value.token();
         if (first != "none")
-          fail("the first direction is '" + Flow_aligned_surfaces::IO::internal::printable(first) +
-               "'; expected 'none' for the vector axis");
+          fail("the first direction is '" + printable(first) + "'; expected 'none' for the vector axis");
         for (int a = 0; a < 3; ++a) {
           const std::array<double, 3> d =
               vector(value, fail, "the direction of axis " + std::to_string(a + 1));
@@ -160,8 +155,7 @@ public:
         for (int a = 0; a < 3; ++a) {
           const std::string k = Text_cursor::lower(value.token());
           if (k != "domain" && k != "space" && k != "???" && k != "none")
-            fail("axis " + std::to_string(a + 1) + " is of kind '" +
-                 Flow_aligned_surfaces::IO::internal::printable(k) +
+            fail("axis " + std::to_string(a + 1) + " is of kind '" + printable(k) +
                  "'; expected domain (the vector axis first, then x, y, z)");
         }
       }
@@ -172,8 +166,7 @@ public:
         else if (e == "big")
           order = Byte_order::BIG_ENDIAN_ORDER;
         else
-          fail("unknown endian '" + Flow_aligned_surfaces::IO::internal::printable(e) +
-               "'; expected little or big");
+          fail("unknown endian '" + printable(e) + "'; expected little or big");
       }
       else if (field == "encoding") {
         encoding = Text_cursor::lower(trim(rest));
@@ -181,21 +174,20 @@ public:
           encoding = "ascii";
         if (encoding == "gz")
           encoding = "gzip";
-        if (encoding == "gzip" && !Flow_aligned_surfaces::IO::internal::have_inflate())
+        if (encoding == "gzip" && !have_inflate())
           fail("encoding gzip is not supported by this build (it needs zlib: define "
                "CGAL_FLOW_ALIGNED_SURFACES_USE_ZLIB and link zlib); decompress the data first");
         if (encoding == "bzip2" || encoding == "bz2" || encoding == "hex")
           fail("encoding " + encoding +
                " is not supported; expected raw, ascii or gzip (decompress the data first)");
         if (encoding != "raw" && encoding != "ascii" && encoding != "gzip")
-          fail("unknown encoding '" + Flow_aligned_surfaces::IO::internal::printable(encoding) +
-               "'; expected raw, ascii or gzip");
+          fail("unknown encoding '" + printable(encoding) + "'; expected raw, ascii or gzip");
       }
       else if (field == "byte skip") {
         const std::string s = trim(rest);
         const auto r = std::from_chars(s.data(), s.data() + s.size(), byte_skip);
         if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || byte_skip < -1)
-          fail("'" + Flow_aligned_surfaces::IO::internal::printable(s) + "' is not a byte count (or -1)");
+          fail("'" + printable(s) + "' is not a byte count (or -1)");
       }
       else if (field == "line skip") {
         line_skip = integer(value, fail, "the number of lines to skip");
@@ -204,7 +196,7 @@ public:
         data_file = trim(rest);
         if (data_file.rfind("LIST", 0) == 0 || data_file.find('%') != std::string::npos ||
             data_file.find(' ') != std::string::npos)
-          fail("'" + Flow_aligned_surfaces::IO::internal::printable(data_file) +
+          fail("'" + printable(data_file) +
                "': data split over several files are not supported; expected one file name");
       }
       else if (field == "content") {
@@ -231,7 +223,7 @@ public:
         in.fail_at(0, sizes_line, "sizes 3 " + dimensions_string() + " has too many nodes");
       nodes *= dimensions[a];
     }
-    if (encoding != "ascii" && !order && Flow_aligned_surfaces::IO::internal::binary_type_size(type) > 1)
+    if (encoding != "ascii" && !order && binary_type_size(type) > 1)
       in.fail_file("the header has no 'endian' field (little or big), needed for " + encoding + " " +
                    type_name + " data");
     if (byte_skip == -1 && encoding != "raw")
@@ -263,8 +255,7 @@ private:
     std::size_t v = 0;
     const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
     if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size())
-      fail("'" + Flow_aligned_surfaces::IO::internal::printable(t) + "' is not a non-negative integer (" + what +
-           ")");
+      fail("'" + printable(t) + "' is not a non-negative integer (" + what + ")");
     return v;
   }
 
@@ -274,7 +265,7 @@ private:
     const std::string_view t = value.token();
     double v = 0;
     if (!Text_cursor::parse_number(t, v) || !std::isfinite(v))
-      fail("'" + Flow_aligned_surfaces::IO::internal::printable(t) + "' is not a finite number (" + what + ")");
+      fail("'" + printable(t) + "' is not a finite number (" + what + ")");
     return v;
   }
 
@@ -287,19 +278,17 @@ private:
     const std::size_t open = value.pos;
     const std::size_t close = b.find(')', open);
     if (open >= b.size() || b[open] != '(' || close == std::string_view::npos)
-      fail("expected " + what + " as (x,y,z), found '" +
-           Flow_aligned_surfaces::IO::internal::printable(b.substr(std::min(open, b.size()))) + "'");
+      fail("expected " + what + " as (x,y,z), found '" + printable(b.substr(std::min(open, b.size()))) + "'");
     std::array<double, 3> v = {{0, 0, 0}};
     std::string_view inside = b.substr(open + 1, close - open - 1);
     for (int c = 0; c < 3; ++c) {
       const std::size_t comma = inside.find(',');
       if ((c < 2) == (comma == std::string_view::npos))
-        fail(what + " '" + Flow_aligned_surfaces::IO::internal::printable(b.substr(open, close + 1 - open)) +
+        fail(what + " '" + printable(b.substr(open, close + 1 - open)) +
              "' does not have 3 components; only 3D spaces are supported");
       const std::string t = trim(inside.substr(0, comma));
       if (!Text_cursor::parse_number(t, v[c]) || !std::isfinite(v[c]))
-        fail("'" + Flow_aligned_surfaces::IO::internal::printable(t) + "' is not a finite number (in " + what +
-             ")");
+        fail("'" + printable(t) + "' is not a finite number (in " + what + ")");
       inside = comma == std::string_view::npos ? std::string_view() : inside.substr(comma + 1);
     }
     value.pos = close + 1;
@@ -311,7 +300,7 @@ private:
   {
     const std::string_view t = value.token();
     if (!t.empty())
-      fail("unexpected '" + Flow_aligned_surfaces::IO::internal::printable(t) + "' after " + expected);
+      fail("unexpected '" + printable(t) + "' after " + expected);
   }
 
   static bool binary_type(const std::string& t, Binary_type& type)
@@ -378,8 +367,7 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
                                             const std::optional<std::string>& array_name,
                                             const std::optional<std::string>& mask_name)
 {
-  namespace I = Flow_aligned_surfaces::IO::internal;
-  const I::File_contents file(filename, "read_NRRD_flow_field");
+  const File_contents file(filename, "read_NRRD_flow_field");
   const std::string_view contents = file.view();
   NRRD_header header(filename, contents);
   header.parse();
@@ -387,11 +375,11 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
     header.in.fail_file("NRRD files hold one array, so there is no mask '" + *mask_name +
                         "' to read (do not give mask_array_name)");
   if (array_name && !header.content.empty() && header.content != *array_name)
-    header.in.fail_file("the array is named '" + I::printable(header.content) +
-                        "' (its content field), not '" + *array_name + "'");
+    header.in.fail_file("the array is named '" + printable(header.content) + "' (its content field), not '" +
+                        *array_name + "'");
 
   // The data: attached after the header, or in the data file (relative to the header's folder).
-  std::optional<I::File_contents> detached;
+  std::optional<File_contents> detached;
   std::string data_name = filename;
   std::size_t pos = header.data_start, line = header.data_line;
   if (!header.data_file.empty()) {
@@ -404,8 +392,8 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
     header.in.fail_file("the file ends after the header: no data attached (and no 'data file' field)");
   const std::string_view bytes = detached ? detached->view() : contents;
   // Messages about the data name both files.
-  I::Text_cursor data("read_NRRD_flow_field",
-                      header.data_file.empty() ? filename : filename + ": data file " + data_name, bytes);
+  Text_cursor data("read_NRRD_flow_field",
+                   header.data_file.empty() ? filename : filename + ": data file " + data_name, bytes);
   data.pos = pos;
   data.line = line;
   for (std::size_t l = 0; l < header.line_skip; ++l) {
@@ -415,28 +403,28 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
     data.read_line();
   }
 
-  I::Grid_array velocity;
+  Grid_array velocity;
   velocity.name = header.content.empty() ? std::string("velocity") : header.content;
   velocity.type = header.type;
   velocity.components = 3;
   velocity.tuples = header.nodes;
   velocity.ascii = header.encoding == "ascii";
-  velocity.order = header.order.value_or(I::Byte_order::LITTLE_ENDIAN_ORDER);
+  velocity.order = header.order.value_or(Byte_order::LITTLE_ENDIAN_ORDER);
   velocity.bytes = bytes;
-  const std::size_t count = 3 * header.nodes, size = I::binary_type_size(header.type);
+  const std::size_t count = 3 * header.nodes, size = binary_type_size(header.type);
   const std::string what = "the " + std::to_string(count) + " " + header.type_name + " values (sizes: 3 " +
                            header.dimensions_string() + ")";
   std::string inflated;
   if (header.encoding == "gzip") {
     // 'byte skip' counts decompressed bytes.
     const std::size_t skip = static_cast<std::size_t>(header.byte_skip);
-    const std::string why = I::inflate_bytes(bytes.substr(data.pos), count * size + skip, inflated);
+    const std::string why = inflate_bytes(bytes.substr(data.pos), count * size + skip, inflated);
     if (!why.empty())
       data.fail("the gzip data of " + what + ": " + why);
     velocity.bytes = inflated;
     velocity.begin = skip;
     velocity.file_offset = data.pos;
-    return I::make_grid_field<K>(data, header.dimensions, header.origin, header.spacing, velocity, nullptr);
+    return make_grid_field<K>(data, header.dimensions, header.origin, header.spacing, velocity, nullptr);
   }
   if (velocity.ascii) {
     if (static_cast<std::size_t>(header.byte_skip) > data.left())
@@ -464,7 +452,7 @@ Regular_grid_flow_field_3<K> read_NRRD_grid(const std::string& filename,
     data.line = 0;
   }
   velocity.begin = data.pos;
-  return I::make_grid_field<K>(data, header.dimensions, header.origin, header.spacing, velocity, nullptr);
+  return make_grid_field<K>(data, header.dimensions, header.origin, header.spacing, velocity, nullptr);
 }
 
 } // namespace internal
@@ -551,12 +539,9 @@ bool read_NRRD_flow_field(const std::string& filename, Regular_grid_flow_field_3
                           const NamedParameters& np = CGAL::parameters::default_values(),
                           std::string* error = nullptr)
 {
-  const Flow_aligned_surfaces::IO::internal::Array_names names =
-      Flow_aligned_surfaces::IO::internal::array_names(np);
-  return Flow_aligned_surfaces::IO::internal::read_into("read_NRRD_flow_field", filename, field, error,
-      Flow_aligned_surfaces::IO::internal::reads_in_parallel(np), [&] {
-    return internal::read_NRRD_grid<K>(filename, names.array, names.mask);
-  });
+  const internal::Array_names names = internal::array_names(np);
+  return internal::read_into("read_NRRD_flow_field", filename, field, error, internal::reads_in_parallel(np),
+                             [&] { return internal::read_NRRD_grid<K>(filename, names.array, names.mask); });
 }
 
 /*!

@@ -193,7 +193,7 @@ bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field
       *error = "read_flow_field: " + filename + ": the file is empty (0 bytes)";
     else
       *error = "read_flow_field: " + filename + ": unknown file format (it starts with '" +
-               Flow_aligned_surfaces::IO::internal::printable(head.substr(0, 24)) +
+               internal::printable(head.substr(0, 24)) +
                "'); expected a legacy VTK file ('# vtk DataFile'), a VTK XML file ('<VTKFile'), an "
                "AmiraMesh file ('# AmiraMesh') or a NRRD file ('NRRD000x')";
   }

@@ -170,34 +170,32 @@ bool write_VTP(const std::string& filename, const TriangleMesh& tm,
   for (auto f : faces(tm))
     ordered_faces[get(fim, f)] = f;
 
-  const bool written =
-      Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
-        os.precision(precision);
-        internal::write_VTP_head(os, nv, 0, nf);
-        for (auto v : ordered_vertices) {
-          const auto& p = get(vpm, v);
-          os << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z())
-             << '\n';
-        }
-        os << "        </DataArray>\n      </Points>\n      <Polys>\n"
-           << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-        std::vector<std::size_t> offsets;
-        offsets.reserve(nf);
-        std::size_t offset = 0;
-        for (auto f : ordered_faces) {
-          for (auto v : vertices_around_face(halfedge(f, tm), tm)) {
-            os << get(vim, v) << ' ';
-            ++offset;
-          }
-          os << '\n';
-          offsets.push_back(offset);
-        }
-        os << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-        for (std::size_t o : offsets)
-          os << o << '\n';
-        os << "        </DataArray>\n      </Polys>\n";
-        internal::write_VTP_tail(os, point_data, cell_data);
-      });
+  const bool written = internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+    os.precision(precision);
+    internal::write_VTP_head(os, nv, 0, nf);
+    for (auto v : ordered_vertices) {
+      const auto& p = get(vpm, v);
+      os << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z()) << '\n';
+    }
+    os << "        </DataArray>\n      </Points>\n      <Polys>\n"
+       << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    std::vector<std::size_t> offsets;
+    offsets.reserve(nf);
+    std::size_t offset = 0;
+    for (auto f : ordered_faces) {
+      for (auto v : vertices_around_face(halfedge(f, tm), tm)) {
+        os << get(vim, v) << ' ';
+        ++offset;
+      }
+      os << '\n';
+      offsets.push_back(offset);
+    }
+    os << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (std::size_t o : offsets)
+      os << o << '\n';
+    os << "        </DataArray>\n      </Polys>\n";
+    internal::write_VTP_tail(os, point_data, cell_data);
+  });
   return written ? true : fail(reason);
 }
 
@@ -235,7 +233,7 @@ bool write_VTP_polylines(const std::string& filename, const std::vector<Polyline
   std::string reason;
   const bool written =
       internal::check_VTP_array_sizes(point_data, np, cell_data, polylines.size(), reason) &&
-      Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+      internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
         os.precision(precision);
         internal::write_VTP_head(os, np, polylines.size(), 0);
         for (const Polyline& line : polylines)

@@ -157,7 +157,7 @@ bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_f
 
   std::string reason;
   const bool written =
-      Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+      internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
         os.precision(17);
         os << "# vtk DataFile Version 3.0\n"
            << "flow field written by CGAL Flow_aligned_surfaces\n"
@@ -302,7 +302,7 @@ bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_f
 
   std::string reason;
   const bool written =
-      Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+      internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
         os.precision(17);
         const std::string extent = "0 " + std::to_string(n[0] - 1) + " 0 " + std::to_string(n[1] - 1) +
                                    " 0 " + std::to_string(n[2] - 1);

@@ -102,14 +102,14 @@ bool write_textured_OBJ(const std::string& filename, const TriangleMesh& tm, UVM
   }
 
   std::string reason;
-  if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(mtl.string(), reason, [&](std::ostream& os) {
+  if (!internal::write_file_atomically(mtl.string(), reason, [&](std::ostream& os) {
         os << mtl_first_line << "\nnewmtl flow_texture\n"
            << "Ka 1 1 1\nKd 1 1 1\nKs 0 0 0\nillum 1\nmap_Kd " << png.filename().string() << "\n";
       }))
     return fail(mtl.string() + ": " + reason);
 
   const auto ordered_vertices = Flow_aligned_surfaces::internal::vertices_in_index_order(tm, vim);
-  if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(obj.string(), reason, [&](std::ostream& os) {
+  if (!internal::write_file_atomically(obj.string(), reason, [&](std::ostream& os) {
         os.precision(precision);
         os << "mtllib " << mtl.filename().string() << "\n";
         for (auto v : ordered_vertices) {

@@ -50,13 +50,9 @@ struct VTK_legacy_array {
   bool point_data = true;
 };
 
-// Thrown inside the reader only; read_VTK_flow_field() turns it into `false` + message.
-typedef Flow_aligned_surfaces::IO::internal::Read_error VTK_legacy_error;
-using Flow_aligned_surfaces::IO::internal::printable;
-
 class VTK_legacy_parser {
 public:
-  VTK_legacy_parser(const std::string& filename, Flow_aligned_surfaces::IO::internal::File_contents contents)
+  VTK_legacy_parser(const std::string& filename, File_contents contents)
       : m_contents(std::move(contents)), m_in("read_VTK_flow_field", filename, m_contents.view())
   {
   }
@@ -350,7 +346,7 @@ public:
   {
     if (dataset == "UNSTRUCTURED_GRID")
       return "point " + std::to_string(node);
-    return "node " + Flow_aligned_surfaces::IO::internal::grid_node_string(dimensions, node);
+    return "node " + grid_node_string(dimensions, node);
   }
 
   // The field types that read a dataset type, or null for the types no field reads.
@@ -398,8 +394,7 @@ public:
       for (std::size_t i0 = 0; i0 < count; i0 += block_size) {
         const std::size_t m = count - i0 < block_size ? count - i0 : block_size;
         // Big-endian, as VTK's legacy writer writes, whatever the host.
-        Flow_aligned_surfaces::IO::internal::decode_binary_numbers(
-            type, Flow_aligned_surfaces::IO::internal::Byte_order::BIG_ENDIAN_ORDER, data + pos, m, block);
+        decode_binary_numbers(type, Byte_order::BIG_ENDIAN_ORDER, data + pos, m, block);
         for (std::size_t j = 0; j < m; ++j, pos += size)
           out(i0 + j, block[j], pos, 0);
       }
@@ -418,10 +413,9 @@ public:
   // begin + i * size of the file.
   struct Binary_values {
     const unsigned char* data;
-    Flow_aligned_surfaces::IO::internal::Binary_type type;
+    Binary_type type;
     std::size_t size, begin;
-    static constexpr Flow_aligned_surfaces::IO::internal::Byte_order order =
-        Flow_aligned_surfaces::IO::internal::Byte_order::BIG_ENDIAN_ORDER;
+    static constexpr Byte_order order = Byte_order::BIG_ENDIAN_ORDER;
   };
   Binary_values binary_values(const VTK_legacy_array& a) const
   {
@@ -436,7 +430,6 @@ public:
   }
 
 private:
-  typedef Flow_aligned_surfaces::IO::internal::Text_cursor Text_cursor;
   static std::string upper(std::string_view s)
   {
     return Text_cursor::upper(s);
@@ -625,7 +618,6 @@ private:
   }
 
   // The binary decodings, chosen once per array rather than once per value.
-  typedef Flow_aligned_surfaces::IO::internal::Binary_type Binary_type;
 
   static Binary_type binary_type(const std::string& type)
   {
@@ -650,7 +642,7 @@ private:
     return Binary_type::INT64;
   }
 
-  Flow_aligned_surfaces::IO::internal::File_contents m_contents;
+  File_contents m_contents;
   Text_cursor m_in; // reads m_contents.view()
   std::size_t m_section_tuples = 0;
   bool m_in_point_data = false, m_in_section = false;
