@@ -60,7 +60,6 @@ names the file, the line and/or byte, and what is wrong.
 \param field the field to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
 \param np an optional sequence of named parameters among the ones listed below
-\param error if not null, receives the reason of a failure
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{array_name}
@@ -80,34 +79,26 @@ names the file, the line and/or byte, and what is wrong.
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
+  \cgalParamNBegin{error_message}
+    \cgalParamDescription{where the reason of a failure goes (`FAS::parameters::error_message()`):
+      a message naming the reader, the file, the line and/or byte, and what is wrong}
+    \cgalParamType{`std::string*`}
+    \cgalParamDefault{`nullptr`: no message}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+\returns `true` on success; `false` otherwise, with the reason in the string of `error_message` when it is given.
 
 \sa `read_VTK_flow_field()`, `read_NRRD_flow_field()`, `Regular_grid_flow_field_3`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool read_AmiraMesh_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field,
-                               const NamedParameters& np = CGAL::parameters::default_values(),
-                               std::string* error = nullptr)
+                               const NamedParameters& np = CGAL::parameters::default_values())
 {
   const internal::Array_names names = internal::array_names(np);
-  return internal::read_into(
-      "read_AmiraMesh_flow_field", filename, field, error, internal::reads_in_parallel(np),
-      [&] { return internal::read_AmiraMesh_grid<K>(filename, names.array, names.mask); });
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief As the overload above with the default named parameters: the reason of a failure is in
-`error` without naming `CGAL::parameters::default_values()` first, as in
-`read_AmiraMesh_flow_field(filename, field, &error)`.
-*/
-template <class K>
-bool read_AmiraMesh_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field, std::string* error)
-{
-  return read_AmiraMesh_flow_field(filename, field, CGAL::parameters::default_values(), error);
+  return internal::read_into("read_AmiraMesh_flow_field", filename, field, np, [&] {
+    return internal::read_AmiraMesh_grid<K>(filename, names.array, names.mask);
+  });
 }
 
 } // namespace IO

@@ -373,11 +373,10 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
 // The public functions' common part: the named parameters, and the errors made `false` + message
 // with `field` untouched.
 template <class Field, class NamedParameters, class Read>
-bool read_VTK_legacy(const std::string& filename, Field& field, const NamedParameters& np, std::string* error,
-                     const Read& read)
+bool read_VTK_legacy(const std::string& filename, Field& field, const NamedParameters& np, const Read& read)
 {
   const Array_names names = array_names(np);
-  return read_into("read_VTK_flow_field", filename, field, error, reads_in_parallel(np),
+  return read_into("read_VTK_flow_field", filename, field, np,
                    [&] { return read(filename, names.array_name(), names.mask_name()); });
 }
 
