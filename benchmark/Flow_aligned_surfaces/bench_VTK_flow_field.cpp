@@ -67,8 +67,8 @@ int main(int argc, char** argv)
   FAS::Regular_grid_flow_field_3<K> grid;
   FAS::Unstructured_flow_field_3<K> cells;
   std::string error;
-  if (!FAS::IO::read_VTK_flow_field(grid_file, grid, &error) ||
-      !FAS::IO::read_VTK_flow_field(cells_file, cells, &error)) {
+  if (!FAS::IO::read_VTK_flow_field(grid_file, grid, FAS::parameters::error_message(&error)) ||
+      !FAS::IO::read_VTK_flow_field(cells_file, cells, FAS::parameters::error_message(&error))) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
   }

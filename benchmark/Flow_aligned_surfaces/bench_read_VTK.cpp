@@ -107,7 +107,8 @@ int main(int argc, char** argv)
     const auto u0 = usage();
     t0 = std::chrono::steady_clock::now();
     std::string error;
-    if (!FAS::IO::read_VTK_flow_field(file, field, FAS::parameters::use_parallelism(true), &error)) {
+    if (!FAS::IO::read_VTK_flow_field(
+            file, field, FAS::parameters::error_message(&error, FAS::parameters::use_parallelism(true)))) {
       std::fprintf(stderr, "bench_read_VTK: %s\n", error.c_str());
       return 1;
     }

@@ -72,7 +72,7 @@ int main(int argc, char** argv)
   // The step files, as the package reads them (VTK has no reader of .pvd outside ParaView).
   FAS::Unsteady_flow_field_3<Grid> series;
   std::string error;
-  if (!FAS::IO::read_PVD_flow_field(pvd, series, &error)) {
+  if (!FAS::IO::read_PVD_flow_field(pvd, series, FAS::parameters::error_message(&error))) {
     std::fprintf(stderr, "%s\n", error.c_str());
     return 1;
   }
@@ -87,7 +87,7 @@ int main(int argc, char** argv)
   std::size_t values = 0;
   auto ours = [&] {
     FAS::Unsteady_flow_field_3<Grid> s;
-    if (!FAS::IO::read_PVD_flow_field(pvd, s, &error)) {
+    if (!FAS::IO::read_PVD_flow_field(pvd, s, FAS::parameters::error_message(&error))) {
       std::fprintf(stderr, "%s\n", error.c_str());
       std::exit(1);
     }

@@ -98,9 +98,11 @@ inline std::optional<FAS::Sampled_flow_field_3<Kernel>> read_data_field(const st
   std::string error;
   // The applications decode large binary arrays on all cores.
   const auto parallel = FAS::parameters::use_parallelism(true);
-  const bool read = array.empty() ? FAS::IO::read_flow_field(file, field, parallel, &error)
-                                  : FAS::IO::read_flow_field(
-                                        file, field, FAS::parameters::array_name(array, parallel), &error);
+  const bool read =
+      array.empty() ? FAS::IO::read_flow_field(file, field, FAS::parameters::error_message(&error, parallel))
+                    : FAS::IO::read_flow_field(file, field,
+                                               FAS::parameters::error_message(
+                                                   &error, FAS::parameters::array_name(array, parallel)));
   if (!read) {
     std::cerr << "error: " << error << "\n";
     return std::nullopt;

@@ -129,13 +129,13 @@ int main(int argc, char** argv)
   }
   std::string error;
   if (!FAS::IO::write_VTP((out / "surface.vtp").string(), tm, point_data, cell_data,
-                          CGAL::parameters::default_values(), &error)) {
+                          FAS::parameters::error_message(&error))) {
     std::cerr << "error: " << error << "\n";
     return 1;
   }
   for (const auto& [name, texture] : {std::pair{"noise", &noise}, std::pair{"arrows", &arrows}})
     if (!FAS::IO::write_textured_OBJ((out / (std::string(name) + ".obj")).string(), tm, uv, *texture,
-                                     CGAL::parameters::default_values(), &error))
+                                     FAS::parameters::error_message(&error)))
       std::cerr << "warning: " << error << "\n";
   std::cout << "wrote surface.vtp, noise.obj/.mtl/.png, arrows.obj/.mtl/.png\n";
 

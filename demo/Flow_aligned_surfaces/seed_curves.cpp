@@ -117,7 +117,7 @@ int main(int argc, char** argv)
   std::vector<Polyline> points_as_rows;
   for (const Point& p : seed_points)
     points_as_rows.push_back({p});
-  if (!FAS::IO::write_VTP(out + "/surface.vtp", tm, arrays, {}, CGAL::parameters::default_values(), &error) ||
+  if (!FAS::IO::write_VTP(out + "/surface.vtp", tm, arrays, {}, FAS::parameters::error_message(&error)) ||
       !write_polylines_csv(out + "/seed_curves.csv", seed_curves, error) ||
       !write_polylines_csv(out + "/circular_seeds.csv", circular_seeds, error) ||
       !write_polylines_csv(out + "/seed_points.csv", points_as_rows, error) ||

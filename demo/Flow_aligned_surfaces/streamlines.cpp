@@ -95,7 +95,8 @@ int main(int argc, char** argv)
   if (!write_surface_VTP(out + "/surface.vtp", tm, flow))
     return 1;
   if (!FAS::IO::write_VTP_polylines(out + "/streamlines.vtp", lines, {speed},
-                                    {line_length, backward, forward}, &error)) {
+                                    {line_length, backward, forward},
+                                    FAS::parameters::error_message(&error))) {
     std::cerr << "error: " << error << "\n";
     return 1;
   }

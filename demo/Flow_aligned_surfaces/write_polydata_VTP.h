@@ -112,7 +112,7 @@ bool write_mesh_VTP(const std::string& filename, const TriangleMesh& tm,
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_VTK
   std::string reason;
   const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
-  bool ok = FAS::IO::internal::check_VTP_array_sizes(point_data, nv, cell_data, nf, reason);
+  bool ok = FAS::IO::check_VTP_array_sizes(point_data, nv, cell_data, nf, reason);
   if (ok) {
     const vtkSmartPointer<vtkPolyData> polydata = vtk_polydata_of_mesh(
         tm, get(CGAL::vertex_point, tm), get(CGAL::vertex_index, tm), get(CGAL::face_index, tm));
@@ -125,7 +125,7 @@ bool write_mesh_VTP(const std::string& filename, const TriangleMesh& tm,
   return ok;
 #else
   (void)active;
-  return FAS::IO::write_VTP(filename, tm, point_data, cell_data, CGAL::parameters::default_values(), error);
+  return FAS::IO::write_VTP(filename, tm, point_data, cell_data, FAS::parameters::error_message(error));
 #endif
 }
 
@@ -143,7 +143,7 @@ bool write_polylines_VTP(const std::string& filename, const std::vector<Polyline
   std::size_t np = 0;
   for (const Polyline& line : polylines)
     np += line.size();
-  bool ok = FAS::IO::internal::check_VTP_array_sizes(point_data, np, cell_data, polylines.size(), reason);
+  bool ok = FAS::IO::check_VTP_array_sizes(point_data, np, cell_data, polylines.size(), reason);
   if (ok) {
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetDataTypeToDouble();
@@ -167,7 +167,8 @@ bool write_polylines_VTP(const std::string& filename, const std::vector<Polyline
   return ok;
 #else
   (void)active;
-  return FAS::IO::write_VTP_polylines(filename, polylines, point_data, cell_data, error);
+  return FAS::IO::write_VTP_polylines(filename, polylines, point_data, cell_data,
+                                      FAS::parameters::error_message(error));
 #endif
 }
 

@@ -51,7 +51,7 @@ int main()
   // White noise convolved along x over 24 of 128 texels: streaks along the flow.
   const FAS::Texture_image noise = FAS::make_noise_texture(128, 128, 24, 1);
   std::string error;
-  if (!FAS::IO::write_textured_OBJ("noise.obj", sm, uv, noise, CGAL::parameters::default_values(), &error))
+  if (!FAS::IO::write_textured_OBJ("noise.obj", sm, uv, noise, FAS::parameters::error_message(&error)))
     std::cerr << error << std::endl; // without libpng the OBJ and MTL are written, not the PNG
   return 0;
 }

@@ -31,7 +31,7 @@ int main(int argc, char* argv[])
   // The field holds whichever grid the file has (uniform, rectilinear, or cells).
   FAS::Sampled_flow_field_3<Kernel> field;
   std::string error;
-  if (!FAS::IO::read_flow_field(filename, field, &error)) {
+  if (!FAS::IO::read_flow_field(filename, field, FAS::parameters::error_message(&error))) {
     std::cerr << error << std::endl; // names the file, the place in it and what is wrong
     return 1;
   }

@@ -49,7 +49,7 @@ void expect_reads_linear_field(const std::string& file)
   SCOPED_TRACE(file);
   Sampled field;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_flow_field(file, field, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_flow_field(file, field, FAS::parameters::error_message(&error))) << error;
   ASSERT_NE(field.get_if<Field>(), nullptr) << "the file was read into another kind of field";
   const CGAL::Bbox_3 box = field.bbox();
   std::mt19937 random(7);

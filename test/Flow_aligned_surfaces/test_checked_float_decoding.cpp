@@ -152,7 +152,7 @@ struct Read_legacy {
   template <class NP>
   bool operator()(const std::string& file, Grid& g, const NP& np, std::string* error) const
   {
-    return FAS::IO::read_VTK_flow_field(file, g, np, error);
+    return FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(error, np));
   }
 };
 

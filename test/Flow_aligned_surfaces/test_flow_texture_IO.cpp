@@ -82,7 +82,7 @@ TEST(FlowTextureIO, OBJHasOneTextureCoordinatePerVertexAndItsMaterial)
   const std::string obj = temporary_file("flow_texture_io_", "patch.obj");
   std::string error;
   const bool written = FAS::IO::write_textured_OBJ(obj, tm, uv, FAS::make_arrow_texture(32, 32, 2, 2),
-                                                   CGAL::parameters::default_values(), &error);
+                                                   FAS::parameters::error_message(&error));
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_PNG
   ASSERT_TRUE(written) << error;
 #else
@@ -155,7 +155,7 @@ TEST(FlowTextureIO, OBJKeepsAUsersFileBesideItAndReplacesItsOwn)
   std::filesystem::remove(mtl);
   write_bytes(png, "the user's picture");
   std::string error;
-  EXPECT_FALSE(FAS::IO::write_textured_OBJ(obj, tm, uv, texture, CGAL::parameters::default_values(), &error));
+  EXPECT_FALSE(FAS::IO::write_textured_OBJ(obj, tm, uv, texture, FAS::parameters::error_message(&error)));
   EXPECT_NE(error.find("flow_texture_io_keep.png exists"), std::string::npos) << error;
   EXPECT_NE(error.find("nothing was written"), std::string::npos) << error;
   EXPECT_EQ(read_bytes(png), "the user's picture");
@@ -165,17 +165,19 @@ TEST(FlowTextureIO, OBJKeepsAUsersFileBesideItAndReplacesItsOwn)
   // A material file that is not this OBJ's is kept too.
   std::filesystem::remove(png);
   write_bytes(mtl, "newmtl brick\n");
-  EXPECT_FALSE(FAS::IO::write_textured_OBJ(obj, tm, uv, texture, CGAL::parameters::default_values(), &error));
+  EXPECT_FALSE(FAS::IO::write_textured_OBJ(obj, tm, uv, texture, FAS::parameters::error_message(&error)));
   EXPECT_NE(error.find("flow_texture_io_keep.mtl exists"), std::string::npos) << error;
   EXPECT_EQ(read_bytes(mtl), "newmtl brick\n");
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_PNG
   // Written once from scratch, then again over its own files.
   std::filesystem::remove(mtl);
-  ASSERT_TRUE(FAS::IO::write_textured_OBJ(obj, tm, uv, texture, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::write_textured_OBJ(obj, tm, uv, texture, FAS::parameters::error_message(&error)))
+      << error;
   const Png_picture first = read_png(png);
   ASSERT_TRUE(FAS::IO::write_textured_OBJ(obj, tm, uv, FAS::make_arrow_texture(8, 8, 2, 2),
-                                          CGAL::parameters::default_values(), &error)) << error;
+                                          FAS::parameters::error_message(&error)))
+      << error;
   EXPECT_EQ(first.width, 16u);
   EXPECT_EQ(read_png(png).width, 8u);
 #endif

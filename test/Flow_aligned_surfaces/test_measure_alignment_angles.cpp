@@ -230,7 +230,7 @@ TEST(AlignmentAngles, OnCFDDataTheTangentialParametrizationFollowsTheFlow)
   FAS::Regular_grid_flow_field_3<K> field(Point_3(0, 0, 0), Vector_3(1, 1, 1), {{2, 2, 2}},
                                           std::vector<float>(24, 0.f));
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, field, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, field, FAS::parameters::error_message(&error))) << error;
   Mesh tm;
   FAS::make_planar_patch(tm, Point_3(0.8, 0.2, 0.2), Vector_3(0.4, 0.2, 1), 0.15, 0.15, 800);
   const FAS::Alignment_report report = FAS::align_to_flow(tm, field, FAS::Alignment::TANGENTIAL);

@@ -31,7 +31,7 @@ struct Reader {
   template <class NamedParameters>
   bool operator()(const std::string& file, Grid& g, const NamedParameters& np, std::string* error) const
   {
-    return FAS::IO::read_AmiraMesh_flow_field(file, g, np, error);
+    return FAS::IO::read_AmiraMesh_flow_field(file, g, FAS::parameters::error_message(error, np));
   }
 };
 const fas_test::Grid_reader_checks<Reader> checks("fas_read_AmiraMesh_");
@@ -212,7 +212,7 @@ TEST(ReadAmiraMeshBadInput, NotAmiraMeshAndMissingParts)
   Grid g = fas_test::sentinel_grid();
   std::string error;
   EXPECT_FALSE(FAS::IO::read_AmiraMesh_flow_field(checks.temporary("absent.am"), g,
-                                                  CGAL::parameters::default_values(), &error));
+                                                  FAS::parameters::error_message(&error)));
   EXPECT_NE(error.find("cannot open"), std::string::npos) << error;
   fas_test::expect_untouched(g);
   checks.expect_failure("not_am.am", "# vtk DataFile Version 3.0\n", {"line 1", "not an AmiraMesh file"});

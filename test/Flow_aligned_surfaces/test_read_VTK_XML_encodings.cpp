@@ -217,7 +217,7 @@ Field read_or_fail(const std::string& file, const std::string& what)
 {
   Field f;
   std::string error;
-  EXPECT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, f, CGAL::parameters::default_values(), &error))
+  EXPECT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, f, FAS::parameters::error_message(&error)))
       << what << ": " << error;
   return f;
 }
@@ -342,7 +342,8 @@ TEST(ReadVTKXMLEncodings, PiecesOfAnUnstructuredGridAreConcatenated)
                                              unstructured_piece(w, moved, nullptr, shift) + "</UnstructuredGrid>\n"));
   Cells c;
   std::string error;
-  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(temporary("pieces_mask.vtu"), c, &error));
+  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(temporary("pieces_mask.vtu"), c,
+                                                FAS::parameters::error_message(&error)));
   EXPECT_NE(error.find("this piece has no mask but the pieces before it have one"), std::string::npos) << error;
 }
 
@@ -357,8 +358,9 @@ TEST(ReadVTKXMLEncodings, MaskedCellsAreLeftOut)
   EXPECT_EQ(c.number_of_cells(), 24u - 6u);
   std::string error;
   Cells all;
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(temporary("masked.vtu"), all,
-                                               FAS::parameters::mask_array_name(std::string()), &error))
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(
+      temporary("masked.vtu"), all,
+      FAS::parameters::error_message(&error, FAS::parameters::mask_array_name(std::string()))))
       << error;
   EXPECT_EQ(all.number_of_cells(), 24u);
 }
@@ -379,7 +381,9 @@ TEST(ReadVTKXMLEncodings, TimeSeriesIsExactAtIntermediateTimes)
   write_bytes((folder / "series.pvd").string(), pvd + "  </Collection>\n</VTKFile>\n");
   FAS::Unsteady_flow_field_3<Grid> series;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_PVD_flow_field((folder / "series.pvd").string(), series, &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_PVD_flow_field((folder / "series.pvd").string(), series,
+                                           FAS::parameters::error_message(&error)))
+      << error;
   ASSERT_EQ(series.number_of_steps(), 3u);
   std::mt19937 rng(8);
   std::uniform_real_distribution<double> u(0., 1.), time(0., 2.);

@@ -118,7 +118,7 @@ void expect_read_fails(const std::string& file, const std::vector<std::string>& 
   Field empty;
   ::testing::internal::CaptureStderr();
   ::testing::internal::CaptureStdout();
-  const bool ok = FAS::IO::read_VTK_XML_flow_field(file, empty, np, &error);
+  const bool ok = FAS::IO::read_VTK_XML_flow_field(file, empty, FAS::parameters::error_message(&error, np));
   const std::string printed = ::testing::internal::GetCapturedStderr() + ::testing::internal::GetCapturedStdout();
   EXPECT_FALSE(ok) << file;
   EXPECT_EQ(printed, "") << "printed while reading " << file;
@@ -143,13 +143,13 @@ TEST(ReadVTKXMLRefusals, MissingEmptyAndNonXMLFiles)
   const std::string empty = written("empty.vti", "");
   std::string error;
   Grid grid;
-  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(empty, grid, &error));
+  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(empty, grid, FAS::parameters::error_message(&error)));
   EXPECT_EQ(error, "read_VTK_XML_flow_field: " + empty + ": the file is empty (0 bytes)");
   Cells cells;
-  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(empty, cells, &error));
+  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(empty, cells, FAS::parameters::error_message(&error)));
   EXPECT_EQ(error, "read_VTK_XML_flow_field: " + empty + ": the file is empty (0 bytes)");
   FAS::Unsteady_flow_field_3<Grid> series;
-  EXPECT_FALSE(FAS::IO::read_PVD_flow_field(empty, series, &error));
+  EXPECT_FALSE(FAS::IO::read_PVD_flow_field(empty, series, FAS::parameters::error_message(&error)));
   EXPECT_EQ(error, "read_PVD_flow_field: " + empty + ": the file is empty (0 bytes)");
 
   const std::string garbage = written("garbage.vti", "this is not XML at all\n");
@@ -353,7 +353,8 @@ TEST(ReadVTKXMLRefusals, NonFiniteVelocitiesAtFluidPointsAreNamed)
                                         ascii_array("UInt8", "inside", 1, "1 1 1 1 1 0 1 1")));
   Grid grid;
   std::string error;
-  EXPECT_TRUE(FAS::IO::read_VTK_XML_flow_field(masked, grid, &error)) << error;
+  EXPECT_TRUE(FAS::IO::read_VTK_XML_flow_field(masked, grid, FAS::parameters::error_message(&error)))
+      << error;
   expect_read_fails<Cells>(masked, {"every one of the 1 cells touches a solid point", "no fluid cell"});
 }
 
@@ -394,8 +395,9 @@ TEST(ReadVTKXMLRefusals, BadCellsAreNamed)
 {
   Cells field;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(written("cell.vtu", one_cell_vtu("0 1 2 3 4 5 6 7", "8", "12")), field,
-                                               &error))
+  ASSERT_TRUE(
+      FAS::IO::read_VTK_XML_flow_field(written("cell.vtu", one_cell_vtu("0 1 2 3 4 5 6 7", "8", "12")), field,
+                                       FAS::parameters::error_message(&error)))
       << error;
   expect_read_fails<Cells>(written("triangle.vtu", one_cell_vtu("0 1 2 3 4 5 6 7 0 1 2", "8 11", "12 5", 2)),
                            {"gives cell 1 the VTK cell type 5 (VTK_TRIANGLE); supported are 10 (VTK_TETRA)"});
@@ -424,7 +426,7 @@ void expect_PVD_fails(const std::string& file, const std::vector<std::string>& p
   std::string error;
   FAS::Unsteady_flow_field_3<Grid> series;
   ::testing::internal::CaptureStderr();
-  const bool ok = FAS::IO::read_PVD_flow_field(file, series, CGAL::parameters::default_values(), &error);
+  const bool ok = FAS::IO::read_PVD_flow_field(file, series, FAS::parameters::error_message(&error));
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << "printed while reading " << file;
   EXPECT_FALSE(ok) << file;
   EXPECT_EQ(series.number_of_steps(), 0u); // untouched

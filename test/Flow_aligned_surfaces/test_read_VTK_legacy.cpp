@@ -99,7 +99,7 @@ void expect_failure(const std::string& name, const std::string& contents,
   write_bytes(file, contents);
   Grid g = sentinel_grid();
   std::string error;
-  EXPECT_FALSE(FAS::IO::read_VTK_flow_field(file, g, np, &error)) << name;
+  EXPECT_FALSE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error, np))) << name;
   EXPECT_NE(error.find(file), std::string::npos) << "the message does not name the file: " << error;
   for (const std::string& part : parts)
     EXPECT_NE(error.find(part), std::string::npos) << "'" << part << "' is not in the message: " << error;
@@ -141,11 +141,11 @@ TEST(ReadVTKLegacy, BinaryRoundTripKeepsValuesMaskAndGeometry)
     const Grid original = sample_grid(with_mask);
     const std::string file = temporary("round_trip.vtk");
     std::string error;
-    ASSERT_TRUE(FAS::IO::write_VTK_flow_field(file, original, CGAL::parameters::default_values(), &error))
+    ASSERT_TRUE(FAS::IO::write_VTK_flow_field(file, original, FAS::parameters::error_message(&error)))
         << error;
     EXPECT_NE(read_bytes(file).find("BINARY\n"), std::string::npos);
     Grid g = sentinel_grid();
-    ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) << error;
+    ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) << error;
     expect_same_grid(g, original);
     EXPECT_EQ(g.has_mask(), with_mask);
   }
@@ -156,14 +156,15 @@ TEST(ReadVTKLegacy, AsciiRoundTripKeepsValuesMaskAndGeometry)
   const Grid original = sample_grid(true);
   const std::string file = temporary("round_trip_ascii.vtk");
   std::string error;
-  ASSERT_TRUE(FAS::IO::write_VTK_flow_field(file, original, CGAL::parameters::use_binary_mode(false), &error))
+  ASSERT_TRUE(FAS::IO::write_VTK_flow_field(
+      file, original, FAS::parameters::error_message(&error, CGAL::parameters::use_binary_mode(false))))
       << error;
   const std::string text = read_bytes(file);
   EXPECT_NE(text.find("ASCII\n"), std::string::npos);
   EXPECT_NE(text.find("VECTORS velocity float\n"), std::string::npos);
   EXPECT_NE(text.find("SCALARS inside unsigned_char 1\nLOOKUP_TABLE default\n"), std::string::npos);
   Grid g;
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) << error;
   expect_same_grid(g, original);
 }
 
@@ -173,23 +174,29 @@ TEST(ReadVTKLegacy, WriterUsesTheGivenArrayNamesAndTheReaderFindsThem)
   const std::string file = temporary("names.vtk");
   std::string error;
   ASSERT_TRUE(FAS::IO::write_VTK_flow_field(
-      file, original, FAS::parameters::array_name("U", FAS::parameters::mask_array_name("fluid")), &error))
+      file, original,
+      FAS::parameters::error_message(
+          &error, FAS::parameters::array_name("U", FAS::parameters::mask_array_name("fluid")))))
       << error;
   Grid g = sentinel_grid();
   // Without the mask's name the reader looks for "inside" and finds no mask.
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) << error;
   EXPECT_FALSE(g.has_mask());
   EXPECT_EQ(g.values(), original.values());
   ASSERT_TRUE(FAS::IO::read_VTK_flow_field(
-      file, g, FAS::parameters::array_name("U", FAS::parameters::mask_array_name("fluid")), &error))
+      file, g,
+      FAS::parameters::error_message(
+          &error, FAS::parameters::array_name("U", FAS::parameters::mask_array_name("fluid")))))
       << error;
   expect_same_grid(g, original);
   // A name legacy VTK cannot store is refused, and the existing file is kept.
-  EXPECT_FALSE(
-      FAS::IO::write_VTK_flow_field(file, original, FAS::parameters::array_name("my velocity"), &error));
+  EXPECT_FALSE(FAS::IO::write_VTK_flow_field(
+      file, original, FAS::parameters::error_message(&error, FAS::parameters::array_name("my velocity"))));
   EXPECT_NE(error.find("white space"), std::string::npos) << error;
   ASSERT_TRUE(FAS::IO::read_VTK_flow_field(
-      file, g, FAS::parameters::array_name("U", FAS::parameters::mask_array_name("fluid")), &error));
+      file, g,
+      FAS::parameters::error_message(
+          &error, FAS::parameters::array_name("U", FAS::parameters::mask_array_name("fluid")))));
 }
 
 // ------------------------------------------------------------------------------------------
@@ -200,7 +207,7 @@ TEST(ReadVTKLegacy, AsciiFileSkipsFieldDataLookupTablesNormalsAndCellData)
   const std::string file = FAS_TEST_DATA_DIR "/grid_3x3x3_mixed_arrays.vtk";
   Grid g = sentinel_grid();
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) << error;
   EXPECT_EQ(g.dimensions(), (Grid::Dimensions{{3, 3, 3}}));
   EXPECT_EQ(g.origin(), Point(1, -2, 0.5));
   EXPECT_EQ(g.spacing(), Vector(0.5, 0.25, 2)); // from ASPECT_RATIO
@@ -216,14 +223,18 @@ TEST(ReadVTKLegacy, AsciiFileSkipsFieldDataLookupTablesNormalsAndCellData)
 
   // A 3-component FIELD array by name, an int FIELD array as the mask.
   ASSERT_TRUE(FAS::IO::read_VTK_flow_field(
-      file, g, FAS::parameters::array_name("shifted", FAS::parameters::mask_array_name("solid")), &error))
+      file, g,
+      FAS::parameters::error_message(
+          &error, FAS::parameters::array_name("shifted", FAS::parameters::mask_array_name("solid")))))
       << error;
   EXPECT_EQ(g.node_value(0, 2, 1), Vector(1, 2, 1));
   EXPECT_FALSE(g.is_fluid(1, 1, 1));
   EXPECT_TRUE(g.is_fluid(2, 2, 2));
 
   // The empty mask name reads no mask.
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::mask_array_name(""), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(
+      file, g, FAS::parameters::error_message(&error, FAS::parameters::mask_array_name(""))))
+      << error;
   EXPECT_FALSE(g.has_mask());
 }
 
@@ -246,14 +257,15 @@ TEST(ReadVTKLegacy, BinaryFileWithDoubleVectorsCellDataAndAnIntMask)
   write_bytes(file, s);
   Grid g = sentinel_grid();
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) << error;
   EXPECT_EQ(g.origin(), Point(0, 0, 0)); // VTK's default origin
   EXPECT_EQ(g.spacing(), Vector(0.5, 0.5, 0.5));
   EXPECT_EQ(g.node_value(1, 0, 1), Vector(5, 5.25, 5.5));
   EXPECT_FALSE(g.is_fluid(1, 1, 0));
   EXPECT_TRUE(g.is_fluid(1, 0, 1));
   // The 3-component SCALARS "t" holds NaN bytes (0xff...): chosen by name, it is refused.
-  EXPECT_FALSE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::array_name("t"), &error));
+  EXPECT_FALSE(FAS::IO::read_VTK_flow_field(
+      file, g, FAS::parameters::error_message(&error, FAS::parameters::array_name("t"))));
   EXPECT_NE(error.find("node 0 = (0, 0, 0)"), std::string::npos) << error;
 }
 
@@ -306,7 +318,7 @@ TEST(ReadVTKLegacy, CylinderGridHasTheStatedGeometryMaskAndVelocities)
     GTEST_SKIP() << "CYLINDER_grid.vtk not found in FAS_SHARED_DATA_DIR (../shared/data)";
   Grid g = sentinel_grid();
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) << error;
   // CYLINDER.md / CYLINDER_stats.json
   EXPECT_EQ(g.dimensions(), (Grid::Dimensions{{251, 42, 42}}));
   EXPECT_EQ(g.number_of_nodes(), 442764u);
@@ -342,7 +354,7 @@ TEST(ReadVTKLegacy, CavityGridHasTheStatedGeometryAndVelocities)
     GTEST_SKIP() << "CAVITY_grid.vtk not found in FAS_SHARED_DATA_DIR (../shared/data)";
   Grid g = sentinel_grid();
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) << error;
   // CAVITY_stats.json
   EXPECT_EQ(g.dimensions(), (Grid::Dimensions{{65, 65, 65}}));
   EXPECT_EQ(g.number_of_nodes(), 274625u);
@@ -365,7 +377,7 @@ TEST(ReadVTKLegacy, PatchesInTheCylinderWakeAlignToTheFlow)
     GTEST_SKIP() << "CYLINDER_grid.vtk not found in FAS_SHARED_DATA_DIR (../shared/data)";
   Grid g = sentinel_grid();
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) << error;
   // In the near wake (3 diameters behind the cylinder's axis, where the (v, w) secondary flow
   // is strong), more than 0.1 away from every wall and 0.15 from the cylinder.
   expect_patches_align(g, "CYLINDER_grid", Point(0.8, 0.2, 0.2), Vector(0.4, 0.2, 1), Vector(1, 0.8, 0.5),
@@ -380,7 +392,7 @@ TEST(ReadVTKLegacyBadInput, MissingFileAndNotVTK)
   Grid g = sentinel_grid();
   std::string error;
   const std::string missing = temporary("does_not_exist.vtk");
-  EXPECT_FALSE(FAS::IO::read_VTK_flow_field(missing, g, CGAL::parameters::default_values(), &error));
+  EXPECT_FALSE(FAS::IO::read_VTK_flow_field(missing, g, FAS::parameters::error_message(&error)));
   EXPECT_NE(error.find(missing), std::string::npos) << error;
   EXPECT_NE(error.find("cannot open"), std::string::npos) << error;
   expect_untouched(g);
@@ -411,7 +423,7 @@ TEST(ReadVTKLegacyBadInput, UnknownAndUnsupportedDatasetTypes)
   if (!cells.empty()) {
     Grid g = sentinel_grid();
     std::string error;
-    EXPECT_FALSE(FAS::IO::read_VTK_flow_field(cells, g, CGAL::parameters::default_values(), &error));
+    EXPECT_FALSE(FAS::IO::read_VTK_flow_field(cells, g, FAS::parameters::error_message(&error)));
     EXPECT_NE(error.find("it is read by Unstructured_flow_field_3"), std::string::npos) << error;
     expect_untouched(g);
   }
@@ -504,7 +516,7 @@ TEST(ReadVTKLegacyBadInput, EveryTruncationAndRandomCorruptionFailsCleanly)
       write_bytes(file, whole.substr(0, n));
       Grid g = sentinel_grid();
       std::string error;
-      if (FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) {
+      if (FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) {
         // Only a cut between the velocity and the mask, or after the mask, makes a valid file.
         ++successes;
         // A cut inside the last ASCII number leaves a shorter number, which nothing can detect.
@@ -530,7 +542,7 @@ TEST(ReadVTKLegacyBadInput, EveryTruncationAndRandomCorruptionFailsCleanly)
       write_bytes(file, mangled);
       Grid g = sentinel_grid();
       std::string error;
-      if (!FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) {
+      if (!FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) {
         EXPECT_FALSE(error.empty());
       }
     }
@@ -605,7 +617,7 @@ TEST(ReadVTKLegacyBadInput, NonFiniteValuesNameTheNode)
   write_bytes(file, s);
   Grid g = sentinel_grid();
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, g, FAS::parameters::error_message(&error))) << error;
   EXPECT_EQ(g.node_value(0, 0, 1), Vector(0, 0, 0));
 }
 

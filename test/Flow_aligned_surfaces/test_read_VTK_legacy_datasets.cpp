@@ -299,7 +299,7 @@ Field read_ok(const std::string& name, const std::string& contents)
   write_bytes(file, contents);
   Field field;
   std::string error;
-  const bool read = FAS::IO::read_VTK_flow_field(file, field, CGAL::parameters::default_values(), &error);
+  const bool read = FAS::IO::read_VTK_flow_field(file, field, FAS::parameters::error_message(&error));
   EXPECT_TRUE(read) << name << ": " << error;
   if (!read)
     throw std::runtime_error(name + ": " + error);
@@ -433,23 +433,24 @@ TEST(ReadVTKLegacyDatasets, FilesWrittenByVTKItself)
                                  "vtk_unstructured_4.2_binary.vtk", "vtk_unstructured_4.2_ascii.vtk"}) {
     SCOPED_TRACE(name);
     Cells c;
-    ASSERT_TRUE(FAS::IO::read_VTK_flow_field(FAS_TEST_DATA_DIR "/" + name, c,
-                                             CGAL::parameters::default_values(), &error))
+    ASSERT_TRUE(
+        FAS::IO::read_VTK_flow_field(FAS_TEST_DATA_DIR "/" + name, c, FAS::parameters::error_message(&error)))
         << error;
     expect_mixed_cells(c, rng);
     // The 1-component FIELD array is seen, and refused as a velocity.
-    EXPECT_FALSE(FAS::IO::read_VTK_flow_field(FAS_TEST_DATA_DIR "/" + name, c,
-                                              FAS::parameters::array_name("pressure"), &error));
+    EXPECT_FALSE(FAS::IO::read_VTK_flow_field(
+        FAS_TEST_DATA_DIR "/" + name, c,
+        FAS::parameters::error_message(&error, FAS::parameters::array_name("pressure"))));
     EXPECT_NE(error.find("'pressure' has 1 components"), std::string::npos) << error;
   }
   Cells s;
   ASSERT_TRUE(FAS::IO::read_VTK_flow_field(FAS_TEST_DATA_DIR "/vtk_structured_grid_binary.vtk", s,
-                                           CGAL::parameters::default_values(), &error))
+                                           FAS::parameters::error_message(&error)))
       << error;
   expect_curvilinear(s, rng);
   Rectilinear r;
   ASSERT_TRUE(FAS::IO::read_VTK_flow_field(FAS_TEST_DATA_DIR "/vtk_rectilinear_grid_ascii.vtk", r,
-                                           CGAL::parameters::default_values(), &error))
+                                           FAS::parameters::error_message(&error)))
       << error;
   expect_rectilinear(r, rng);
 }
@@ -526,7 +527,8 @@ TEST(ReadVTKLegacyDatasets, MaskRemovesTheCellsTouchingASolidPoint)
     const std::string file = temporary("masked_cells.vtk");
     Cells u;
     std::string error;
-    EXPECT_FALSE(FAS::IO::read_VTK_flow_field(file, u, FAS::parameters::mask_array_name(""), &error));
+    EXPECT_FALSE(FAS::IO::read_VTK_flow_field(
+        file, u, FAS::parameters::error_message(&error, FAS::parameters::mask_array_name(""))));
     EXPECT_NE(error.find("at point 8, component 1, is nan"), std::string::npos) << error;
     EXPECT_EQ(u.bbox(), CGAL::Bbox_3()); // untouched: empty
   }
@@ -568,7 +570,7 @@ void expect_failure(const std::string& name, const std::string& contents,
   write_bytes(file, contents);
   Field f = sentinel<Field>();
   std::string error;
-  EXPECT_FALSE(FAS::IO::read_VTK_flow_field(file, f, CGAL::parameters::default_values(), &error)) << name;
+  EXPECT_FALSE(FAS::IO::read_VTK_flow_field(file, f, FAS::parameters::error_message(&error))) << name;
   EXPECT_NE(error.find(file), std::string::npos) << "the message does not name the file: " << error;
   for (const std::string& part : parts)
     EXPECT_NE(error.find(part), std::string::npos) << "'" << part << "' is not in the message: " << error;
@@ -806,7 +808,7 @@ std::optional<Field> read_real(const Real_data_set& d, const char* form)
     return std::nullopt;
   Field f;
   std::string error;
-  if (!FAS::IO::read_VTK_flow_field(file, f, CGAL::parameters::default_values(), &error)) {
+  if (!FAS::IO::read_VTK_flow_field(file, f, FAS::parameters::error_message(&error))) {
     ADD_FAILURE() << error;
     return std::nullopt;
   }
@@ -985,11 +987,11 @@ TEST(ReadVTKLegacyDatasetsBadInput, EveryTruncationAndRandomCorruptionFailsClean
       Cells c;
       Rectilinear r;
       std::string error;
-      if (!FAS::IO::read_VTK_flow_field(file, c, CGAL::parameters::default_values(), &error)) {
+      if (!FAS::IO::read_VTK_flow_field(file, c, FAS::parameters::error_message(&error))) {
         EXPECT_NE(error.find(file), std::string::npos) << error;
         EXPECT_EQ(c.bbox(), CGAL::Bbox_3()); // untouched: empty
       }
-      if (!FAS::IO::read_VTK_flow_field(file, r, CGAL::parameters::default_values(), &error)) {
+      if (!FAS::IO::read_VTK_flow_field(file, r, FAS::parameters::error_message(&error))) {
         EXPECT_EQ(r.bbox(), CGAL::Bbox_3()); // untouched: empty
       }
     };

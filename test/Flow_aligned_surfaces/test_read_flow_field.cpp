@@ -68,8 +68,7 @@ TEST(ReadFlowField, LegacyVTKDatasetsGoToTheirFields)
 {
   const std::string regular = scratch("structured_points.vtk");
   std::string error;
-  ASSERT_TRUE(
-      FAS::IO::write_VTK_flow_field(regular, linear_grid(), CGAL::parameters::default_values(), &error))
+  ASSERT_TRUE(FAS::IO::write_VTK_flow_field(regular, linear_grid(), FAS::parameters::error_message(&error)))
       << error;
   expect_reads_linear_field<Sampled::Regular_grid>(regular);
   expect_reads_linear_field<Sampled::Rectilinear_grid>(data_file("vtk_rectilinear_grid_ascii.vtk"));
@@ -103,7 +102,7 @@ TEST(ReadFlowField, VTKXMLFilesGoToTheirFields)
   const std::string vti = scratch("grid.vti");
   std::string error;
   const Sampled::Regular_grid grid = linear_grid();
-  ASSERT_TRUE(FAS::IO::write_VTI_flow_field(vti, grid, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::write_VTI_flow_field(vti, grid, FAS::parameters::error_message(&error))) << error;
   expect_reads_linear_field<Sampled::Regular_grid>(vti);
 
   vtk_xml_test::Encoding e;
@@ -150,18 +149,19 @@ TEST(ReadFlowField, FailuresNameTheFileAndKeepTheField)
 
   const std::string text = scratch("notes.txt");
   write_bytes(text, "velocity, but as prose\n");
-  EXPECT_FALSE(FAS::IO::read_flow_field(text, field, CGAL::parameters::default_values(), &error));
+  EXPECT_FALSE(FAS::IO::read_flow_field(text, field, FAS::parameters::error_message(&error)));
   for (const char* part : {"notes.txt", "unknown file format", "velocity, but", "# vtk DataFile", "NRRD"})
     EXPECT_NE(error.find(part), std::string::npos) << "\"" << error << "\" lacks \"" << part << "\"";
 
   const std::string missing = scratch("no_such_file.vtk");
-  EXPECT_FALSE(FAS::IO::read_flow_field(missing, field, CGAL::parameters::default_values(), &error));
+  EXPECT_FALSE(FAS::IO::read_flow_field(missing, field, FAS::parameters::error_message(&error)));
   EXPECT_NE(error.find("no_such_file.vtk"), std::string::npos) << error;
   EXPECT_NE(error.find("cannot open"), std::string::npos) << error;
 
   // A reader's own message comes through: here the legacy reader's, about a missing array.
-  EXPECT_FALSE(FAS::IO::read_flow_field(data_file("vtk_unstructured_4.2_ascii.vtk"), field,
-                                        FAS::parameters::array_name(std::string("U")), &error));
+  EXPECT_FALSE(FAS::IO::read_flow_field(
+      data_file("vtk_unstructured_4.2_ascii.vtk"), field,
+      FAS::parameters::error_message(&error, FAS::parameters::array_name(std::string("U")))));
   EXPECT_NE(error.find("'U'"), std::string::npos) << error;
   EXPECT_NE(error.find("vtk_unstructured_4.2_ascii.vtk"), std::string::npos) << error;
 
@@ -181,16 +181,22 @@ TEST(ReadFlowField, EmptyFileIsCalledEmptyByEveryReader)
   };
   std::string error;
   Sampled sampled(linear_grid());
-  expect_empty(FAS::IO::read_flow_field(empty, sampled, &error), error, "read_flow_field");
+  expect_empty(FAS::IO::read_flow_field(empty, sampled, FAS::parameters::error_message(&error)), error,
+               "read_flow_field");
   EXPECT_NE(sampled.get_if<Sampled::Regular_grid>(), nullptr) << "the field is kept";
   Sampled::Regular_grid regular;
-  expect_empty(FAS::IO::read_VTK_flow_field(empty, regular, &error), error, "read_VTK_flow_field");
+  expect_empty(FAS::IO::read_VTK_flow_field(empty, regular, FAS::parameters::error_message(&error)), error,
+               "read_VTK_flow_field");
   Sampled::Rectilinear_grid rectilinear;
-  expect_empty(FAS::IO::read_VTK_flow_field(empty, rectilinear, &error), error, "read_VTK_flow_field");
+  expect_empty(FAS::IO::read_VTK_flow_field(empty, rectilinear, FAS::parameters::error_message(&error)),
+               error, "read_VTK_flow_field");
   Sampled::Unstructured_grid cells;
-  expect_empty(FAS::IO::read_VTK_flow_field(empty, cells, &error), error, "read_VTK_flow_field");
-  expect_empty(FAS::IO::read_AmiraMesh_flow_field(empty, regular, &error), error, "read_AmiraMesh_flow_field");
-  expect_empty(FAS::IO::read_NRRD_flow_field(empty, regular, &error), error, "read_NRRD_flow_field");
+  expect_empty(FAS::IO::read_VTK_flow_field(empty, cells, FAS::parameters::error_message(&error)), error,
+               "read_VTK_flow_field");
+  expect_empty(FAS::IO::read_AmiraMesh_flow_field(empty, regular, FAS::parameters::error_message(&error)),
+               error, "read_AmiraMesh_flow_field");
+  expect_empty(FAS::IO::read_NRRD_flow_field(empty, regular, FAS::parameters::error_message(&error)), error,
+               "read_NRRD_flow_field");
   FAS::Session session;
   expect_empty(FAS::IO::read_session(empty, session, &error), error, "read_session");
 }
@@ -207,15 +213,20 @@ TEST(ReadFlowField, DirectoryIsCalledADirectoryByEveryReader)
   };
   std::string error;
   Sampled sampled(linear_grid());
-  expect_directory(FAS::IO::read_flow_field(folder, sampled, &error), error, "read_flow_field");
+  expect_directory(FAS::IO::read_flow_field(folder, sampled, FAS::parameters::error_message(&error)), error,
+                   "read_flow_field");
   EXPECT_NE(sampled.get_if<Sampled::Regular_grid>(), nullptr) << "the field is kept";
   Sampled::Regular_grid regular;
-  expect_directory(FAS::IO::read_VTK_flow_field(folder, regular, &error), error, "read_VTK_flow_field");
+  expect_directory(FAS::IO::read_VTK_flow_field(folder, regular, FAS::parameters::error_message(&error)),
+                   error, "read_VTK_flow_field");
   Sampled::Unstructured_grid cells;
-  expect_directory(FAS::IO::read_VTK_flow_field(folder, cells, &error), error, "read_VTK_flow_field");
-  expect_directory(FAS::IO::read_AmiraMesh_flow_field(folder, regular, &error), error,
-                   "read_AmiraMesh_flow_field");
-  expect_directory(FAS::IO::read_NRRD_flow_field(folder, regular, &error), error, "read_NRRD_flow_field");
+  expect_directory(FAS::IO::read_VTK_flow_field(folder, cells, FAS::parameters::error_message(&error)), error,
+                   "read_VTK_flow_field");
+  expect_directory(
+      FAS::IO::read_AmiraMesh_flow_field(folder, regular, FAS::parameters::error_message(&error)), error,
+      "read_AmiraMesh_flow_field");
+  expect_directory(FAS::IO::read_NRRD_flow_field(folder, regular, FAS::parameters::error_message(&error)),
+                   error, "read_NRRD_flow_field");
   std::filesystem::remove(folder);
 }
 
@@ -226,9 +237,8 @@ TEST(ReadFlowField, RealDataInBothForms)
     GTEST_SKIP() << "../shared/data/CAVITY_{cells,grid}.vtk not found: the real-data check is not run";
   Sampled from_cells, from_grid;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_flow_field(cells, from_cells, CGAL::parameters::default_values(), &error))
-      << error;
-  ASSERT_TRUE(FAS::IO::read_flow_field(grid, from_grid, CGAL::parameters::default_values(), &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_flow_field(cells, from_cells, FAS::parameters::error_message(&error))) << error;
+  ASSERT_TRUE(FAS::IO::read_flow_field(grid, from_grid, FAS::parameters::error_message(&error))) << error;
   EXPECT_NE(from_cells.get_if<Sampled::Unstructured_grid>(), nullptr);
   EXPECT_NE(from_grid.get_if<Sampled::Regular_grid>(), nullptr);
   // At the grid's nodes the two forms agree to the float rounding of the resampled grid (see

@@ -49,7 +49,7 @@ const std::string& binary_grid_file()
     const Grid grid = FAS::sample_on_grid([](const Point& p) { return std::optional<Vector>(linear(p)); },
                                           Point(0, 0, 0), Vector(0.125, 0.125, 0.125), {{64, 64, 64}});
     std::string error;
-    if (!FAS::IO::write_VTK_flow_field(name, grid, &error))
+    if (!FAS::IO::write_VTK_flow_field(name, grid, FAS::parameters::error_message(&error)))
       ADD_FAILURE() << error;
     return name;
   }();
@@ -64,7 +64,8 @@ template <class NamedParameters>
   const std::size_t before = number_of_threads();
   Grid grid;
   std::string error;
-  const bool read = FAS::IO::read_VTK_flow_field(binary_grid_file(), grid, np, &error);
+  const bool read =
+      FAS::IO::read_VTK_flow_field(binary_grid_file(), grid, FAS::parameters::error_message(&error, np));
   const std::size_t after = number_of_threads();
   const Point p(3.3, 4.4, 5.5);
   const bool right = read && grid(p) && (*grid(p) - linear(p)).squared_length() < 1e-8;

@@ -68,7 +68,7 @@ TEST(WriteVTP, MeshAndArraysReadBack)
   const auto path = scratch("disk.vtp");
   std::string error;
   ASSERT_TRUE(FAS::IO::write_VTP(path.string(), tm, {{"height", 1, height}}, {{"id", 1, ids}},
-                                 CGAL::parameters::default_values(), &error))
+                                 FAS::parameters::error_message(&error)))
       << error;
   const std::string xml = read_file(path);
   EXPECT_NE(xml.find("NumberOfPoints=\"" + std::to_string(tm.number_of_vertices()) + "\""),
@@ -107,14 +107,13 @@ TEST(WriteVTP, FailureLeavesExistingFileAndNamesTheProblem)
   }
   std::string error;
   EXPECT_FALSE(FAS::IO::write_VTP(path.string(), tm, {{"short", 1, {1.0, 2.0}}}, {},
-                                  CGAL::parameters::default_values(), &error));
+                                  FAS::parameters::error_message(&error)));
   EXPECT_NE(error.find("short"), std::string::npos) << error;
   EXPECT_NE(error.find(path.string()), std::string::npos) << error;
   EXPECT_EQ(read_file(path), "precious");
 
   const auto unwritable = scratch("no_such_folder") / "x.vtp";
-  EXPECT_FALSE(
-      FAS::IO::write_VTP(unwritable.string(), tm, {}, {}, CGAL::parameters::default_values(), &error));
+  EXPECT_FALSE(FAS::IO::write_VTP(unwritable.string(), tm, {}, {}, FAS::parameters::error_message(&error)));
   EXPECT_NE(error.find("cannot open"), std::string::npos) << error;
 }
 

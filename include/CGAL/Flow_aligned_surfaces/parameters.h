@@ -17,6 +17,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <functional>
+#include <string>
 #include <type_traits>
 #include <utility>
 
@@ -37,6 +38,7 @@ CGAL_FAS_DECLARE_TAG(use_parallelism)
 CGAL_FAS_DECLARE_TAG(patch_axis)
 CGAL_FAS_DECLARE_TAG(array_name)
 CGAL_FAS_DECLARE_TAG(mask_array_name)
+CGAL_FAS_DECLARE_TAG(error_message)
 CGAL_FAS_DECLARE_TAG(growth_direction)
 CGAL_FAS_DECLARE_TAG(across_flow)
 CGAL_FAS_DECLARE_TAG(flow_field)
@@ -124,6 +126,18 @@ CGAL_FAS_NAMED_PARAMETER(array_name, std::string)
 /// The name of the node mask array (nonzero = fluid) that a flow field reader reads, or that a
 /// writer writes.  Default: `"inside"` (read only if present); the empty string reads no mask.
 CGAL_FAS_NAMED_PARAMETER(mask_array_name, std::string)
+/// \ingroup PkgFlowAlignedSurfacesNamedParameters
+/// Where a reader or writer of files (`IO::read_flow_field()`, `IO::read_VTK_flow_field()`,
+/// `IO::write_VTK_flow_field()`, ...) puts the reason of a failure: when it returns `false`,
+/// `*error` holds a message naming the function, the file and what is wrong (the line and byte
+/// for a reader).  `*error` is left as it is on success.  Default: `nullptr`, no message.
+template <typename NamedParameters = Default_named_parameters>
+CGAL::Named_function_parameters<std::string*, internal_np::error_message_t, NamedParameters>
+error_message(std::string* error, const NamedParameters& np = NamedParameters())
+{
+  return CGAL::Named_function_parameters<std::string*, internal_np::error_message_t, NamedParameters>(error,
+                                                                                                      np);
+}
 /// \ingroup PkgFlowAlignedSurfacesNamedParameters
 /// Growing (`grow_boundary()`, `Flow_aligned_deformation::grow()`): grow only the boundary edges
 /// whose outward direction is within 60 degrees of the direction across the flow `n × v/|v|`, on

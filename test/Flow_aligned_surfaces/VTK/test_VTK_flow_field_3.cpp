@@ -415,11 +415,12 @@ TEST(VTKFlowField3, SharedCylinderDataReadByVTKAgreesWithThePackagesReaders)
 
   Grid grid;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(grid_file, grid, &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(grid_file, grid, FAS::parameters::error_message(&error))) << error;
   const Field on_grid(read(grid_file).Get(), FAS::parameters::array_name("velocity"));
   ASSERT_NE(on_grid.mask_array(), nullptr);
   FAS::Unstructured_flow_field_3<K> cells;
-  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(cells_file, cells, &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(cells_file, cells, FAS::parameters::error_message(&error)))
+      << error;
   const Field on_cells(read(cells_file).Get());
 
   CGAL::Random random(5);

@@ -45,7 +45,7 @@ TEST(FlowTextureIO, VTKFindsTheTextureCoordinatesAndTheMaskInTheVTP)
   std::string error;
   ASSERT_TRUE(FAS::IO::write_VTP(file, tm,
                                  {{"r", 1, std::vector<double>(tm.number_of_vertices(), 1.0)}, texture},
-                                 {{"texture_mask", 1, mask}}, CGAL::parameters::default_values(), &error))
+                                 {{"texture_mask", 1, mask}}, FAS::parameters::error_message(&error)))
       << error;
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
   reader->SetFileName(file.c_str());

@@ -50,7 +50,7 @@ struct Reader {
   template <class NamedParameters>
   bool operator()(const std::string& file, Grid& g, const NamedParameters& np, std::string* error) const
   {
-    return FAS::IO::read_NRRD_flow_field(file, g, np, error);
+    return FAS::IO::read_NRRD_flow_field(file, g, FAS::parameters::error_message(error, np));
   }
 };
 const fas_test::Grid_reader_checks<Reader> checks("fas_read_NRRD_vtk_");

@@ -338,7 +338,7 @@ TEST(ReadVTKXML, UnstructuredGridOfEveryCellKindGivesTheLinearFieldExactly)
     Cells field(std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 2, 3}, {0, 4}, {10},
                 std::vector<float>(12, 0.f));
     std::string error;
-    ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, field, CGAL::parameters::default_values(), &error))
+    ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, field, FAS::parameters::error_message(&error)))
         << error;
     EXPECT_EQ(field.number_of_points(), 13u);
     ASSERT_EQ(field.number_of_cells(), 5u);
@@ -373,8 +373,7 @@ TEST(ReadVTKXML, VoxelsAreReadAsHexahedra)
   Cells field(std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 2, 3}, {0, 4}, {10},
               std::vector<float>(12, 0.f));
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, field, CGAL::parameters::default_values(), &error))
-      << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, field, FAS::parameters::error_message(&error))) << error;
   EXPECT_EQ(field.cell_types(), (std::vector<unsigned char>{12, 10}));
   EXPECT_EQ(field.connectivity(), (std::vector<Cells::Index>{0, 1, 2, 3, 4, 5, 6, 7, 0, 3, 4, 12}));
   std::mt19937 rng(12);
@@ -400,8 +399,7 @@ TEST(ReadVTKXML, UnstructuredMaskRemovesTheCellsTouchingSolidPoints)
   write_with_VTK<vtkXMLUnstructuredGridWriter>(m.grid, file);
   Cells field;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, field, CGAL::parameters::default_values(), &error))
-      << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, field, FAS::parameters::error_message(&error))) << error;
   ASSERT_EQ(field.number_of_cells(), 4u);
   std::mt19937 rng(5);
   EXPECT_FALSE(field(random_point_in(m.grid, {0, 3, 4, 12}, rng)).has_value());
@@ -409,8 +407,8 @@ TEST(ReadVTKXML, UnstructuredMaskRemovesTheCellsTouchingSolidPoints)
   expect_near(*field(p), exact(p), 1e-9, "wedge");
 
   // No mask when asked for none.
-  ASSERT_TRUE(
-      FAS::IO::read_VTK_XML_flow_field(file, field, FAS::parameters::mask_array_name(std::string()), &error))
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(
+      file, field, FAS::parameters::error_message(&error, FAS::parameters::mask_array_name(std::string()))))
       << error;
   EXPECT_EQ(field.number_of_cells(), 5u);
 }
@@ -436,8 +434,7 @@ TEST(ReadVTKXML, CurvilinearStructuredGridGivesTheLinearFieldExactly)
 
   Cells field;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, field, CGAL::parameters::default_values(), &error))
-      << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, field, FAS::parameters::error_message(&error))) << error;
   EXPECT_EQ(field.number_of_points(), 60u);
   EXPECT_EQ(field.number_of_cells(), 3u * 2u * 4u);
   std::mt19937 rng(2);
@@ -467,7 +464,9 @@ TEST(ReadVTKXML, VTIWriterIsReadByVTKWithTheSameValuesAndGeometry)
   const Grid grid = sample_grid();
   const std::string file = temporary("written.vti");
   std::string error;
-  ASSERT_TRUE(FAS::IO::write_VTI_flow_field(file, grid, FAS::parameters::array_name("u v"), &error)) << error;
+  ASSERT_TRUE(FAS::IO::write_VTI_flow_field(
+      file, grid, FAS::parameters::error_message(&error, FAS::parameters::array_name("u v"))))
+      << error;
   EXPECT_FALSE(std::filesystem::exists(file + ".partial"));
 
   // The peer: VTK's own reader.  The data are inline, which every VTK reads, ParaView 5.11's on
@@ -509,8 +508,7 @@ TEST(ReadVTKXML, VTIWriterIsReadByVTKWithTheSameValuesAndGeometry)
 
   // Through our reader: the same grid.
   Grid back;
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, back, CGAL::parameters::default_values(), &error))
-      << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, back, FAS::parameters::error_message(&error))) << error;
   EXPECT_EQ(back.dimensions(), grid.dimensions());
   EXPECT_EQ(back.origin(), grid.origin());
   EXPECT_EQ(back.spacing(), grid.spacing());
@@ -520,8 +518,7 @@ TEST(ReadVTKXML, VTIWriterIsReadByVTKWithTheSameValuesAndGeometry)
   // And as hexahedra: the same values wherever both are defined, and defined at the same places
   // inside the cells (the ones touching a solid node are out of both).
   Cells cells;
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, cells, CGAL::parameters::default_values(), &error))
-      << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, cells, FAS::parameters::error_message(&error))) << error;
   EXPECT_LT(cells.number_of_cells(), 4u * 3u * 2u);
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> x(0.1, 0.5), y(-2.5, -1.5), z(1e-3, 1.401);
@@ -551,14 +548,16 @@ TEST(ReadVTKXML, VTIWriterFailuresAreReportedAndKeepTheExistingFile)
   const std::string file = temporary("kept.vti");
   write_bytes(file, "what the user had");
   std::string error;
-  EXPECT_FALSE(FAS::IO::write_VTI_flow_field(file, grid, FAS::parameters::array_name(""), &error));
+  EXPECT_FALSE(FAS::IO::write_VTI_flow_field(
+      file, grid, FAS::parameters::error_message(&error, FAS::parameters::array_name(""))));
   EXPECT_NE(error.find("write_VTI_flow_field: " + file + ": an array name is empty"), std::string::npos)
       << error;
-  EXPECT_FALSE(FAS::IO::write_VTI_flow_field(file, grid, FAS::parameters::array_name("inside"), &error));
+  EXPECT_FALSE(FAS::IO::write_VTI_flow_field(
+      file, grid, FAS::parameters::error_message(&error, FAS::parameters::array_name("inside"))));
   EXPECT_NE(error.find("both named 'inside'"), std::string::npos) << error;
   EXPECT_EQ(read_bytes(file), "what the user had");
   const std::string nowhere = temporary("no_such_folder/field.vti");
-  EXPECT_FALSE(FAS::IO::write_VTI_flow_field(nowhere, grid, CGAL::parameters::default_values(), &error));
+  EXPECT_FALSE(FAS::IO::write_VTI_flow_field(nowhere, grid, FAS::parameters::error_message(&error)));
   EXPECT_NE(error.find("write_VTI_flow_field: " + nowhere + ": cannot open"), std::string::npos) << error;
 }
 
@@ -576,8 +575,7 @@ TEST(ReadVTKXML, ImageWrittenByVTKWithAShiftedExtentGivesTheLinearField)
   write_with_VTK<vtkXMLImageDataWriter>(image, file);
   Grid grid;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, grid, CGAL::parameters::default_values(), &error))
-      << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, grid, FAS::parameters::error_message(&error))) << error;
   EXPECT_EQ(grid.origin(), Point(2, 3, 3.75));
   EXPECT_EQ(grid.dimensions(), (Grid::Dimensions{{5, 3, 3}}));
   std::mt19937 rng(4);
@@ -587,7 +585,8 @@ TEST(ReadVTKXML, ImageWrittenByVTKWithAShiftedExtentGivesTheLinearField)
     expect_near(*grid(p), exact(p), 1e-9, "shifted image");
   }
   // The active vectors were chosen ("second"); "first" by name gives the same values.
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, grid, FAS::parameters::array_name("first"), &error))
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(
+      file, grid, FAS::parameters::error_message(&error, FAS::parameters::array_name("first"))))
       << error;
   expect_near(*grid(Point(3, 4, 4)), exact(Point(3, 4, 4)), 1e-9, "by name");
 }
@@ -606,7 +605,9 @@ std::size_t expect_read_like_VTK(vtkDataSet* data, const std::string& extension)
     write_with_VTK<Writer>(data, file, m);
     Field field;
     std::string error;
-    if (!FAS::IO::read_VTK_XML_flow_field(file, field, FAS::parameters::mask_array_name(std::string()), &error)) {
+    if (!FAS::IO::read_VTK_XML_flow_field(
+            file, field,
+            FAS::parameters::error_message(&error, FAS::parameters::mask_array_name(std::string())))) {
       ADD_FAILURE() << what << ": " << error;
       continue;
     }
@@ -682,7 +683,8 @@ TEST(ReadVTKXML, ImagesInEveryModeAreReadAsVTKReadsThem)
     write_with_VTK<vtkXMLImageDataWriter>(image, file, m);
     Grid g;
     std::string error;
-    ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, g, &error)) << what << ": " << error;
+    ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(file, g, FAS::parameters::error_message(&error)))
+        << what << ": " << error;
     std::string vtk_errors;
     vtkSmartPointer<vtkDataSet> by_VTK = read_with_VTK<vtkXMLImageDataReader>(file, vtk_errors);
     vtk_failed += by_VTK == nullptr;
@@ -704,7 +706,7 @@ TEST(ReadVTKXML, RealUnsteadyCylinderSeriesIsReadAsVTKReadsIt)
     GTEST_SKIP() << pvd << " not found";
   FAS::Unsteady_flow_field_3<Grid> series;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_PVD_flow_field(pvd, series, &error)) << error;
+  ASSERT_TRUE(FAS::IO::read_PVD_flow_field(pvd, series, FAS::parameters::error_message(&error))) << error;
   ASSERT_EQ(series.number_of_steps(), 34u);
   EXPECT_EQ(series.time(0), 6.5);
   EXPECT_EQ(series.time(33), 6.833373);
@@ -725,7 +727,7 @@ void expect_read_fails(const std::string& file, const std::vector<std::string>& 
 {
   std::string error;
   Cells empty;
-  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(file, empty, CGAL::parameters::default_values(), &error)) << file;
+  EXPECT_FALSE(FAS::IO::read_VTK_XML_flow_field(file, empty, FAS::parameters::error_message(&error))) << file;
   EXPECT_EQ(empty.bbox(), CGAL::Bbox_3());
   EXPECT_NE(error.find("read_VTK_XML_flow_field: " + file + ": "), std::string::npos) << error;
   for (const std::string& part : parts)
@@ -796,16 +798,14 @@ TEST(ReadVTKXML, TimeSeriesOfThreeStepsIsExactAtIntermediateTimes)
 
   FAS::Unsteady_flow_field_3<Grid> grids;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_PVD_flow_field(grid_pvd, grids, CGAL::parameters::default_values(), &error))
-      << error;
+  ASSERT_TRUE(FAS::IO::read_PVD_flow_field(grid_pvd, grids, FAS::parameters::error_message(&error))) << error;
   ASSERT_EQ(grids.number_of_steps(), 3u);
   for (std::size_t i = 0; i < 3; ++i)
     EXPECT_EQ(grids.time(i), times[i]);
   FAS::Unsteady_flow_field_3<Cells> cells = FAS::Unsteady_flow_field_3<Cells>(
       {0.}, {Cells(std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 1, 2, 3}, {0, 4}, {10},
                    std::vector<float>(12, 0.f))});
-  ASSERT_TRUE(FAS::IO::read_PVD_flow_field(cell_pvd, cells, CGAL::parameters::default_values(), &error))
-      << error;
+  ASSERT_TRUE(FAS::IO::read_PVD_flow_field(cell_pvd, cells, FAS::parameters::error_message(&error))) << error;
   ASSERT_EQ(cells.number_of_steps(), 3u);
   EXPECT_EQ(cells.step(1).number_of_cells(), 5u);
 
@@ -850,8 +850,7 @@ TEST(ReadVTKXML, RealCylinderDataConvertedByVTKGivesTheStatedFigures)
 
   Grid grid;
   std::string error;
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(vti, grid, CGAL::parameters::default_values(), &error))
-      << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(vti, grid, FAS::parameters::error_message(&error))) << error;
   EXPECT_EQ(grid.dimensions(), (Grid::Dimensions{{251, 42, 42}}));
   EXPECT_EQ(grid.origin(), Point(0, 0, 0));
   EXPECT_NEAR(grid.spacing().x(), 0.01, 1e-15);
@@ -868,8 +867,7 @@ TEST(ReadVTKXML, RealCylinderDataConvertedByVTKGivesTheStatedFigures)
   EXPECT_NEAR(max_speed, 0.5093556873570264, 1e-6);
 
   Cells cells;
-  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(vtu, cells, CGAL::parameters::default_values(), &error))
-      << error;
+  ASSERT_TRUE(FAS::IO::read_VTK_XML_flow_field(vtu, cells, FAS::parameters::error_message(&error))) << error;
   EXPECT_EQ(cells.number_of_points(), 197505u);
   EXPECT_EQ(cells.number_of_cells(), 185344u);
 

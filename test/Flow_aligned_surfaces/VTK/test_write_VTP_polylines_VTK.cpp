@@ -35,7 +35,7 @@ TEST(write_VTP_polylines, read_back_by_VTK)
   const auto path = polylines_scratch("lines.vtp");
   std::string error;
   ASSERT_TRUE(FAS::IO::write_VTP_polylines(path.string(), lines, {{"t", 1, {0., 1., 2., 0., std::nan("")}}},
-                                           {{"id", 1, {10., 11.}}}, &error))
+                                           {{"id", 1, {10., 11.}}}, FAS::parameters::error_message(&error)))
       << error;
   vtkNew<vtkXMLPolyDataReader> reader;
   reader->SetFileName(path.string().c_str());

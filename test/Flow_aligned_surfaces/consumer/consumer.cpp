@@ -48,7 +48,7 @@ int main(int argc, char** argv)
                                           << gz;
     FAS::Regular_grid_flow_field_3<K> grid;
     std::string error;
-    if (!FAS::IO::read_NRRD_flow_field(file, grid, CGAL::parameters::default_values(), &error) ||
+    if (!FAS::IO::read_NRRD_flow_field(file, grid, FAS::parameters::error_message(&error)) ||
         grid.node_value(1, 0, 1) != Vector(1, 0, 1)) {
       std::cerr << "consumer: the gzip NRRD file was not read right: " << error << "\n";
       return 3;
@@ -64,8 +64,9 @@ int main(int argc, char** argv)
       const FAS::Regular_grid_flow_field_3<K> written(Point(0, 0, 0), Vector(1, 1, 1), {{2, 2, 2}}, values);
       FAS::Regular_grid_flow_field_3<K> read;
       std::string error;
-      if (!FAS::IO::write_VTI_flow_field(vti, written, &error) ||
-          !FAS::IO::read_VTK_XML_flow_field(vti, read, &error) || read.values() != values) {
+      if (!FAS::IO::write_VTI_flow_field(vti, written, FAS::parameters::error_message(&error)) ||
+          !FAS::IO::read_VTK_XML_flow_field(vti, read, FAS::parameters::error_message(&error)) ||
+          read.values() != values) {
         std::cerr << "consumer: the VTK XML image was not written and read back right: " << error << "\n";
         return 4;
       }

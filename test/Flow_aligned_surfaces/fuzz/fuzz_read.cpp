@@ -38,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string file = fuzz_input_file(data, size, FAS_FUZZ_EXTENSION);
   FAS::Regular_grid_flow_field_3<K> field;
   std::string error;
-  if (FAS::IO::FAS_FUZZ_READ(file, field, CGAL::parameters::default_values(), &error)) {
+  if (FAS::IO::FAS_FUZZ_READ(file, field, FAS::parameters::error_message(&error))) {
     // A field read must answer at its own nodes.
     const auto n = field.dimensions();
     (void)field(field.node_point(n[0] / 2, n[1] / 2, n[2] / 2));
@@ -46,11 +46,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   else if (error.empty())
     __builtin_trap(); // a failure must say why
 #if FAS_FUZZ_HAS_MASK
-  FAS::IO::FAS_FUZZ_READ(file, field,
-                         FAS::parameters::array_name("velocity", FAS::parameters::mask_array_name("inside")),
-                         &error);
+  FAS::IO::FAS_FUZZ_READ(
+      file, field,
+      FAS::parameters::error_message(
+          &error, FAS::parameters::array_name("velocity", FAS::parameters::mask_array_name("inside"))));
 #else
-  FAS::IO::FAS_FUZZ_READ(file, field, FAS::parameters::array_name("velocity"), &error);
+  FAS::IO::FAS_FUZZ_READ(file, field,
+                         FAS::parameters::error_message(&error, FAS::parameters::array_name("velocity")));
 #endif
   return 0;
 }

@@ -39,7 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   std::string error;
   Cells cells;
-  bool read = FAS::IO::read_VTK_XML_flow_field(file, cells, CGAL::parameters::default_values(), &error);
+  bool read = FAS::IO::read_VTK_XML_flow_field(file, cells, FAS::parameters::error_message(&error));
   check(read, error);
   if (read) // a field read must answer at one of its points
     (void)cells(K::Point_3(cells.points()[0], cells.points()[1], cells.points()[2]));
@@ -47,8 +47,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FAS::Regular_grid_flow_field_3<K> grid;
     error.clear();
     read = FAS::IO::read_VTK_XML_flow_field(
-        file, grid, FAS::parameters::array_name("velocity", FAS::parameters::mask_array_name("inside")),
-        &error);
+        file, grid,
+        FAS::parameters::error_message(
+            &error, FAS::parameters::array_name("velocity", FAS::parameters::mask_array_name("inside"))));
     check(read, error);
     if (read) {
       const auto n = grid.dimensions();
@@ -58,7 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (bytes.find("Grid") != std::string_view::npos || bytes.find("Image") != std::string_view::npos) {
     FAS::Rectilinear_grid_flow_field_3<K> rectilinear;
     error.clear();
-    read = FAS::IO::read_VTK_XML_flow_field(file, rectilinear, CGAL::parameters::default_values(), &error);
+    read = FAS::IO::read_VTK_XML_flow_field(file, rectilinear, FAS::parameters::error_message(&error));
     check(read, error);
   }
   const std::size_t separator = bytes.find("\n--DATA--\n");
@@ -67,7 +68,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz_write(pvd, bytes.substr(0, separator + 1));
     FAS::Unsteady_flow_field_3<Cells> series;
     error.clear();
-    read = FAS::IO::read_PVD_flow_field(pvd, series, CGAL::parameters::default_values(), &error);
+    read = FAS::IO::read_PVD_flow_field(pvd, series, FAS::parameters::error_message(&error));
     check(read, error);
     if (read)
       (void)series(K::Point_3(0., 0., 0.), series.start_time());

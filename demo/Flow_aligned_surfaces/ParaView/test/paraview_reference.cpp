@@ -79,7 +79,7 @@ int write_field(const std::string& out)
   const auto grid = FAS::Regular_grid_flow_field_3<K>::sample(
       flow, K::Point_3(-3, -2, -1), K::Vector_3(0.1, 0.1, 0.1), {{61, 41, 21}});
   std::string error;
-  if (!FAS::IO::write_VTI_flow_field(out, grid, &error)) {
+  if (!FAS::IO::write_VTI_flow_field(out, grid, FAS::parameters::error_message(&error))) {
     std::cerr << error << "\n";
     return 1;
   }
@@ -89,7 +89,7 @@ int write_field(const std::string& out)
 bool read_field(const char* filename, FAS::Sampled_flow_field_3<K>& field)
 {
   std::string error;
-  if (!FAS::IO::read_flow_field(filename, field, &error)) {
+  if (!FAS::IO::read_flow_field(filename, field, FAS::parameters::error_message(&error))) {
     std::cerr << error << "\n";
     return false;
   }
@@ -99,7 +99,7 @@ bool read_field(const char* filename, FAS::Sampled_flow_field_3<K>& field)
 bool write_surface(const std::string& filename, const Mesh& tm, const std::vector<FAS::IO::Data_array>& point_data)
 {
   std::string error;
-  if (!FAS::IO::write_VTP(filename, tm, point_data, {}, CGAL::parameters::default_values(), &error)) {
+  if (!FAS::IO::write_VTP(filename, tm, point_data, {}, FAS::parameters::error_message(&error))) {
     std::cerr << error << "\n";
     return false;
   }
@@ -392,8 +392,10 @@ int parametrize(char** argv)
   for (const K::Point_3& p : seeds)
     seed_text << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
   std::string error;
-  if (!FAS::IO::write_VTP(prefix + "_surface.vtp", tm, point_data, {}, CGAL::parameters::default_values(), &error) ||
-      !FAS::IO::write_VTP_polylines(prefix + "_curves.vtp", curves, {point_values}, {cell_values}, &error)) {
+  if (!FAS::IO::write_VTP(prefix + "_surface.vtp", tm, point_data, {},
+                          FAS::parameters::error_message(&error)) ||
+      !FAS::IO::write_VTP_polylines(prefix + "_curves.vtp", curves, {point_values}, {cell_values},
+                                    FAS::parameters::error_message(&error))) {
     std::cerr << error << "\n";
     return 1;
   }
@@ -436,7 +438,7 @@ int texture(char** argv)
   std::string error;
   if (!FAS::IO::write_VTP(prefix + "_surface.vtp", tm,
                           {vertex_data(tm, "r", 1, r), vertex_data(tm, "s", 1, s), coordinates}, {face_mask},
-                          CGAL::parameters::default_values(), &error)) {
+                          FAS::parameters::error_message(&error))) {
     std::cerr << error << "\n";
     return 1;
   }

@@ -43,11 +43,10 @@ namespace internal {
 // with `field` untouched.
 template <class Field, class NamedParameters, class Read>
 bool read_VTK_XML(const char* reader, const std::string& filename, Field& field, const NamedParameters& np,
-                  std::string* error, const Read& read)
+                  const Read& read)
 {
   const Array_names names = array_names(np);
-  return read_into(reader, filename, field, error, reads_in_parallel(np),
-                   [&] { return read(names.array_name(), names.mask_name()); });
+  return read_into(reader, filename, field, np, [&] { return read(names.array_name(), names.mask_name()); });
 }
 
 } // namespace internal
@@ -83,7 +82,6 @@ and stored as zero.
 \param field the field to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
 \param np an optional sequence of named parameters among the ones listed below
-\param error if not null, receives the reason of a failure
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{array_name}
@@ -104,34 +102,26 @@ and stored as zero.
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
+  \cgalParamNBegin{error_message}
+    \cgalParamDescription{where the reason of a failure goes (`FAS::parameters::error_message()`):
+      a message naming the reader, the file, the line and/or byte, and what is wrong}
+    \cgalParamType{`std::string*`}
+    \cgalParamDefault{`nullptr`: no message}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+\returns `true` on success; `false` otherwise, with the reason in the string of `error_message` when it is given.
 
 \sa `write_VTI_flow_field()`, `read_VTK_flow_field()`, `read_PVD_flow_field()`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool read_VTK_XML_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field,
-                             const NamedParameters& np = CGAL::parameters::default_values(),
-                             std::string* error = nullptr)
+                             const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::read_VTK_XML("read_VTK_XML_flow_field", filename, field, np, error,
+  return internal::read_VTK_XML("read_VTK_XML_flow_field", filename, field, np,
                                 [&](const std::string* a, const std::string* m) {
                                   return internal::read_VTK_XML_grid<K>(filename, a, m);
                                 });
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief As the overload above with the default named parameters: the reason of a failure is in
-`error` without naming `CGAL::parameters::default_values()` first, as in
-`read_VTK_XML_flow_field(filename, field, &error)`.
-*/
-template <class K>
-bool read_VTK_XML_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field, std::string* error)
-{
-  return read_VTK_XML_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 /*!
@@ -149,35 +139,21 @@ for the overload reading a `Regular_grid_flow_field_3`.
 
 \param filename the file to read
 \param field the field to fill: assigned on success, left untouched on failure
-\param np an optional sequence of named parameters: `array_name`, `mask_array_name` and
-       `use_parallelism`, as for the overload reading a `Regular_grid_flow_field_3`
-\param error if not null, receives the reason of a failure
+\param np an optional sequence of named parameters: `array_name`, `mask_array_name`,
+       `use_parallelism` and `error_message`, as for the overload reading a `Regular_grid_flow_field_3`
 
-\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+\returns `true` on success; `false` otherwise, with the reason in the string of `error_message` when it is given.
 
 \sa `Rectilinear_grid_flow_field_3`, `read_VTK_flow_field()`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool read_VTK_XML_flow_field(const std::string& filename, Rectilinear_grid_flow_field_3<K>& field,
-                             const NamedParameters& np = CGAL::parameters::default_values(),
-                             std::string* error = nullptr)
+                             const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::read_VTK_XML("read_VTK_XML_flow_field", filename, field, np, error,
+  return internal::read_VTK_XML("read_VTK_XML_flow_field", filename, field, np,
                                 [&](const std::string* a, const std::string* m) {
                                   return internal::read_VTK_XML_rectilinear<K>(filename, a, m);
                                 });
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief As the overload above with the default named parameters.
-*/
-template <class K>
-bool read_VTK_XML_flow_field(const std::string& filename, Rectilinear_grid_flow_field_3<K>& field,
-                             std::string* error)
-{
-  return read_VTK_XML_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 /*!
@@ -202,36 +178,21 @@ there, and also a grid without cells or without any cell whose points are all fl
 \param filename the file to read
 \param field the field to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
-\param np an optional sequence of named parameters: `array_name`, `mask_array_name` and `use_parallelism`, as for
-       the overload reading a `Regular_grid_flow_field_3`
-\param error if not null, receives the reason of a failure
+\param np an optional sequence of named parameters: `array_name`, `mask_array_name`, `use_parallelism` and
+       `error_message`, as for the overload reading a `Regular_grid_flow_field_3`
 
-\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+\returns `true` on success; `false` otherwise, with the reason in the string of `error_message` when it is given.
 
 \sa `Unstructured_flow_field_3`, `read_PVD_flow_field()`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool read_VTK_XML_flow_field(const std::string& filename, Unstructured_flow_field_3<K>& field,
-                             const NamedParameters& np = CGAL::parameters::default_values(),
-                             std::string* error = nullptr)
+                             const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::read_VTK_XML("read_VTK_XML_flow_field", filename, field, np, error,
+  return internal::read_VTK_XML("read_VTK_XML_flow_field", filename, field, np,
                                 [&](const std::string* a, const std::string* m) {
                                   return internal::read_VTK_XML_cells<K>(filename, a, m);
                                 });
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief As the overload above with the default named parameters: the reason of a failure is in
-`error` without naming `CGAL::parameters::default_values()` first, as in
-`read_VTK_XML_flow_field(filename, field, &error)`.
-*/
-template <class K>
-bool read_VTK_XML_flow_field(const std::string& filename, Unstructured_flow_field_3<K>& field, std::string* error)
-{
-  return read_VTK_XML_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 /*!
@@ -254,51 +215,37 @@ its file) and the reason given by the step's reader.
 \param filename the `.pvd` file to read
 \param field the series to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
-\param np an optional sequence of named parameters: `array_name`, `mask_array_name` and `use_parallelism`, as for
-       `read_VTK_XML_flow_field()`
-\param error if not null, receives the reason of a failure
+\param np an optional sequence of named parameters: `array_name`, `mask_array_name`, `use_parallelism` and
+       `error_message`, as for `read_VTK_XML_flow_field()`
 
-\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+\returns `true` on success; `false` otherwise, with the reason in the string of `error_message` when it is given.
 
 \sa `Unsteady_flow_field_3`, `read_VTK_XML_flow_field()`
 */
 template <class Field, class NamedParameters = parameters::Default_named_parameters>
 bool read_PVD_flow_field(const std::string& filename, Unsteady_flow_field_3<Field>& field,
-                         const NamedParameters& np = CGAL::parameters::default_values(),
-                         std::string* error = nullptr)
+                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::read_VTK_XML("read_PVD_flow_field", filename, field, np, error,
-                                [&](const std::string* a, const std::string* m) {
-    const std::vector<internal::PVD_step> steps = internal::read_PVD_steps("read_PVD_flow_field", filename);
-    std::vector<double> times;
-    std::vector<Field> fields;
-    times.reserve(steps.size());
-    fields.reserve(steps.size());
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-      try {
-        fields.push_back(internal::VTK_XML_field_reader<Field>::read(steps[i].file, a, m));
-      } catch (const internal::Read_error& e) {
-        throw internal::Read_error("read_PVD_flow_field: " + filename + ": step " + std::to_string(i) +
-                                   " (timestep " + internal::number_string(steps[i].time) + ", file " +
-                                   steps[i].file + "): " + e.what());
-      }
-      times.push_back(steps[i].time);
-    }
-    return Unsteady_flow_field_3<Field>(std::move(times), std::move(fields));
-  });
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief As the overload above with the default named parameters: the reason of a failure is in
-`error` without naming `CGAL::parameters::default_values()` first, as in
-`read_PVD_flow_field(filename, field, &error)`.
-*/
-template <class Field>
-bool read_PVD_flow_field(const std::string& filename, Unsteady_flow_field_3<Field>& field, std::string* error)
-{
-  return read_PVD_flow_field(filename, field, CGAL::parameters::default_values(), error);
+  return internal::read_VTK_XML(
+      "read_PVD_flow_field", filename, field, np, [&](const std::string* a, const std::string* m) {
+        const std::vector<internal::PVD_step> steps =
+            internal::read_PVD_steps("read_PVD_flow_field", filename);
+        std::vector<double> times;
+        std::vector<Field> fields;
+        times.reserve(steps.size());
+        fields.reserve(steps.size());
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+          try {
+            fields.push_back(internal::VTK_XML_field_reader<Field>::read(steps[i].file, a, m));
+          } catch (const internal::Read_error& e) {
+            throw internal::Read_error("read_PVD_flow_field: " + filename + ": step " + std::to_string(i) +
+                                       " (timestep " + internal::number_string(steps[i].time) + ", file " +
+                                       steps[i].file + "): " + e.what());
+          }
+          times.push_back(steps[i].time);
+        }
+        return Unsteady_flow_field_3<Field>(std::move(times), std::move(fields));
+      });
 }
 
 } // namespace IO

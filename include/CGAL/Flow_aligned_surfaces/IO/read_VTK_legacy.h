@@ -54,7 +54,6 @@ as in `Regular_grid_flow_field_3`.
 \param field the field to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
 \param np an optional sequence of named parameters among the ones listed below
-\param error if not null, receives the reason of a failure
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{array_name}
@@ -74,31 +73,23 @@ as in `Regular_grid_flow_field_3`.
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
+  \cgalParamNBegin{error_message}
+    \cgalParamDescription{where the reason of a failure goes (`FAS::parameters::error_message()`):
+      a message naming the reader, the file, the line and/or byte, and what is wrong}
+    \cgalParamType{`std::string*`}
+    \cgalParamDefault{`nullptr`: no message}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+\returns `true` on success; `false` otherwise, with the reason in the string of `error_message` when it is given.
 
 \sa `write_VTK_flow_field()`, `Regular_grid_flow_field_3`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool read_VTK_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field,
-                         const NamedParameters& np = CGAL::parameters::default_values(),
-                         std::string* error = nullptr)
+                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_grid<K>);
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief As the overload above with the default named parameters: the reason of a failure is in
-`error` without naming `CGAL::parameters::default_values()` first, as in
-`read_VTK_flow_field(filename, field, &error)`.
-*/
-template <class K>
-bool read_VTK_flow_field(const std::string& filename, Regular_grid_flow_field_3<K>& field, std::string* error)
-{
-  return read_VTK_flow_field(filename, field, CGAL::parameters::default_values(), error);
+  return internal::read_VTK_legacy(filename, field, np, &internal::read_VTK_legacy_grid<K>);
 }
 
 /*!
@@ -119,33 +110,18 @@ not finite or not increasing is named with its axis and index.
 \param filename the file to read
 \param field the field to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
-\param np an optional sequence of named parameters: `array_name`, `mask_array_name` and `use_parallelism`, as
-          in the `Regular_grid_flow_field_3` overload
-\param error if not null, receives the reason of a failure
+\param np an optional sequence of named parameters: `array_name`, `mask_array_name`, `use_parallelism`
+          and `error_message`, as in the `Regular_grid_flow_field_3` overload
 
-\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+\returns `true` on success; `false` otherwise, with the reason in the string of `error_message` when it is given.
 
 \sa `Rectilinear_grid_flow_field_3`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool read_VTK_flow_field(const std::string& filename, Rectilinear_grid_flow_field_3<K>& field,
-                         const NamedParameters& np = CGAL::parameters::default_values(),
-                         std::string* error = nullptr)
+                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_rectilinear<K>);
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief As the overload above with the default named parameters: the reason of a failure is in
-`error` without naming `CGAL::parameters::default_values()` first, as in
-`read_VTK_flow_field(filename, field, &error)`.
-*/
-template <class K>
-bool read_VTK_flow_field(const std::string& filename, Rectilinear_grid_flow_field_3<K>& field, std::string* error)
-{
-  return read_VTK_flow_field(filename, field, CGAL::parameters::default_values(), error);
+  return internal::read_VTK_legacy(filename, field, np, &internal::read_VTK_legacy_rectilinear<K>);
 }
 
 /*!
@@ -181,33 +157,18 @@ zero); every other point must have a finite velocity.
 \param filename the file to read
 \param field the field to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
-\param np an optional sequence of named parameters: `array_name`, `mask_array_name` and `use_parallelism`, as
-          in the `Regular_grid_flow_field_3` overload
-\param error if not null, receives the reason of a failure
+\param np an optional sequence of named parameters: `array_name`, `mask_array_name`, `use_parallelism`
+          and `error_message`, as in the `Regular_grid_flow_field_3` overload
 
-\returns `true` on success; `false` with the reason in `error` (when not null) otherwise.
+\returns `true` on success; `false` otherwise, with the reason in the string of `error_message` when it is given.
 
 \sa `Unstructured_flow_field_3`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool read_VTK_flow_field(const std::string& filename, Unstructured_flow_field_3<K>& field,
-                         const NamedParameters& np = CGAL::parameters::default_values(),
-                         std::string* error = nullptr)
+                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return internal::read_VTK_legacy(filename, field, np, error, &internal::read_VTK_legacy_cells<K>);
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief As the overload above with the default named parameters: the reason of a failure is in
-`error` without naming `CGAL::parameters::default_values()` first, as in
-`read_VTK_flow_field(filename, field, &error)`.
-*/
-template <class K>
-bool read_VTK_flow_field(const std::string& filename, Unstructured_flow_field_3<K>& field, std::string* error)
-{
-  return read_VTK_flow_field(filename, field, CGAL::parameters::default_values(), error);
+  return internal::read_VTK_legacy(filename, field, np, &internal::read_VTK_legacy_cells<K>);
 }
 
 } // namespace IO

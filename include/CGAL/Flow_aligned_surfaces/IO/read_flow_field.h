@@ -135,18 +135,17 @@ series (`.pvd`) are read by `read_PVD_flow_field()`.
 \param field the field to fill, for instance a default-constructed (empty) one: assigned on
        success, left untouched on failure
 \param np an optional sequence of named parameters, passed on to the reader of the format:
-`array_name` and `mask_array_name` (see `read_VTK_flow_field()`)
-\param error if not null, receives the reason of a failure: the one of the reader of the
-format, or, for a file of no supported format, a message naming the file and its first bytes
+`array_name`, `mask_array_name`, `use_parallelism` and `error_message` (see `read_VTK_flow_field()`)
 
-\returns `true` on success.
+\returns `true` on success; `false` otherwise, with the reason in the string of `error_message`
+when it is given: the one of the reader of the format, or, for a file of no supported format, a
+message naming the file and its first bytes.
 
 \sa `Sampled_flow_field_3`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field,
-                     const NamedParameters& np = CGAL::parameters::default_values(),
-                     std::string* error = nullptr)
+                     const NamedParameters& np = CGAL::parameters::default_values())
 {
   typedef Sampled_flow_field_3<K> Sampled;
   typedef typename Sampled::Regular_grid Regular;
@@ -155,33 +154,32 @@ bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field
   std::string head;
   switch (internal::flow_field_file_kind(filename, head)) {
   case internal::Flow_field_file_kind::LEGACY_UNIFORM_GRID:
-    return internal::read_as<Regular>(
-        field, [&](Regular& f) { return read_VTK_flow_field(filename, f, np, error); });
+    return internal::read_as<Regular>(field,
+                                      [&](Regular& f) { return read_VTK_flow_field(filename, f, np); });
   case internal::Flow_field_file_kind::LEGACY_RECTILINEAR_GRID:
     return internal::read_as<Rectilinear>(
-        field, [&](Rectilinear& f) { return read_VTK_flow_field(filename, f, np, error); });
+        field, [&](Rectilinear& f) { return read_VTK_flow_field(filename, f, np); });
   case internal::Flow_field_file_kind::LEGACY_CELLS:
-    return internal::read_as<Cells>(field,
-                                    [&](Cells& f) { return read_VTK_flow_field(filename, f, np, error); });
+    return internal::read_as<Cells>(field, [&](Cells& f) { return read_VTK_flow_field(filename, f, np); });
   case internal::Flow_field_file_kind::AMIRA_MESH:
-    return internal::read_as<Regular>(
-        field, [&](Regular& f) { return read_AmiraMesh_flow_field(filename, f, np, error); });
+    return internal::read_as<Regular>(field,
+                                      [&](Regular& f) { return read_AmiraMesh_flow_field(filename, f, np); });
   case internal::Flow_field_file_kind::NRRD_FILE:
-    return internal::read_as<Regular>(
-        field, [&](Regular& f) { return read_NRRD_flow_field(filename, f, np, error); });
+    return internal::read_as<Regular>(field,
+                                      [&](Regular& f) { return read_NRRD_flow_field(filename, f, np); });
   case internal::Flow_field_file_kind::XML_IMAGE_DATA:
-    return internal::read_as<Regular>(
-        field, [&](Regular& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
+    return internal::read_as<Regular>(field,
+                                      [&](Regular& f) { return read_VTK_XML_flow_field(filename, f, np); });
   case internal::Flow_field_file_kind::XML_RECTILINEAR_GRID:
     return internal::read_as<Rectilinear>(
-        field, [&](Rectilinear& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
+        field, [&](Rectilinear& f) { return read_VTK_XML_flow_field(filename, f, np); });
   case internal::Flow_field_file_kind::XML_CELLS:
-    return internal::read_as<Cells>(
-        field, [&](Cells& f) { return read_VTK_XML_flow_field(filename, f, np, error); });
+    return internal::read_as<Cells>(field,
+                                    [&](Cells& f) { return read_VTK_XML_flow_field(filename, f, np); });
   case internal::Flow_field_file_kind::UNKNOWN:
     break;
   }
-  if (error) {
+  if (std::string* const error = internal::error_output(np)) {
     std::ifstream probe(filename, std::ios::binary);
     std::error_code ec;
     // A directory opens as a stream that reads nothing: it would be called empty.
@@ -193,24 +191,11 @@ bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field
       *error = "read_flow_field: " + filename + ": the file is empty (0 bytes)";
     else
       *error = "read_flow_field: " + filename + ": unknown file format (it starts with '" +
-               Flow_aligned_surfaces::IO::internal::printable(head.substr(0, 24)) +
+               internal::printable(head.substr(0, 24)) +
                "'); expected a legacy VTK file ('# vtk DataFile'), a VTK XML file ('<VTKFile'), an "
                "AmiraMesh file ('# AmiraMesh') or a NRRD file ('NRRD000x')";
   }
   return false;
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief As the overload above with the default named parameters: the reason of a failure is in
-`error` without naming `CGAL::parameters::default_values()` first, as in
-`read_flow_field(filename, field, &error)`.
-*/
-template <class K>
-bool read_flow_field(const std::string& filename, Sampled_flow_field_3<K>& field, std::string* error)
-{
-  return read_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 } // namespace IO

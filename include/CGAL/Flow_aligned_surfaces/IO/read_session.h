@@ -150,25 +150,22 @@ public:
       session.operations.push_back(op);
     }
     if (!have_patch)
-      throw Flow_aligned_surfaces::IO::internal::Read_error("read_session: " + m_filename +
-                                                        ": no 'patch' line gives the initial surface");
+      throw Read_error("read_session: " + m_filename + ": no 'patch' line gives the initial surface");
     return session;
   }
 
 private:
-  using Read_error = Flow_aligned_surfaces::IO::internal::Read_error;
-
-  static std::string printable(std::string_view s) { return Flow_aligned_surfaces::IO::internal::printable(s); }
+  static std::string printable(std::string_view s) { return internal::printable(s); }
 
   static std::vector<std::string_view> split(std::string_view text)
   {
     std::vector<std::string_view> words;
     std::size_t i = 0;
     while (i < text.size()) {
-      while (i < text.size() && Flow_aligned_surfaces::IO::internal::Text_cursor::is_space(text[i]))
+      while (i < text.size() && Text_cursor::is_space(text[i]))
         ++i;
       const std::size_t b = i;
-      while (i < text.size() && !Flow_aligned_surfaces::IO::internal::Text_cursor::is_space(text[i]))
+      while (i < text.size() && !Text_cursor::is_space(text[i]))
         ++i;
       if (i > b)
         words.push_back(text.substr(b, i - b));
@@ -191,7 +188,7 @@ private:
   double number(std::size_t i, const std::string& what) const
   {
     double v = 0;
-    if (!Flow_aligned_surfaces::IO::internal::Text_cursor::parse_number(m_words[i], v) || !std::isfinite(v))
+    if (!Text_cursor::parse_number(m_words[i], v) || !std::isfinite(v))
       fail("'" + printable(m_words[i]) + "' is not a finite number (" + what + ")");
     return v;
   }
@@ -299,10 +296,10 @@ left untouched.
 inline bool read_session(const std::string& filename, Session& session, std::string* error = nullptr)
 {
   try {
-    const std::string bytes = Flow_aligned_surfaces::IO::internal::read_file_contents(filename, "read_session");
+    const std::string bytes = internal::read_file_contents(filename, "read_session");
     session = internal::Session_parser(filename, bytes).parse();
     return true;
-  } catch (const Flow_aligned_surfaces::IO::internal::Read_error& e) {
+  } catch (const internal::Read_error& e) {
     if (error)
       *error = e.what();
   } catch (const std::bad_alloc&) {

@@ -75,7 +75,7 @@ inline bool write_PNG(const std::string& filename, const Texture_image& image, s
   if (!png_image_write_to_memory(&png, encoded.data(), &size, 0, bytes.data(), stride, nullptr))
     return fail(std::string("libpng: ") + png.message);
   std::string reason;
-  if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(
+  if (!internal::write_file_atomically(
           filename, reason, [&](std::ostream& os) { os.write(encoded.data(), std::streamsize(size)); }))
     return fail(reason);
   return true;

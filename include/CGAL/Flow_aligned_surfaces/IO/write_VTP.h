@@ -8,6 +8,7 @@
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_VTP_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_WRITE_VTP_H
 
+#include <CGAL/Flow_aligned_surfaces/IO/internal/error_output.h>
 #include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -39,10 +40,23 @@ struct Data_array {
   bool texture_coordinates = false;
 };
 
-/// \cond SKIP_IN_MANUAL
-namespace internal {
+/*!
+\ingroup PkgFlowAlignedSurfacesIO
 
-// The check of both writers: every array has `number_of_components` values per element.
+\brief Checks that every array of `point_data` has `number_of_components` values per point and
+every array of `cell_data` as many per cell, as `write_VTP()` and `write_VTP_polylines()` do
+before they write: a program that writes the same arrays by other means (VTK's own writers)
+refuses the same arrays with the same message.
+
+\param point_data arrays with one tuple per point
+\param number_of_points the number of points
+\param cell_data arrays with one tuple per cell
+\param number_of_cells the number of cells (faces or polylines)
+\param reason receives, on failure, the first array of the wrong size, its size and the one
+       expected
+
+\returns `true` if every array has its size and at least one component.
+*/
 inline bool check_VTP_array_sizes(const std::vector<Data_array>& point_data, std::size_t number_of_points,
                                   const std::vector<Data_array>& cell_data, std::size_t number_of_cells,
                                   std::string& reason)
@@ -59,6 +73,9 @@ inline bool check_VTP_array_sizes(const std::vector<Data_array>& point_data, std
     }
   return true;
 }
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
 
 // Non-finite values as VTK reads them.
 inline void write_VTP_value(std::ostream& os, double x)
@@ -134,16 +151,19 @@ VTK reads as such.
        first one with `texture_coordinates` set is flagged as the texture coordinates
 \param cell_data arrays with one tuple per face, in the order of the face index map
 \param np optional named parameters: `vertex_point_map`, `vertex_index_map`, `face_index_map`
-       as in `normalized_flux()`, and `stream_precision` (the number of significant digits, default 17)
-\param error if not null, receives the reason of a failure
+       as in `normalized_flux()`, `stream_precision` (the number of significant digits, default 17)
+       and `error_message` (where the reason of a failure goes, `FAS::parameters::error_message()`;
+       default: no message)
 
 \returns `true` on success; `false` if an array has the wrong size or the file could not be
-written, with the reason in `error` when it is not null.
+written, with the reason in the string of `error_message` when it is given.
+
+\sa `check_VTP_array_sizes()`
 */
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 bool write_VTP(const std::string& filename, const TriangleMesh& tm,
                const std::vector<Data_array>& point_data = {}, const std::vector<Data_array>& cell_data = {},
-               const NamedParameters& np = CGAL::parameters::default_values(), std::string* error = nullptr)
+               const NamedParameters& np = CGAL::parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -154,13 +174,14 @@ bool write_VTP(const std::string& filename, const TriangleMesh& tm,
   const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
 
   const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
+  std::string* const error = internal::error_output(np);
   auto fail = [&](const std::string& reason) {
     if (error)
       *error = "write_VTP: " + filename + ": " + reason;
     return false;
   };
   std::string reason;
-  if (!internal::check_VTP_array_sizes(point_data, nv, cell_data, nf, reason))
+  if (!check_VTP_array_sizes(point_data, nv, cell_data, nf, reason))
     return fail(reason);
 
   std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> ordered_vertices(nv);
@@ -170,34 +191,32 @@ bool write_VTP(const std::string& filename, const TriangleMesh& tm,
   for (auto f : faces(tm))
     ordered_faces[get(fim, f)] = f;
 
-  const bool written =
-      Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
-        os.precision(precision);
-        internal::write_VTP_head(os, nv, 0, nf);
-        for (auto v : ordered_vertices) {
-          const auto& p = get(vpm, v);
-          os << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z())
-             << '\n';
-        }
-        os << "        </DataArray>\n      </Points>\n      <Polys>\n"
-           << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-        std::vector<std::size_t> offsets;
-        offsets.reserve(nf);
-        std::size_t offset = 0;
-        for (auto f : ordered_faces) {
-          for (auto v : vertices_around_face(halfedge(f, tm), tm)) {
-            os << get(vim, v) << ' ';
-            ++offset;
-          }
-          os << '\n';
-          offsets.push_back(offset);
-        }
-        os << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-        for (std::size_t o : offsets)
-          os << o << '\n';
-        os << "        </DataArray>\n      </Polys>\n";
-        internal::write_VTP_tail(os, point_data, cell_data);
-      });
+  const bool written = internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+    os.precision(precision);
+    internal::write_VTP_head(os, nv, 0, nf);
+    for (auto v : ordered_vertices) {
+      const auto& p = get(vpm, v);
+      os << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z()) << '\n';
+    }
+    os << "        </DataArray>\n      </Points>\n      <Polys>\n"
+       << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    std::vector<std::size_t> offsets;
+    offsets.reserve(nf);
+    std::size_t offset = 0;
+    for (auto f : ordered_faces) {
+      for (auto v : vertices_around_face(halfedge(f, tm), tm)) {
+        os << get(vim, v) << ' ';
+        ++offset;
+      }
+      os << '\n';
+      offsets.push_back(offset);
+    }
+    os << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (std::size_t o : offsets)
+      os << o << '\n';
+    os << "        </DataArray>\n      </Polys>\n";
+    internal::write_VTP_tail(os, point_data, cell_data);
+  });
   return written ? true : fail(reason);
 }
 
@@ -211,40 +230,45 @@ The points are numbered polyline after polyline, in order; `point_data` arrays f
 order, `cell_data` arrays have one tuple per polyline.  Written atomically as `write_VTP()`.
 
 \tparam Polyline a range of points of a CGAL kernel (`std::vector<Point_3>`)
+\tparam NamedParameters a sequence of named parameters
 
 \param filename the output file
 \param polylines the polylines (an empty one gives a line without points)
 \param point_data arrays with one tuple per point, in the order above
 \param cell_data arrays with one tuple per polyline
-\param error if not null, receives the reason of a failure
-\param precision the number of significant digits
+\param np optional named parameters: `stream_precision` (the number of significant digits,
+       default 17) and `error_message` (where the reason of a failure goes,
+       `FAS::parameters::error_message()`; default: no message)
 
 \returns `true` on success; `false` if an array has the wrong size or the file could not be
-written, with the reason in `error` when it is not null.
-\sa `write_VTP()`, `integrate_streamline()`
+written, with the reason in the string of `error_message` when it is given.
+\sa `write_VTP()`, `check_VTP_array_sizes()`, `integrate_streamline()`
 */
-template <class Polyline>
+template <class Polyline, class NamedParameters = parameters::Default_named_parameters>
 bool write_VTP_polylines(const std::string& filename, const std::vector<Polyline>& polylines,
                          const std::vector<Data_array>& point_data = {},
-                         const std::vector<Data_array>& cell_data = {}, std::string* error = nullptr,
-                         int precision = 17)
+                         const std::vector<Data_array>& cell_data = {},
+                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  std::size_t np = 0;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
+  std::size_t points = 0;
   for (const Polyline& line : polylines)
-    np += std::size_t(std::distance(line.begin(), line.end()));
+    points += std::size_t(std::distance(line.begin(), line.end()));
   std::string reason;
   const bool written =
-      internal::check_VTP_array_sizes(point_data, np, cell_data, polylines.size(), reason) &&
-      Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+      check_VTP_array_sizes(point_data, points, cell_data, polylines.size(), reason) &&
+      internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
         os.precision(precision);
-        internal::write_VTP_head(os, np, polylines.size(), 0);
+        internal::write_VTP_head(os, points, polylines.size(), 0);
         for (const Polyline& line : polylines)
           for (const auto& p : line)
             os << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z())
                << '\n';
         os << "        </DataArray>\n      </Points>\n      <Lines>\n"
            << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-        for (std::size_t i = 0; i < np; ++i)
+        for (std::size_t i = 0; i < points; ++i)
           os << i << '\n';
         os << "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
         std::size_t offset = 0;
@@ -255,6 +279,7 @@ bool write_VTP_polylines(const std::string& filename, const std::vector<Polyline
         os << "        </DataArray>\n      </Lines>\n";
         internal::write_VTP_tail(os, point_data, cell_data);
       });
+  std::string* const error = internal::error_output(np);
   if (!written && error)
     *error = "write_VTP_polylines: " + filename + ": " + reason;
   return written;

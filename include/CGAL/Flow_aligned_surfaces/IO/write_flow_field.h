@@ -14,6 +14,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/IO/internal/base64_streambuf.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/error_output.h>
 #include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -96,7 +97,6 @@ complete, so an existing file is never left half-written.
 \param filename the output file
 \param field the field to write
 \param np an optional sequence of named parameters among the ones listed below
-\param error if not null, receives the reason of a failure
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{use_binary_mode}
@@ -120,17 +120,21 @@ complete, so an existing file is never left half-written.
     \cgalParamType{`std::string` without white space}
     \cgalParamDefault{`"inside"`}
   \cgalParamNEnd
+  \cgalParamNBegin{error_message}
+    \cgalParamDescription{where the reason of a failure goes (`FAS::parameters::error_message()`)}
+    \cgalParamType{`std::string*`}
+    \cgalParamDefault{`nullptr`: no message}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns `true` on success; `false` if an array name is empty or holds white space or the file
-could not be written, with the reason in `error` when it is not null.
+could not be written, with the reason in the string of `error_message` when it is given.
 
 \sa `read_VTK_flow_field()`, `write_VTI_flow_field()`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_field_3<K>& field,
-                          const NamedParameters& np = CGAL::parameters::default_values(),
-                          std::string* error = nullptr)
+                          const NamedParameters& np = CGAL::parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -141,6 +145,7 @@ bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_f
   const std::string mask_name = choose_parameter(
       get_parameter(np, Flow_aligned_surfaces::internal_np::mask_array_name_t()), std::string("inside"));
 
+  std::string* const error = internal::error_output(np);
   auto fail = [&](const std::string& reason) {
     if (error)
       *error = "write_VTK_flow_field: " + filename + ": " + reason;
@@ -157,7 +162,7 @@ bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_f
 
   std::string reason;
   const bool written =
-      Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+      internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
         os.precision(17);
         os << "# vtk DataFile Version 3.0\n"
            << "flow field written by CGAL Flow_aligned_surfaces\n"
@@ -197,19 +202,6 @@ bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_f
 /*!
 \ingroup PkgFlowAlignedSurfacesIO
 
-\brief As the overload above with the default named parameters: the reason of a failure is in
-`error` without naming `CGAL::parameters::default_values()` first, as in
-`write_VTK_flow_field(filename, field, &error)`.
-*/
-template <class K>
-bool write_VTK_flow_field(const std::string& filename, const Regular_grid_flow_field_3<K>& field, std::string* error)
-{
-  return write_VTK_flow_field(filename, field, CGAL::parameters::default_values(), error);
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
 \brief Writes a grid flow field to `filename` as a VTK XML ImageData file (`.vti`).
 
 The file holds an `ImageData` with `WholeExtent` `0 nx-1 0 ny-1 0 nz-1` and the field's
@@ -228,7 +220,6 @@ only when complete, so an existing file is never left half-written.  VTK is not 
 \param filename the output file
 \param field the field to write
 \param np an optional sequence of named parameters among the ones listed below
-\param error if not null, receives the reason of a failure
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{array_name}
@@ -241,17 +232,21 @@ only when complete, so an existing file is never left half-written.  VTK is not 
     \cgalParamType{`std::string`, not empty}
     \cgalParamDefault{`"inside"`}
   \cgalParamNEnd
+  \cgalParamNBegin{error_message}
+    \cgalParamDescription{where the reason of a failure goes (`FAS::parameters::error_message()`)}
+    \cgalParamType{`std::string*`}
+    \cgalParamDefault{`nullptr`: no message}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns `true` on success; `false` if an array name is empty or the two names are equal, or the
-file could not be written, with the reason in `error` when it is not null.
+file could not be written, with the reason in the string of `error_message` when it is given.
 
 \sa `read_VTK_XML_flow_field()`, `write_VTK_flow_field()`
 */
 template <class K, class NamedParameters = parameters::Default_named_parameters>
 bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_field_3<K>& field,
-                          const NamedParameters& np = CGAL::parameters::default_values(),
-                          std::string* error = nullptr)
+                          const NamedParameters& np = CGAL::parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -260,6 +255,7 @@ bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_f
   const std::string mask_name = choose_parameter(
       get_parameter(np, Flow_aligned_surfaces::internal_np::mask_array_name_t()), std::string("inside"));
 
+  std::string* const error = internal::error_output(np);
   auto fail = [&](const std::string& reason) {
     if (error)
       *error = "write_VTI_flow_field: " + filename + ": " + reason;
@@ -302,7 +298,7 @@ bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_f
 
   std::string reason;
   const bool written =
-      Flow_aligned_surfaces::IO::internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
+      internal::write_file_atomically(filename, reason, [&](std::ostream& os) {
         os.precision(17);
         const std::string extent = "0 " + std::to_string(n[0] - 1) + " 0 " + std::to_string(n[1] - 1) +
                                    " 0 " + std::to_string(n[2] - 1);
@@ -339,19 +335,6 @@ bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_f
            << "</VTKFile>\n";
       });
   return written ? true : fail(reason);
-}
-
-/*!
-\ingroup PkgFlowAlignedSurfacesIO
-
-\brief As the overload above with the default named parameters: the reason of a failure is in
-`error` without naming `CGAL::parameters::default_values()` first, as in
-`write_VTI_flow_field(filename, field, &error)`.
-*/
-template <class K>
-bool write_VTI_flow_field(const std::string& filename, const Regular_grid_flow_field_3<K>& field, std::string* error)
-{
-  return write_VTI_flow_field(filename, field, CGAL::parameters::default_values(), error);
 }
 
 } // namespace IO

@@ -13,6 +13,7 @@
 #include <CGAL/Flow_aligned_surfaces/IO/write_PNG.h>
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
+#include <CGAL/Flow_aligned_surfaces/IO/internal/error_output.h>
 #include <CGAL/Flow_aligned_surfaces/IO/internal/write_file_atomically.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -56,17 +57,18 @@ are still written and the function returns `false` with the reason.
 \param uv_map the texture coordinates of the vertices
 \param texture the texture
 \param np optional named parameters: `vertex_point_map`, `vertex_index_map` as in
-       `normalized_flux()`, and `stream_precision` (significant digits, default 17)
-\param error if not null, receives the reason of a failure
+       `normalized_flux()`, `stream_precision` (significant digits, default 17) and
+       `error_message` (where the reason of a failure goes, `FAS::parameters::error_message()`;
+       default: no message)
 
-\returns `true` if the three files were written.
+\returns `true` if the three files were written; `false` otherwise, with the reason in the
+string of `error_message` when it is given.
 \sa `write_PNG()`, `write_VTP()`, `compute_flow_texture_coordinates()`
 */
 template <class TriangleMesh, class UVMap, class NamedParameters = parameters::Default_named_parameters>
 bool write_textured_OBJ(const std::string& filename, const TriangleMesh& tm, UVMap uv_map,
                         const Texture_image& texture,
-                        const NamedParameters& np = CGAL::parameters::default_values(),
-                        std::string* error = nullptr)
+                        const NamedParameters& np = CGAL::parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -77,6 +79,7 @@ bool write_textured_OBJ(const std::string& filename, const TriangleMesh& tm, UVM
   const std::filesystem::path obj(filename);
   const std::filesystem::path mtl = std::filesystem::path(obj).replace_extension(".mtl");
   const std::filesystem::path png = std::filesystem::path(obj).replace_extension(".png");
+  std::string* const error = internal::error_output(np);
   auto fail = [&](const std::string& reason) {
     if (error)
       *error = "write_textured_OBJ: " + reason;
@@ -102,14 +105,14 @@ bool write_textured_OBJ(const std::string& filename, const TriangleMesh& tm, UVM
   }
 
   std::string reason;
-  if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(mtl.string(), reason, [&](std::ostream& os) {
+  if (!internal::write_file_atomically(mtl.string(), reason, [&](std::ostream& os) {
         os << mtl_first_line << "\nnewmtl flow_texture\n"
            << "Ka 1 1 1\nKd 1 1 1\nKs 0 0 0\nillum 1\nmap_Kd " << png.filename().string() << "\n";
       }))
     return fail(mtl.string() + ": " + reason);
 
   const auto ordered_vertices = Flow_aligned_surfaces::internal::vertices_in_index_order(tm, vim);
-  if (!Flow_aligned_surfaces::IO::internal::write_file_atomically(obj.string(), reason, [&](std::ostream& os) {
+  if (!internal::write_file_atomically(obj.string(), reason, [&](std::ostream& os) {
         os.precision(precision);
         os << "mtllib " << mtl.filename().string() << "\n";
         for (auto v : ordered_vertices) {

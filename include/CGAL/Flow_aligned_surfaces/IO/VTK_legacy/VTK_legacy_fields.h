@@ -103,29 +103,28 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
 
   VTK_legacy_node_data d;
   const std::size_t nodes = parser.nodes;
-  namespace FASi = Flow_aligned_surfaces::IO::internal;
   if (mask != nullptr) {
     d.mask_name = mask->name;
-    FASi::reserve_huge_pages(d.flags, nodes);
+    reserve_huge_pages(d.flags, nodes);
     d.flags.resize(nodes);
     // By value: a byte store through d.flags[i], or through a captured reference, could alias
     // the pointer, which would then be reloaded per value.
     unsigned char* flags = d.flags.data();
     auto check = [&, flags](std::size_t i, double v, std::size_t offset, std::size_t line) {
-      flags[i] = FASi::checked_mask_flag(
+      flags[i] = checked_mask_flag(
           v, mask->name, [&] { return "node " + std::to_string(i); },
           [&](const std::string& what) { parser.fail_at(offset, line, what); });
     };
     const auto b = parser.binary_values(*mask);
     // Binary: decoded as a run; only a NaN, which the run reports, goes through `check`.
-    if (!parser.binary || FASi::decode_checked_flags(b.type, b.order, b.data, nodes, flags))
+    if (!parser.binary || decode_checked_flags(b.type, b.order, b.data, nodes, flags))
       parser.decode(*mask, check);
   }
-  FASi::reserve_huge_pages(d.values, 3 * nodes);
+  reserve_huge_pages(d.values, 3 * nodes);
   d.values.resize(3 * nodes);
   float* values = d.values.data();
   auto check = [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-    values[i] = FASi::checked_velocity_component(
+    values[i] = checked_velocity_component(
         v, i, [&] { return d.flags.empty() || d.flags[i / 3] != 0; }, !d.flags.empty(), velocity->name,
         "node", [&] { return parser.node_name(i / 3); },
         [&](const std::string& what) { parser.fail_at(offset, line, what); });
@@ -145,13 +144,13 @@ inline VTK_legacy_node_data read_node_data(VTK_legacy_parser& parser, const std:
     // (rare) blocks holding a non-finite or too large value are then checked one by one in file
     // order, so the message names the first bad value at a fluid node, as in the ASCII case.
     const auto b = parser.binary_values(*velocity);
-    for (std::size_t block : FASi::decode_checked_floats(b.type, b.order, b.data, 3 * nodes, values,
-                                                         [&](std::size_t i, double v) {
-                                                           check(i, v, b.begin + i * b.size, 0);
-                                                           return values[i];
-                                                         })) {
-      const std::size_t begin = block * FASi::checked_block_size;
-      zero_bad_solid_nodes(begin / 3, (begin + FASi::checked_block_size + 2) / 3);
+    for (std::size_t block :
+         decode_checked_floats(b.type, b.order, b.data, 3 * nodes, values, [&](std::size_t i, double v) {
+           check(i, v, b.begin + i * b.size, 0);
+           return values[i];
+         })) {
+      const std::size_t begin = block * checked_block_size;
+      zero_bad_solid_nodes(begin / 3, (begin + checked_block_size + 2) / 3);
     }
   }
   else {
@@ -199,10 +198,9 @@ inline std::array<std::vector<double>, 3> grid_coordinates(VTK_legacy_parser& pa
 
 // The cells of an UNSTRUCTURED_GRID (either form of CELLS) in the form of
 // `Unstructured_flow_field_3`, with every type, point count and point index checked.
-inline Flow_aligned_surfaces::IO::internal::Structured_grid_cells
-read_unstructured_cells(VTK_legacy_parser& parser)
+inline Structured_grid_cells read_unstructured_cells(VTK_legacy_parser& parser)
 {
-  Flow_aligned_surfaces::IO::internal::Structured_grid_cells r;
+  Structured_grid_cells r;
   const std::size_t nc = parser.cells, np = parser.nodes;
   std::vector<int> points_per_cell(nc);
   r.cell_types.resize(nc);
@@ -260,7 +258,7 @@ read_unstructured_cells(VTK_legacy_parser& parser)
       parser.fail_at(list.header, list.header_line,
                      cells_line + ": the values end inside cell " + std::to_string(cell) + " of " +
                          std::to_string(nc) + " (wrong count)");
-    Flow_aligned_surfaces::IO::internal::voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
+    voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
     return r;
   }
 
@@ -292,22 +290,21 @@ read_unstructured_cells(VTK_legacy_parser& parser)
         r.offsets.begin() - 1);
     r.connectivity[i] = point_index(cell, v, offset, line);
   });
-  Flow_aligned_surfaces::IO::internal::voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
+  voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
   return r;
 }
 
-// Reads the file and builds the field; throw VTK_legacy_error with the message.
+// Reads the file and builds the field; throw Read_error with the message.
 template <class K>
 Regular_grid_flow_field_3<K> read_VTK_legacy_grid(const std::string& filename, const std::string* array_name,
                                                   const std::string* mask_name)
 {
-  VTK_legacy_parser parser(
-      filename, Flow_aligned_surfaces::IO::internal::File_contents(filename, "read_VTK_flow_field"));
+  VTK_legacy_parser parser(filename, File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"STRUCTURED_POINTS"}, "Regular_grid_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   typedef typename K::Point_3 Point_3;
   typedef typename K::Vector_3 Vector_3;
-  return Flow_aligned_surfaces::IO::internal::construct_field<Regular_grid_flow_field_3<K>>(
+  return construct_field<Regular_grid_flow_field_3<K>>(
       parser.file_failure(), Flow_aligned_surfaces::internal::Node_values_checked(),
       Point_3(parser.origin[0], parser.origin[1], parser.origin[2]),
       Vector_3(parser.spacing[0], parser.spacing[1], parser.spacing[2]), parser.dimensions,
@@ -319,12 +316,11 @@ Rectilinear_grid_flow_field_3<K> read_VTK_legacy_rectilinear(const std::string& 
                                                              const std::string* array_name,
                                                              const std::string* mask_name)
 {
-  VTK_legacy_parser parser(
-      filename, Flow_aligned_surfaces::IO::internal::File_contents(filename, "read_VTK_flow_field"));
+  VTK_legacy_parser parser(filename, File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"STRUCTURED_POINTS", "RECTILINEAR_GRID"}, "Rectilinear_grid_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   std::array<std::vector<double>, 3> x = grid_coordinates(parser);
-  return Flow_aligned_surfaces::IO::internal::construct_field<Rectilinear_grid_flow_field_3<K>>(
+  return construct_field<Rectilinear_grid_flow_field_3<K>>(
       parser.file_failure(), Flow_aligned_surfaces::internal::Node_values_checked(), std::move(x),
       std::move(d.values), std::move(d.flags));
 }
@@ -333,13 +329,12 @@ template <class K>
 Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, const std::string* array_name,
                                                    const std::string* mask_name)
 {
-  VTK_legacy_parser parser(
-      filename, Flow_aligned_surfaces::IO::internal::File_contents(filename, "read_VTK_flow_field"));
+  VTK_legacy_parser parser(filename, File_contents(filename, "read_VTK_flow_field"));
   parser.parse({"UNSTRUCTURED_GRID", "STRUCTURED_GRID", "RECTILINEAR_GRID", "STRUCTURED_POINTS"},
                "Unstructured_flow_field_3");
   VTK_legacy_node_data d = read_node_data(parser, array_name, mask_name);
   std::vector<double> points;
-  Flow_aligned_surfaces::IO::internal::Structured_grid_cells cells;
+  Structured_grid_cells cells;
   if (parser.dataset == "UNSTRUCTURED_GRID") {
     points = decode_reals(parser, *parser.points);
     cells = read_unstructured_cells(parser);
@@ -356,21 +351,21 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
           for (double xi : x[0])
             points.insert(points.end(), {xi, y, z});
     }
-    cells = Flow_aligned_surfaces::IO::internal::structured_grid_cells(parser.dimensions);
+    cells = structured_grid_cells(parser.dimensions);
   }
   const std::size_t all_cells = cells.cell_types.size();
-  if (!d.flags.empty() && Flow_aligned_surfaces::IO::internal::remove_masked_cells(
-                              d.flags, cells.connectivity, cells.offsets, cells.cell_types) == 0)
+  if (!d.flags.empty() &&
+      remove_masked_cells(d.flags, cells.connectivity, cells.offsets, cells.cell_types) == 0)
     parser.fail_file("every one of the " + std::to_string(all_cells) +
                      " cells touches a solid node of the mask '" + d.mask_name + "'; no cell is left");
   // Float points stay float in the field (they were decoded as doubles, exactly).
   if ((parser.dataset == "UNSTRUCTURED_GRID" || parser.dataset == "STRUCTURED_GRID") && parser.points &&
       parser.points->type == "float")
-    return Flow_aligned_surfaces::IO::internal::construct_field<Unstructured_flow_field_3<K>>(
+    return construct_field<Unstructured_flow_field_3<K>>(
         parser.file_failure(), std::vector<float>(points.begin(), points.end()),
         std::move(cells.connectivity), std::move(cells.offsets), std::move(cells.cell_types),
         std::move(d.values));
-  return Flow_aligned_surfaces::IO::internal::construct_field<Unstructured_flow_field_3<K>>(
+  return construct_field<Unstructured_flow_field_3<K>>(
       parser.file_failure(), std::move(points), std::move(cells.connectivity), std::move(cells.offsets),
       std::move(cells.cell_types), std::move(d.values));
 }
@@ -378,15 +373,11 @@ Unstructured_flow_field_3<K> read_VTK_legacy_cells(const std::string& filename, 
 // The public functions' common part: the named parameters, and the errors made `false` + message
 // with `field` untouched.
 template <class Field, class NamedParameters, class Read>
-bool read_VTK_legacy(const std::string& filename, Field& field, const NamedParameters& np, std::string* error,
-                     const Read& read)
+bool read_VTK_legacy(const std::string& filename, Field& field, const NamedParameters& np, const Read& read)
 {
-  const Flow_aligned_surfaces::IO::internal::Array_names names =
-      Flow_aligned_surfaces::IO::internal::array_names(np);
-  return Flow_aligned_surfaces::IO::internal::read_into("read_VTK_flow_field", filename, field, error,
-      Flow_aligned_surfaces::IO::internal::reads_in_parallel(np), [&] {
-    return read(filename, names.array_name(), names.mask_name());
-  });
+  const Array_names names = array_names(np);
+  return read_into("read_VTK_flow_field", filename, field, np,
+                   [&] { return read(filename, names.array_name(), names.mask_name()); });
 }
 
 } // namespace internal

@@ -50,13 +50,9 @@ struct VTK_legacy_array {
   bool point_data = true;
 };
 
-// Thrown inside the reader only; read_VTK_flow_field() turns it into `false` + message.
-typedef Flow_aligned_surfaces::IO::internal::Read_error VTK_legacy_error;
-using Flow_aligned_surfaces::IO::internal::printable;
-
 class VTK_legacy_parser {
 public:
-  VTK_legacy_parser(const std::string& filename, Flow_aligned_surfaces::IO::internal::File_contents contents)
+  VTK_legacy_parser(const std::string& filename, File_contents contents)
       : m_contents(std::move(contents)), m_in("read_VTK_flow_field", filename, m_contents.view())
   {
   }
@@ -91,6 +87,20 @@ public:
   // field type being read, for the message when `dataset` is not one it reads.
   void parse(std::initializer_list<const char*> accepted, const char* target)
   {
+    header(accepted, target);
+    bool have_dimensions = false;
+    std::string key = geometry(have_dimensions);
+    if (dataset == "UNSTRUCTURED_GRID")
+      check_unstructured_geometry();
+    else
+      check_structured_geometry(have_dimensions);
+    for (; !key.empty(); key = upper(m_in.token()))
+      attribute(key);
+  }
+
+  // The first line, the title, the format and the dataset type, checked against `accepted`.
+  void header(std::initializer_list<const char*> accepted, const char* target)
+  {
     const std::string_view first = m_in.read_line();
     if (lower(first).rfind("# vtk datafile version", 0) != 0)
       fail_at(0, 1,
@@ -116,16 +126,19 @@ public:
     if (std::find_if(accepted.begin(), accepted.end(), [&](const char* d) { return dataset == d; }) ==
         accepted.end())
       fail("DATASET " + dataset + " cannot be read into a " + target + "; it is read by " + readers);
+  }
+
+  // The geometry keywords of `dataset`, up to the first attribute section: returns its keyword
+  // (POINT_DATA or CELL_DATA), or "" at the end of the file.
+  std::string geometry(bool& have_dimensions)
+  {
     const bool structured_points = dataset == "STRUCTURED_POINTS",
                rectilinear = dataset == "RECTILINEAR_GRID", curvilinear = dataset == "STRUCTURED_GRID",
                unstructured = dataset == "UNSTRUCTURED_GRID";
-
-    bool have_dimensions = false;
-    std::string key;
     for (;;) {
-      key = upper(m_in.token());
-      if (key.empty())
-        break;
+      const std::string key = upper(m_in.token());
+      if (key.empty() || key == "POINT_DATA" || key == "CELL_DATA")
+        return key;
       const int axis = key == "X_COORDINATES"   ? 0
                        : key == "Y_COORDINATES" ? 1
                        : key == "Z_COORDINATES" ? 2
@@ -151,30 +164,8 @@ public:
         const std::size_t n = integer("POINTS");
         points = geometry_array(key, data_type("POINTS"), 3, n);
       }
-      else if (key == "CELLS" && unstructured) {
-        const std::size_t n = integer("CELLS"), size = integer("the CELLS size");
-        if (upper(m_in.peek_token()) == "OFFSETS") {
-          // VTK >= 9 (file version 5.1): n offsets (cells + 1) and `size` point indices.
-          if (n == 0)
-            fail("CELLS 0 " + std::to_string(size) +
-                 ": the OFFSETS form needs the number of cells + 1 offsets");
-          m_in.token();
-          offsets = geometry_array("OFFSETS", data_type("OFFSETS"), 1, n);
-          expect_keyword("CONNECTIVITY");
-          connectivity = geometry_array("CONNECTIVITY", data_type("CONNECTIVITY"), 1, size);
-          cells = n - 1;
-        }
-        else {
-          // Up to file version 5.0: per cell, its number of points and their indices.
-          if (n > size)
-            fail("CELLS " + std::to_string(n) + " " + std::to_string(size) + ": " + std::to_string(n) +
-                 " cells cannot be listed in " + std::to_string(size) +
-                 " values (each needs its number of points)");
-          cell_list = geometry_array(key, "int", 1, size);
-          cells = n;
-        }
-        have_cells = true;
-      }
+      else if (key == "CELLS" && unstructured)
+        cells_keyword();
       else if (key == "CELL_TYPES" && unstructured) {
         const std::size_t n = integer("CELL_TYPES");
         if (have_cells && n != cells)
@@ -182,95 +173,114 @@ public:
                " cells of CELLS");
         cell_types = geometry_array(key, "int", 1, n);
       }
-      else if (key == "FIELD") {
+      else if (key == "FIELD")
         field(false);
-      }
-      else if (key == "POINT_DATA" || key == "CELL_DATA") {
-        break;
-      }
-      else {
+      else
         fail("unexpected keyword '" + printable(key) + "' in the " + dataset + " geometry; expected " +
              (structured_points ? "DIMENSIONS, ORIGIN, SPACING, ASPECT_RATIO"
               : rectilinear     ? "DIMENSIONS, X_COORDINATES, Y_COORDINATES, Z_COORDINATES"
               : curvilinear     ? "DIMENSIONS, POINTS"
                                 : "POINTS, CELLS, CELL_TYPES") +
              ", FIELD, POINT_DATA or CELL_DATA");
-      }
     }
-    if (unstructured)
-      check_unstructured_geometry();
-    else
-      check_structured_geometry(have_dimensions);
+  }
 
-    // The attribute sections.
-    while (!key.empty()) {
-      const bool point_data = key == "POINT_DATA";
-      if (point_data || key == "CELL_DATA") {
-        const std::size_t n = integer(key.c_str());
-        const std::size_t expected = point_data ? nodes : cells;
-        if (n != expected)
-          fail(key + " " + std::to_string(n) + " does not match " + size_source(point_data) + ", which has " +
-               std::to_string(expected) + (point_data ? " nodes" : " cells"));
-        m_section_tuples = n;
-        m_in_point_data = point_data;
-        m_in_section = true;
-      }
-      else if (!m_in_section) {
-        fail("unexpected keyword '" + key + "' before POINT_DATA or CELL_DATA");
-      }
-      else if (key == "SCALARS") {
-        const std::string name(token("the SCALARS name"));
-        const std::string type = data_type("SCALARS");
-        std::size_t components = 1;
-        if (!m_in.rest_of_line_blank() && !m_in.peek_token().empty()) {
-          components = integer("the SCALARS number of components");
-          if (components < 1 || components > 4)
-            fail("SCALARS '" + name + "' has " + std::to_string(components) + " components; expected 1 to 4");
-        }
-        if (upper(m_in.peek_token()) == "LOOKUP_TABLE") {
-          m_in.token();
-          token("the LOOKUP_TABLE name");
-        }
-        array("SCALARS", name, type, components, m_section_tuples);
-      }
-      else if (key == "VECTORS" || key == "NORMALS") {
-        const std::string name(token(key + " name"));
-        array(key, name, data_type(key.c_str()), 3, m_section_tuples);
-      }
-      else if (key == "TENSORS" || key == "TENSORS6") {
-        const std::string name(token(key + " name"));
-        array(key, name, data_type(key.c_str()), key == "TENSORS" ? 9 : 6, m_section_tuples);
-      }
-      else if (key == "TEXTURE_COORDINATES") {
-        const std::string name(token("the TEXTURE_COORDINATES name"));
-        const std::size_t dim = integer("the TEXTURE_COORDINATES dimension");
-        if (dim < 1 || dim > 3)
-          fail("TEXTURE_COORDINATES '" + name + "' has dimension " + std::to_string(dim) +
-               "; expected 1 to 3");
-        array(key, name, data_type(key.c_str()), dim, m_section_tuples);
-      }
-      else if (key == "COLOR_SCALARS") {
-        const std::string name(token("the COLOR_SCALARS name"));
-        const std::size_t n = integer("the COLOR_SCALARS number of values");
-        if (n < 1 || n > 4)
-          fail("COLOR_SCALARS '" + name + "' has " + std::to_string(n) + " values; expected 1 to 4");
-        array(key, name, binary ? "unsigned_char" : "float", n, m_section_tuples);
-      }
-      else if (key == "LOOKUP_TABLE") {
-        const std::string name(token("the LOOKUP_TABLE name"));
-        const std::size_t n = integer("the LOOKUP_TABLE size");
-        array(key, name, binary ? "unsigned_char" : "float", 4, n);
-      }
-      else if (key == "FIELD") {
-        field(m_in_point_data);
-      }
-      else {
-        fail("unknown keyword '" + key +
-             "'; expected POINT_DATA, CELL_DATA, SCALARS, VECTORS, NORMALS, TENSORS, TEXTURE_COORDINATES, "
-             "COLOR_SCALARS, LOOKUP_TABLE or FIELD");
-      }
-      key = upper(m_in.token());
+  // `CELLS n size` of an UNSTRUCTURED_GRID, in either form.
+  void cells_keyword()
+  {
+    const std::size_t n = integer("CELLS"), size = integer("the CELLS size");
+    if (upper(m_in.peek_token()) == "OFFSETS") {
+      // VTK >= 9 (file version 5.1): n offsets (cells + 1) and `size` point indices.
+      if (n == 0)
+        fail("CELLS 0 " + std::to_string(size) + ": the OFFSETS form needs the number of cells + 1 offsets");
+      m_in.token();
+      offsets = geometry_array("OFFSETS", data_type("OFFSETS"), 1, n);
+      expect_keyword("CONNECTIVITY");
+      connectivity = geometry_array("CONNECTIVITY", data_type("CONNECTIVITY"), 1, size);
+      cells = n - 1;
     }
+    else {
+      // Up to file version 5.0: per cell, its number of points and their indices.
+      if (n > size)
+        fail("CELLS " + std::to_string(n) + " " + std::to_string(size) + ": " + std::to_string(n) +
+             " cells cannot be listed in " + std::to_string(size) +
+             " values (each needs its number of points)");
+      cell_list = geometry_array("CELLS", "int", 1, size);
+      cells = n;
+    }
+    have_cells = true;
+  }
+
+  // One keyword of the attribute sections: a section (POINT_DATA n, CELL_DATA n) or an array
+  // in the current one, whose position is recorded and whose values are skipped.
+  void attribute(const std::string& key)
+  {
+    const bool point_data = key == "POINT_DATA";
+    if (point_data || key == "CELL_DATA") {
+      const std::size_t n = integer(key.c_str());
+      const std::size_t expected = point_data ? nodes : cells;
+      if (n != expected)
+        fail(key + " " + std::to_string(n) + " does not match " + size_source(point_data) + ", which has " +
+             std::to_string(expected) + (point_data ? " nodes" : " cells"));
+      m_section_tuples = n;
+      m_in_point_data = point_data;
+      m_in_section = true;
+    }
+    else if (!m_in_section)
+      fail("unexpected keyword '" + key + "' before POINT_DATA or CELL_DATA");
+    else if (key == "SCALARS")
+      scalars();
+    else if (key == "VECTORS" || key == "NORMALS") {
+      const std::string name(token(key + " name"));
+      array(key, name, data_type(key.c_str()), 3, m_section_tuples);
+    }
+    else if (key == "TENSORS" || key == "TENSORS6") {
+      const std::string name(token(key + " name"));
+      array(key, name, data_type(key.c_str()), key == "TENSORS" ? 9 : 6, m_section_tuples);
+    }
+    else if (key == "TEXTURE_COORDINATES") {
+      const std::string name(token("the TEXTURE_COORDINATES name"));
+      const std::size_t dim = integer("the TEXTURE_COORDINATES dimension");
+      if (dim < 1 || dim > 3)
+        fail("TEXTURE_COORDINATES '" + name + "' has dimension " + std::to_string(dim) + "; expected 1 to 3");
+      array(key, name, data_type(key.c_str()), dim, m_section_tuples);
+    }
+    else if (key == "COLOR_SCALARS") {
+      const std::string name(token("the COLOR_SCALARS name"));
+      const std::size_t n = integer("the COLOR_SCALARS number of values");
+      if (n < 1 || n > 4)
+        fail("COLOR_SCALARS '" + name + "' has " + std::to_string(n) + " values; expected 1 to 4");
+      array(key, name, binary ? "unsigned_char" : "float", n, m_section_tuples);
+    }
+    else if (key == "LOOKUP_TABLE") {
+      const std::string name(token("the LOOKUP_TABLE name"));
+      const std::size_t n = integer("the LOOKUP_TABLE size");
+      array(key, name, binary ? "unsigned_char" : "float", 4, n);
+    }
+    else if (key == "FIELD")
+      field(m_in_point_data);
+    else
+      fail("unknown keyword '" + key +
+           "'; expected POINT_DATA, CELL_DATA, SCALARS, VECTORS, NORMALS, TENSORS, TEXTURE_COORDINATES, "
+           "COLOR_SCALARS, LOOKUP_TABLE or FIELD");
+  }
+
+  // `SCALARS name type [components]`, optionally followed by `LOOKUP_TABLE name`.
+  void scalars()
+  {
+    const std::string name(token("the SCALARS name"));
+    const std::string type = data_type("SCALARS");
+    std::size_t components = 1;
+    if (!m_in.rest_of_line_blank() && !m_in.peek_token().empty()) {
+      components = integer("the SCALARS number of components");
+      if (components < 1 || components > 4)
+        fail("SCALARS '" + name + "' has " + std::to_string(components) + " components; expected 1 to 4");
+    }
+    if (upper(m_in.peek_token()) == "LOOKUP_TABLE") {
+      m_in.token();
+      token("the LOOKUP_TABLE name");
+    }
+    array("SCALARS", name, type, components, m_section_tuples);
   }
 
   // The checks of a structured dataset's geometry once it is all read; sets `nodes` and `cells`.
@@ -350,7 +360,7 @@ public:
   {
     if (dataset == "UNSTRUCTURED_GRID")
       return "point " + std::to_string(node);
-    return "node " + Flow_aligned_surfaces::IO::internal::grid_node_string(dimensions, node);
+    return "node " + grid_node_string(dimensions, node);
   }
 
   // The field types that read a dataset type, or null for the types no field reads.
@@ -398,8 +408,7 @@ public:
       for (std::size_t i0 = 0; i0 < count; i0 += block_size) {
         const std::size_t m = count - i0 < block_size ? count - i0 : block_size;
         // Big-endian, as VTK's legacy writer writes, whatever the host.
-        Flow_aligned_surfaces::IO::internal::decode_binary_numbers(
-            type, Flow_aligned_surfaces::IO::internal::Byte_order::BIG_ENDIAN_ORDER, data + pos, m, block);
+        decode_binary_numbers(type, Byte_order::BIG_ENDIAN_ORDER, data + pos, m, block);
         for (std::size_t j = 0; j < m; ++j, pos += size)
           out(i0 + j, block[j], pos, 0);
       }
@@ -418,10 +427,9 @@ public:
   // begin + i * size of the file.
   struct Binary_values {
     const unsigned char* data;
-    Flow_aligned_surfaces::IO::internal::Binary_type type;
+    Binary_type type;
     std::size_t size, begin;
-    static constexpr Flow_aligned_surfaces::IO::internal::Byte_order order =
-        Flow_aligned_surfaces::IO::internal::Byte_order::BIG_ENDIAN_ORDER;
+    static constexpr Byte_order order = Byte_order::BIG_ENDIAN_ORDER;
   };
   Binary_values binary_values(const VTK_legacy_array& a) const
   {
@@ -436,7 +444,6 @@ public:
   }
 
 private:
-  typedef Flow_aligned_surfaces::IO::internal::Text_cursor Text_cursor;
   static std::string upper(std::string_view s)
   {
     return Text_cursor::upper(s);
@@ -625,7 +632,6 @@ private:
   }
 
   // The binary decodings, chosen once per array rather than once per value.
-  typedef Flow_aligned_surfaces::IO::internal::Binary_type Binary_type;
 
   static Binary_type binary_type(const std::string& type)
   {
@@ -650,7 +656,7 @@ private:
     return Binary_type::INT64;
   }
 
-  Flow_aligned_surfaces::IO::internal::File_contents m_contents;
+  File_contents m_contents;
   Text_cursor m_in; // reads m_contents.view()
   std::size_t m_section_tuples = 0;
   bool m_in_point_data = false, m_in_section = false;

@@ -4,11 +4,13 @@
 // The frame that every public flow-field reader puts around its parser: the array names of
 // the named parameters (`array_name`, `mask_array_name`, each either given or not), the
 // translation of the internal `Read_error` (and of `std::bad_alloc`) into `false` + message
-// with the output untouched, and the threads a reader may use (`use_parallelism`).
+// with the output untouched and the message where `error_message` says, and the threads a
+// reader may use (`use_parallelism`).
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READER_SUPPORT_H
 #define CGAL_FLOW_ALIGNED_SURFACES_IO_INTERNAL_READER_SUPPORT_H
 
+#include <CGAL/Flow_aligned_surfaces/IO/internal/error_output.h>
 #include <CGAL/Flow_aligned_surfaces/IO/internal/read_file.h>
 #include <CGAL/Flow_aligned_surfaces/internal/array_names.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
@@ -57,13 +59,16 @@ bool reads_in_parallel(const NamedParameters& np)
 
 /// Runs `read()` (which returns the field or throws `Read_error`) and assigns its result to
 /// `field` (a field, or anything assignable from one); on failure leaves `field` untouched,
-/// writes the reason to `*error` (if not null) and returns `false`.  `reader` and `filename`
-/// name the message about a lack of memory.  Unless `parallel`, `read()` runs in a TBB arena of
-/// one thread, so that its parallel loops start no thread the caller did not ask for.
-template <class Field, class Read>
-bool read_into(const std::string& reader, const std::string& filename, Field& field, std::string* error,
-               bool parallel, const Read& read)
+/// writes the reason to the string of `np`'s `error_message` (if any) and returns `false`.
+/// `reader` and `filename` name the message about a lack of memory.  Unless `np` asks for
+/// `use_parallelism`, `read()` runs in a TBB arena of one thread, so that its parallel loops
+/// start no thread the caller did not ask for.
+template <class Field, class NamedParameters, class Read>
+bool read_into(const std::string& reader, const std::string& filename, Field& field,
+               const NamedParameters& np, const Read& read)
 {
+  std::string* const error = error_output(np);
+  const bool parallel = reads_in_parallel(np);
   try {
 #ifdef CGAL_LINKED_WITH_TBB
     if (!parallel) {
