@@ -389,7 +389,7 @@ TEST(FlowAlignedDeformation, ParallelIterationsGiveTheSerialSurfaces)
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
 // The default solver with its single-precision copy forced on (or off) at every size.
 template <bool single>
-struct Single_precision_corrections : FAS::internal::Supernodal_LLT<double> {
+struct Single_precision_corrections : FAS::internal::Cholmod_LDLT_swept {
   Single_precision_corrections() { single_precision_from(single ? 0. : 1e300); }
 };
 template <class Flow, bool single>
