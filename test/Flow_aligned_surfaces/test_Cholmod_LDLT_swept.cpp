@@ -3,8 +3,8 @@
 //
 // The default solver's own back-substitutions (internal/solver/Cholmod_LDLT_swept.h) against
 // CHOLMOD's simplicial solve of the same matrix (the peer) and against the residual, and the
-// schedule of internal/solver/Elimination_subtrees.h against the rules of a triangular sweep, checked on a tree
-// built here by hand.
+// schedule of internal/solver/Elimination_subtrees.h against the rules of a triangular sweep,
+// checked on a tree built here by hand.
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
 
@@ -472,5 +472,16 @@ TEST(EliminationSubtrees, ATreeThatIsNotPostorderedIsSweptInSequence)
 }
 
 } // namespace
+
+#else // CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
+
+#include "skip_without_tool.h"
+
+#include <gtest/gtest.h>
+
+TEST(CholmodLDLTSwept, NeedsCholmod)
+{
+  FAS_SKIP_WITHOUT_CHOLMOD();
+}
 
 #endif // CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD

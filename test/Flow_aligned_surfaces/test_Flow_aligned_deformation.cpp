@@ -434,6 +434,11 @@ TEST(FlowAlignedDeformation, SinglePrecisionCorrectionsReachTheDoublePrecisionSu
   expect_the_surface_of_the_double_factor(two, FAS::Point_source_flow<K>(Point(0, 0, 0), 1.0),
                                           FAS::Alignment::ORTHOGONAL);
 }
+#else
+TEST(FlowAlignedDeformation, SinglePrecisionCorrectionsReachTheDoublePrecisionSurface)
+{
+  FAS_SKIP_WITHOUT_CHOLMOD();
+}
 #endif
 
 // next_sample_points() names, bit for bit, every point the next step() samples: a field that
