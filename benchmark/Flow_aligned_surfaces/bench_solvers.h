@@ -93,7 +93,8 @@ public:
   {
     Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> x(b.rows(), b.cols());
     if (SinglePrecisionSolves && solves_corrections_in_single_precision())
-      solve_correction(Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime>::Zero(b.rows(), b.cols()), b, x);
+      solve_correction(
+          Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime>::Zero(b.rows(), b.cols()), b, x);
     else
       x = Base::solve(b);
     return x;
@@ -105,8 +106,9 @@ public:
 
 /// The bytes one supernodal sweep of `solver`'s factor reads: the values, in `value_size` bytes
 /// each, the row indices of the first column of each supernode and the start of every column.
-inline double bytes_per_supernodal_sweep(const CGAL::Flow_aligned_surfaces::internal::Cholmod_LDLT_swept& solver,
-                                         std::size_t value_size)
+inline double
+bytes_per_supernodal_sweep(const CGAL::Flow_aligned_surfaces::internal::Cholmod_LDLT_swept& solver,
+                           std::size_t value_size)
 {
   const double columns = double(solver.factor()->n);
   return solver.number_of_entries() * double(value_size) +
@@ -121,12 +123,14 @@ inline double bytes_per_sweep(const CGAL::Flow_aligned_surfaces::internal::Cholm
   if (!solver.factor())
     return 0;
   if (!solver.uses_supernodal_sweeps())
-    return solver.number_of_entries() * (sizeof(double) + sizeof(int)) + 2. * double(solver.factor()->n) * sizeof(int);
+    return solver.number_of_entries() * (sizeof(double) + sizeof(int)) +
+           2. * double(solver.factor()->n) * sizeof(int);
   return bytes_per_supernodal_sweep(solver, sizeof(double));
 }
 
 /// The bytes one sweep of `solver.solve_correction()` reads from the factor.
-inline double bytes_per_correction_sweep(const CGAL::Flow_aligned_surfaces::internal::Cholmod_LDLT_swept& solver)
+inline double
+bytes_per_correction_sweep(const CGAL::Flow_aligned_surfaces::internal::Cholmod_LDLT_swept& solver)
 {
   if (!solver.solves_corrections_in_single_precision())
     return bytes_per_sweep(solver);

@@ -91,7 +91,8 @@ void expect_the_default_solvers_alignment(const Mesh& start, const Flow& flow, F
 TEST(SparseLinearSolver, AlignToFlowGivesTheDefaultSolversSurface)
 {
   expect_the_default_solvers_alignment(patch(Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 3000),
-                                       FAS::Point_source_flow<K>(Point(0, 0, 0), 1.0), FAS::Alignment::ORTHOGONAL);
+                                       FAS::Point_source_flow<K>(Point(0, 0, 0), 1.0),
+                                       FAS::Alignment::ORTHOGONAL);
   expect_the_default_solvers_alignment(patch(Point(1.0, 0.2, 0.0), Vector(1.0, 0.3, 0.2), 0.8, 3000),
                                        FAS::Helical_flow<K>(0.5), FAS::Alignment::TANGENTIAL);
 }
@@ -104,8 +105,8 @@ TEST(SparseLinearSolver, GrowingGivesTheDefaultSolversSurface)
   FAS::make_disk_patch(by_default, Point(0.1, 0.2, 2.0), Vector(0.2, 0.1, 1.0), 0.5, 1000);
   simplicial = by_default;
   FAS::Flow_aligned_deformation<Mesh, Flow> a(by_default, source, FAS::Alignment::ORTHOGONAL);
-  FAS::Flow_aligned_deformation<Mesh, Flow, CGAL::Default, CGAL::Default, Simplicial> b(simplicial, source,
-                                                                                      FAS::Alignment::ORTHOGONAL);
+  FAS::Flow_aligned_deformation<Mesh, Flow, CGAL::Default, CGAL::Default, Simplicial> b(
+      simplicial, source, FAS::Alignment::ORTHOGONAL);
   a.run();
   b.run();
   const FAS::Growth_report grown_a = a.grow(0.1), grown_b = b.grow(0.1);
@@ -128,7 +129,8 @@ void expect_the_default_solvers_maps(const Mesh& tm, const Parametrize& parametr
   auto r_simplicial = copy.add_property_map<Vertex, double>("v:r_simplicial", 0.).first;
   auto s_simplicial = copy.add_property_map<Vertex, double>("v:s_simplicial", 0.).first;
   ASSERT_TRUE(parametrize(copy, r, s, CGAL::parameters::default_values()));
-  ASSERT_TRUE(parametrize(copy, r_simplicial, s_simplicial, CGAL::parameters::sparse_linear_solver(Simplicial())));
+  ASSERT_TRUE(
+      parametrize(copy, r_simplicial, s_simplicial, CGAL::parameters::sparse_linear_solver(Simplicial())));
   double largest = 0, range = 0;
   for (Vertex v : copy.vertices()) {
     largest = (std::max)({largest, std::abs(r[v] - r_simplicial[v]), std::abs(s[v] - s_simplicial[v])});

@@ -98,23 +98,22 @@ Surface_operators<TriangleMesh> make_surface_operators(const TriangleMesh& tm, c
 /// the package's default when there is none.
 template <class NamedParameters>
 using Sparse_linear_solver_parameter = typename CGAL::Default::Get<
-    typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::sparse_linear_solver_t, NamedParameters,
-                                                       CGAL::Default>::type,
+    typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::sparse_linear_solver_t,
+                                                       NamedParameters, CGAL::Default>::type,
     Default_sparse_linear_solver>::type;
 
 /// The solution x (m x k) of L x = rhs with x = 0 at `constrained[c]` in each component c:
-/// one factorization of L + W with a `SparseLinearSolver`, W = w e_c e_c^T for each constrained vertex, and one
-/// back-substitution per column.  Since the rows of D sum to zero over a component (G maps
+/// one factorization of L + W with a `SparseLinearSolver`, W = w e_c e_c^T for each
+/// constrained vertex, and one back-substitution per column.  Since the rows of D sum to zero over a component (G maps
 /// constants to zero), summing the rows of (L + W) x = D y gives w x_c = 0: the soft
 /// constraint is exact for any w > 0, and w = mean diag(L) keeps L + W well conditioned.
 /// The final shift removes the rounding left at x_c.  `callback` hears `factored` after the
 /// factorization; nothing when it stops the work there.
 template <class SparseLinearSolver>
-std::optional<Eigen::MatrixXd> solve_constrained_poisson(const Poisson_operators& ops,
-                                                                const std::vector<Eigen::Index>& constrained,
-                                                                const std::vector<std::size_t>& vertex_component,
-                                                                const Eigen::MatrixXd& rhs,
-                                                                const Progress_callback& callback, double factored)
+std::optional<Eigen::MatrixXd>
+solve_constrained_poisson(const Poisson_operators& ops, const std::vector<Eigen::Index>& constrained,
+                          const std::vector<std::size_t>& vertex_component, const Eigen::MatrixXd& rhs,
+                          const Progress_callback& callback, double factored)
 {
   Eigen::SparseMatrix<double> system = ops.L;
   const double weight = ops.L.diagonal().mean();
@@ -139,8 +138,8 @@ bool solve_parametrization(const Surface_operators<TriangleMesh>& s, const Posit
                            const std::string& caller, const Progress_callback& callback)
 {
   const Eigen::MatrixXd c = cross_field(s.faces, a, caller);
-  const std::optional<Eigen::MatrixXd> rs =
-      solve_constrained_poisson<SparseLinearSolver>(s.ops, constrained, s.faces.vertex_component, s.ops.D * c, callback, 2. / 3);
+  const std::optional<Eigen::MatrixXd> rs = solve_constrained_poisson<SparseLinearSolver>(
+      s.ops, constrained, s.faces.vertex_component, s.ops.D * c, callback, 2. / 3);
   if (!rs)
     return false;
   write_vertex_values(s.vertices, *rs, 0, r_map);

@@ -134,7 +134,8 @@ public:
     find_supernodes(*m_factor);
     if (single_copy)
       copy_values(*m_factor);
-    m_subtrees = Elimination_subtrees(int(number_of_supernodes()), m_super.data(), m_pi.data(), m_rows.data());
+    m_subtrees =
+        Elimination_subtrees(int(number_of_supernodes()), m_super.data(), m_pi.data(), m_rows.data());
     m_subtrees.use_parallelism(m_parallel);
   }
 
@@ -180,7 +181,8 @@ public:
   /// double factor's and compute in single precision: the iterations' SOLVE takes half the time
   /// of CHOLMOD's solve at 8e4 faces (1.5e6 nonzeros) and 40 % less than the double sweeps at
   /// 3.2e5 (benchmark/Flow_aligned_surfaces/RESULTS.md, "The solver").
-  static constexpr double default_smallest_single_precision_factor = assumed_last_level_cache_bytes / sizeof(double);
+  static constexpr double default_smallest_single_precision_factor =
+      assumed_last_level_cache_bytes / sizeof(double);
 
   /// Sets the number of nonzeros of the factor from which the next factorizations keep the
   /// single-precision copy.
@@ -300,7 +302,8 @@ private:
   // All columns of b, three at a time, solved by the sweeps with the factor's values in precision
   // `Value` and arithmetic in `Scalar`; dest(i, c) = result(i, c, the solution's entry).
   template <class Value, class Scalar, class Rhs, class Dest, class Result>
-  void solve_blocks(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest, const Result& result) const
+  void solve_blocks(const Eigen::MatrixBase<Rhs>& b, Eigen::MatrixBase<Dest>& dest,
+                    const Result& result) const
   {
     dest.derived().resize(b.rows(), b.cols());
     for (Eigen::Index first = 0; first < b.cols(); first += 3) {
@@ -444,7 +447,6 @@ private:
     m_subtrees.backward(
         [&](int s, int group) { sweeper.backward(s, z, buffers[std::size_t(group)].data()); });
   }
-
 
   // CHOLMOD's state: mutable, since CHOLMOD's solve records its statistics there.
   mutable cholmod_common m_common;
