@@ -46,7 +46,7 @@ if [ "${FAS_SKIP_SANITIZERS:-0}" != 1 ]; then
   cmake -S "$root" -B "$sanitized" "${sanitizer_compiler[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O0 -DNDEBUG" -DFAS_SANITIZE=ON -DFAS_WITH_CHOLMOD=OFF \
     -DFAS_BUILD_EXAMPLES=OFF -DFAS_BUILD_DEMO=OFF -DFAS_BUILD_DOC_TEST=OFF
-  cmake --build "$sanitized" --target test_flow_aligned_surfaces test_flow_aligned_surfaces_cholmod -j"$jobs"
+  cmake --build "$sanitized" --target fas_core_tests -j"$jobs"
   (cd "$sanitized" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions="$root/test/Flow_aligned_surfaces/ubsan.supp" \
     ctest --output-on-failure -j"$jobs")
 fi
