@@ -43,6 +43,7 @@
 // records the BLAS it loaded, which the system chooses (Debian: update-alternatives libblas.so.3).
 
 #include "bench_clock.h"
+#include "bench_solvers.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
@@ -268,20 +269,21 @@ public:
 };
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
-// The package's default solver (internal::Supernodal_LLT: CHOLMOD's simplicial LDL^T swept in
+// The package's default solver (internal::Cholmod_LDLT_swept: CHOLMOD's simplicial LDL^T swept in
 // place by supernodes for the solves, the iterations' corrections swept with a single-precision
-// copy on large factors), in double or single precision, with the ordering chosen by size
-// (Ordering < 0) or forced, its solves swept in sequence or over the threads of TBB's default
-// arena (Parallel), with the single-precision copy for the corrections where the package keeps
-// it or never (DoubleCorrections).
-template <class FactorScalar, int Ordering, bool Parallel = false, bool DoubleCorrections = false>
-class Instrumented_supernodal : public Timed_solve<FAS::internal::Supernodal_LLT<FactorScalar>> {
-  using Base = FAS::internal::Supernodal_LLT<FactorScalar>;
+// copy on large factors), its solves in double or swept with the single-precision copy
+// (SinglePrecisionSolves), with the ordering chosen by size (Ordering < 0) or forced, its solves
+// swept in sequence or over the threads of TBB's default arena (Parallel), with the
+// single-precision copy for the corrections where the package keeps it or never
+// (DoubleCorrections).
+template <bool SinglePrecisionSolves, int Ordering, bool Parallel = false, bool DoubleCorrections = false>
+class Instrumented_supernodal
+    : public Timed_solve<fas_benchmark::Benchmarked_LDLT_swept<Ordering, SinglePrecisionSolves>> {
+  using Base = fas_benchmark::Benchmarked_LDLT_swept<Ordering, SinglePrecisionSolves>;
 
 public:
   Instrumented_supernodal()
   {
-    this->use_ordering(Ordering);
     this->use_parallelism(Parallel);
     if (DoubleCorrections)
       this->single_precision_from(std::numeric_limits<double>::infinity());
@@ -300,7 +302,7 @@ public:
     last_factor_stats.ordering = cholmod_ordering_name(this->ordering());
     last_factor_stats.supernodal = this->uses_supernodal_sweeps();
     // The iterations solve corrections (two sweeps each).
-    last_factor_stats.bytes_per_solve = 2 * this->bytes_per_correction_sweep();
+    last_factor_stats.bytes_per_solve = 2 * fas_benchmark::bytes_per_correction_sweep(*this);
     return *this;
   }
 };
@@ -489,21 +491,21 @@ std::vector<Solver_config> solver_configs()
   typedef Eigen::CholmodSupernodalLLT<Sparse_matrix> Supernodal;
   typedef Eigen::CholmodSimplicialLDLT<Sparse_matrix> Cholmod_simplicial;
   configs.push_back({"supernodal_llt",
-                     "the package's Supernodal_LLT: CHOLMOD simplicial LDL^T (default ordering strategy) "
+                     "the package's Cholmod_LDLT_swept: CHOLMOD simplicial LDL^T (default ordering strategy) "
                      "swept in place by supernodes for the solves, double, solves in sequence",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1>>>});
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<false, -1>>>});
   configs.push_back({"supernodal_llt_double_corrections",
                      "supernodal_llt without the single-precision copy: the corrections swept in double "
                      "precision",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1, false, true>>>});
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<false, -1, false, true>>>});
   configs.push_back({"supernodal_llt_metis", "the same with METIS's nested dissection at every size",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, CHOLMOD_METIS>>>});
-  configs.push_back({"supernodal_llt_float", "the same factor rounded to single precision (half the bytes)",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<float, -1>>>});
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<false, CHOLMOD_METIS>>>});
+  configs.push_back({"supernodal_llt_float", "the same factor's single-precision copy swept for the solves too, in single-precision arithmetic (half the bytes)",
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<true, -1>>>});
 #ifdef CGAL_LINKED_WITH_TBB
   configs.push_back({"supernodal_llt_parallel",
                      "supernodal_llt with the solves swept over independent subtrees on TBB's threads (2 here)",
-                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<double, -1, true>>>});
+                     measure_solver<CGAL::Eigen_solver_traits<Instrumented_supernodal<false, -1, true>>>});
 #endif
   configs.push_back(
       {"cholmod_simplicial_ldlt", "CHOLMOD simplicial LDL^T and its own solve (the default's factor), default ordering strategy",
@@ -530,9 +532,9 @@ const char* default_solver_name()
     return "cholmod_supernodal";
   if (std::is_same<Default, Eigen::CholmodSimplicialLDLT<Sparse_matrix>>::value)
     return "cholmod_simplicial_ldlt";
-  if (std::is_same<Default, FAS::internal::Cholmod_auto_LDLT<Sparse_matrix>>::value)
+  if (std::is_same<Default, fas_benchmark::Cholmod_auto_LDLT<Sparse_matrix>>::value)
     return "cholmod_auto_ldlt";
-  if (std::is_same<Default, FAS::internal::Supernodal_LLT<double>>::value)
+  if (std::is_same<Default, FAS::internal::Cholmod_LDLT_swept>::value)
     return "supernodal_llt";
 #endif
   if (std::is_same<Default, Eigen::SimplicialLDLT<Sparse_matrix>>::value)

@@ -4,12 +4,14 @@
 // The constructor of a Flow_aligned_deformation (operators + one factorization)
 // on a 2e4-face planar patch in the point source |v| = 1/r^2, with the default solver (CHOLMOD
 // simplicial LDL^T: no BLAS, no OpenMP) and with CHOLMOD's own choice (its supernodal switch,
-// FAS::internal::Cholmod_auto_LDLT: OpenMP loops and the system's BLAS), alternating, in one run.
+// fas_benchmark::Cholmod_auto_LDLT: OpenMP loops and the system's BLAS), alternating, in one run.
 // Prints the threads each kind left in the process (the default runs first, so that the
 // supernodal threads cannot be counted against it), and the median, min and max constructor
 // times of each.  Run it on a loaded machine to see the spread the spinning threads cause.
 //
 //   bench_threads [faces=20000] [rounds=7]
+
+#include "bench_solvers.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
@@ -82,7 +84,7 @@ int main(int argc, char** argv)
   ours.push_back(construct_ms<Default>(faces));
   const std::size_t t1 = number_of_threads();
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
-  using Former = CGAL::Eigen_solver_traits<FAS::internal::Cholmod_auto_LDLT<Eigen::SparseMatrix<double>>>;
+  using Former = CGAL::Eigen_solver_traits<fas_benchmark::Cholmod_auto_LDLT<Eigen::SparseMatrix<double>>>;
   former.push_back(construct_ms<Former>(faces));
   const std::size_t t2 = number_of_threads();
   for (int r = 1; r < rounds; ++r) {

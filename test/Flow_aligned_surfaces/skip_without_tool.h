@@ -27,4 +27,14 @@ inline bool fas_test_tools_required()
       GTEST_SKIP() << message;                                                                         \
   } while (false)
 
+// FAS_SKIP_WITHOUT_CHOLMOD(): a test case of the CHOLMOD solver in a build whose package does not
+// use CHOLMOD.  Hidden on purpose (FAS_WITH_CHOLMOD=OFF, which defines FAS_TEST_CHOLMOD_HIDDEN), it
+// skips and says so, also under CI; not found, it is a missing tool.
+#ifdef FAS_TEST_CHOLMOD_HIDDEN
+#define FAS_SKIP_WITHOUT_CHOLMOD()                                                                     \
+  GTEST_SKIP() << "CHOLMOD hidden (FAS_WITH_CHOLMOD=OFF): the package factors with Eigen's SimplicialLDLT"
+#else
+#define FAS_SKIP_WITHOUT_CHOLMOD() FAS_SKIP_WITHOUT_TOOL("CHOLMOD not found (Debian: libsuitesparse-dev)")
+#endif
+
 #endif // FAS_TEST_SKIP_WITHOUT_TOOL_H

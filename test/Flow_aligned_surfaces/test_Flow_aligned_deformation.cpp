@@ -389,7 +389,7 @@ TEST(FlowAlignedDeformation, ParallelIterationsGiveTheSerialSurfaces)
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
 // The default solver with its single-precision copy forced on (or off) at every size.
 template <bool single>
-struct Single_precision_corrections : FAS::internal::Supernodal_LLT<double> {
+struct Single_precision_corrections : FAS::internal::Cholmod_LDLT_swept {
   Single_precision_corrections() { single_precision_from(single ? 0. : 1e300); }
 };
 template <class Flow, bool single>
@@ -433,6 +433,11 @@ TEST(FlowAlignedDeformation, SinglePrecisionCorrectionsReachTheDoublePrecisionSu
   FAS::make_planar_patch(two, Point(-1.5, 0.4, 2.5), Vector(0.1, -0.3, 1.0), 0.8, 0.8, 5000);
   expect_the_surface_of_the_double_factor(two, FAS::Point_source_flow<K>(Point(0, 0, 0), 1.0),
                                           FAS::Alignment::ORTHOGONAL);
+}
+#else
+TEST(FlowAlignedDeformation, SinglePrecisionCorrectionsReachTheDoublePrecisionSurface)
+{
+  FAS_SKIP_WITHOUT_CHOLMOD();
 }
 #endif
 

@@ -29,7 +29,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
-#include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
+#include <CGAL/Flow_aligned_surfaces/internal/solver/Sparse_cholesky.h>
 #include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
 #include <CGAL/Flow_aligned_surfaces/internal/heat_method.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
@@ -94,24 +94,32 @@ Surface_operators<TriangleMesh> make_surface_operators(const TriangleMesh& tm, c
   return s;
 }
 
+/// The sparse linear solver of the named parameter `sparse_linear_solver` of `NamedParameters`,
+/// the package's default when there is none.
+template <class NamedParameters>
+using Sparse_linear_solver_parameter = typename CGAL::Default::Get<
+    typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::sparse_linear_solver_t,
+                                                       NamedParameters, CGAL::Default>::type,
+    Default_sparse_linear_solver>::type;
+
 /// The solution x (m x k) of L x = rhs with x = 0 at `constrained[c]` in each component c:
-/// one factorization of L + W, W = w e_c e_c^T for each constrained vertex, and one
-/// back-substitution per column.  Since the rows of D sum to zero over a component (G maps
+/// one factorization of L + W with a `SparseLinearSolver`, W = w e_c e_c^T for each
+/// constrained vertex, and one back-substitution per column.  Since the rows of D sum to zero over a component (G maps
 /// constants to zero), summing the rows of (L + W) x = D y gives w x_c = 0: the soft
 /// constraint is exact for any w > 0, and w = mean diag(L) keeps L + W well conditioned.
 /// The final shift removes the rounding left at x_c.  `callback` hears `factored` after the
 /// factorization; nothing when it stops the work there.
-inline std::optional<Eigen::MatrixXd> solve_constrained_poisson(const Poisson_operators& ops,
-                                                                const std::vector<Eigen::Index>& constrained,
-                                                                const std::vector<std::size_t>& vertex_component,
-                                                                const Eigen::MatrixXd& rhs,
-                                                                const Progress_callback& callback, double factored)
+template <class SparseLinearSolver>
+std::optional<Eigen::MatrixXd>
+solve_constrained_poisson(const Poisson_operators& ops, const std::vector<Eigen::Index>& constrained,
+                          const std::vector<std::size_t>& vertex_component, const Eigen::MatrixXd& rhs,
+                          const Progress_callback& callback, double factored)
 {
   Eigen::SparseMatrix<double> system = ops.L;
   const double weight = ops.L.diagonal().mean();
   for (Eigen::Index v : constrained)
     system.coeffRef(v, v) += weight;
-  Default_sparse_linear_solver solver;
+  SparseLinearSolver solver;
   factor_or_throw(solver, system, "L + W");
   if (!report_progress(callback, factored))
     return std::nullopt;
@@ -120,17 +128,18 @@ inline std::optional<Eigen::MatrixXd> solve_constrained_poisson(const Poisson_op
   return x;
 }
 
-/// Solves eq. (7) on `s` for the guidance `a` (n x 3, b_j = a_j x n_j) and writes r and s;
-/// `callback` hears 2/3 after the factorization and 1 at the end.  Returns false, writing
-/// nothing, when the callback stops the work after the factorization.
-template <class TriangleMesh, class RMap, class SMap>
+/// Solves eq. (7) on `s` for the guidance `a` (n x 3, b_j = a_j x n_j) with a
+/// `SparseLinearSolver` and writes r and s; `callback` hears 2/3 after the factorization and 1
+/// at the end.  Returns false, writing nothing, when the callback stops the work after the
+/// factorization.
+template <class SparseLinearSolver, class TriangleMesh, class RMap, class SMap>
 bool solve_parametrization(const Surface_operators<TriangleMesh>& s, const Positions& a,
                            const std::vector<Eigen::Index>& constrained, RMap r_map, SMap s_map,
                            const std::string& caller, const Progress_callback& callback)
 {
   const Eigen::MatrixXd c = cross_field(s.faces, a, caller);
-  const std::optional<Eigen::MatrixXd> rs =
-      solve_constrained_poisson(s.ops, constrained, s.faces.vertex_component, s.ops.D * c, callback, 2. / 3);
+  const std::optional<Eigen::MatrixXd> rs = solve_constrained_poisson<SparseLinearSolver>(
+      s.ops, constrained, s.faces.vertex_component, s.ops.D * c, callback, 2. / 3);
   if (!rs)
     return false;
   write_vertex_values(s.vertices, *rs, 0, r_map);
@@ -231,6 +240,14 @@ floating-point value type
     \cgalParamType{a callable convertible to `std::function<bool(double)>`}
     \cgalParamDefault{none}
   \cgalParamNEnd
+  \cgalParamNBegin{sparse_linear_solver}
+    \cgalParamDescription{an instance of the sparse linear solver that factors
+      \f$ \mathbf{L} + \mathbf{W} \f$ once and solves both columns; only its type is used}
+    \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d` wrapping an Eigen sparse
+      Cholesky solver, such as `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>`}
+    \cgalParamDefault{CHOLMOD's simplicial \f$ LDL^T \f$ when found, else Eigen's `SimplicialLDLT`
+      (as in `align_to_flow()`)}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns `true`, or `false` when the `callback` stopped the work (nothing written)
@@ -254,7 +271,8 @@ bool parametrize_tangential(const TriangleMesh& tm, const FlowField& field, RMap
     return false;
   const internal::Positions a =
       internal::tangential_guidance(in.surface.faces, std::move(in.velocities), normalize);
-  return internal::solve_parametrization(in.surface, a, in.constrained, r_map, s_map, caller, callback);
+  return internal::solve_parametrization<internal::Sparse_linear_solver_parameter<NamedParameters>>(
+      in.surface, a, in.constrained, r_map, s_map, caller, callback);
 }
 
 /*!
@@ -317,7 +335,7 @@ floating-point value type
       constrained vertex}
     \cgalParamDefault{none: \f$ r_c \f$ is the Householder frame's}
   \cgalParamNEnd
-  \cgalParamNBegin{constraint_vertex, vertex_point_map, geom_traits, vertex_index_map, face_index_map, callback}
+  \cgalParamNBegin{constraint_vertex, vertex_point_map, geom_traits, vertex_index_map, face_index_map, callback, sparse_linear_solver}
     \cgalParamDescription{as in `parametrize_tangential()`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
@@ -344,7 +362,8 @@ bool parametrize_orthogonal(const TriangleMesh& tm, const FlowField& field, RMap
   const internal::Positions a = internal::orthogonal_guidance(
       in.surface.arrays, in.surface.faces, std::move(in.velocities), in.constrained, alpha, normalize,
       internal::orthogonal_gradient_direction(np, caller), caller);
-  return internal::solve_parametrization(in.surface, a, in.constrained, r_map, s_map, caller, callback);
+  return internal::solve_parametrization<internal::Sparse_linear_solver_parameter<NamedParameters>>(
+      in.surface, a, in.constrained, r_map, s_map, caller, callback);
 }
 
 /*!

@@ -20,7 +20,7 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_HEAT_METHOD_H
 
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
-#include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
+#include <CGAL/Flow_aligned_surfaces/internal/solver/Sparse_cholesky.h>
 #include <CGAL/Flow_aligned_surfaces/internal/progress_callback.h>
 
 #include <Eigen/Core>

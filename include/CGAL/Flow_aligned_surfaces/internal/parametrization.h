@@ -21,7 +21,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
-#include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
+#include <CGAL/Flow_aligned_surfaces/internal/solver/Sparse_cholesky.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>

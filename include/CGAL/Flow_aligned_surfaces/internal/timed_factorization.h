@@ -12,7 +12,7 @@
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TIMED_FACTORIZATION_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_TIMED_FACTORIZATION_H
 
-#include <CGAL/Flow_aligned_surfaces/internal/Sparse_cholesky.h>
+#include <CGAL/Flow_aligned_surfaces/internal/solver/Sparse_cholesky.h>
 
 #include <Eigen/Sparse>
 

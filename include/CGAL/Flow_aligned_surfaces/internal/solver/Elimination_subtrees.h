@@ -13,8 +13,8 @@
 // same way.  The cut and the order of every addition are fixed by the factor alone, so the
 // result is the same bit for bit on one thread or many.
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_ELIMINATION_SUBTREES_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_ELIMINATION_SUBTREES_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SOLVER_ELIMINATION_SUBTREES_H
+#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SOLVER_ELIMINATION_SUBTREES_H
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_for.h>
@@ -262,4 +262,4 @@ private:
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_ELIMINATION_SUBTREES_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SOLVER_ELIMINATION_SUBTREES_H

@@ -1,15 +1,15 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The default solver's own back-substitutions (internal/Supernodal_LLT.h) against CHOLMOD's
-// simplicial solve of the same matrix (the peer) and against the residual, and the schedule of
-// internal/Elimination_subtrees.h against the rules of a triangular sweep, checked on a tree
-// built here by hand.
+// The default solver's own back-substitutions (internal/solver/Cholmod_LDLT_swept.h) against
+// CHOLMOD's simplicial solve of the same matrix (the peer) and against the residual, and the
+// schedule of internal/solver/Elimination_subtrees.h against the rules of a triangular sweep,
+// checked on a tree built here by hand.
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
 
-#include <CGAL/Flow_aligned_surfaces/internal/Elimination_subtrees.h>
-#include <CGAL/Flow_aligned_surfaces/internal/Supernodal_LLT.h>
+#include <CGAL/Flow_aligned_surfaces/internal/solver/Cholmod_LDLT_swept.h>
+#include <CGAL/Flow_aligned_surfaces/internal/solver/Elimination_subtrees.h>
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
@@ -56,10 +56,10 @@ double relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b)
   return (a - b).norm() / b.norm();
 }
 
-TEST(SupernodalLLT, SweepsSolveLikeCholmodForAnyNumberOfColumns)
+TEST(CholmodLDLTSwept, SweepsSolveLikeCholmodForAnyNumberOfColumns)
 {
   const Sparse_matrix matrix = triangulated_grid_laplacian(60);
-  FASI::Supernodal_LLT<double> solver;
+  FASI::Cholmod_LDLT_swept solver;
   solver.sweep_from(0); // the sweeps even on this small factor
   solver.compute(matrix);
   ASSERT_EQ(solver.info(), Eigen::Success);
@@ -78,21 +78,16 @@ TEST(SupernodalLLT, SweepsSolveLikeCholmodForAnyNumberOfColumns)
   }
 }
 
-// The solver with its CHOLMOD factor in view.
-struct Inspected_LLT : FASI::Supernodal_LLT<double> {
-  const cholmod_factor& factor() const { return *this->m_cholmodFactor; }
-
-  // Whether some column of the factor has room after its entries.
-  bool has_unpacked_columns() const
-  {
-    const int* p = static_cast<const int*>(factor().p);
-    const int* count = static_cast<const int*>(factor().nz);
-    for (std::size_t j = 0; j < factor().n; ++j)
-      if (p[j + 1] - p[j] > count[j])
-        return true;
-    return false;
-  }
-};
+// Whether some column of CHOLMOD's factor has room after its entries.
+bool has_unpacked_columns(const cholmod_factor& factor)
+{
+  const int* p = static_cast<const int*>(factor.p);
+  const int* count = static_cast<const int*>(factor.nz);
+  for (std::size_t j = 0; j < factor.n; ++j)
+    if (p[j + 1] - p[j] > count[j])
+      return true;
+  return false;
+}
 
 // A symmetric tridiagonal matrix, positive definite: its factor's columns have two entries,
 // the last one, so that nearly every supernode is one column wide.
@@ -111,16 +106,16 @@ Sparse_matrix tridiagonal(int n)
   return matrix;
 }
 
-TEST(SupernodalLLT, SweepsInPlaceMatchCholmodsSolveAtEverySize)
+TEST(CholmodLDLTSwept, SweepsInPlaceMatchCholmodsSolveAtEverySize)
 {
   for (int m : {2, 5, 12, 30, 70, 150}) {
     const Sparse_matrix matrix = triangulated_grid_laplacian(m);
-    Inspected_LLT solver;
+    FASI::Cholmod_LDLT_swept solver;
     solver.sweep_from(0);
     solver.compute(matrix);
     ASSERT_EQ(solver.info(), Eigen::Success);
     ASSERT_TRUE(solver.uses_supernodal_sweeps());
-    EXPECT_FALSE(solver.has_unpacked_columns()) << m; // CHOLMOD allocates each column tight
+    EXPECT_FALSE(has_unpacked_columns(*solver.factor())) << m; // CHOLMOD allocates each column tight
     Eigen::CholmodSimplicialLDLT<Sparse_matrix> peer;
     peer.compute(matrix);
     const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), 3);
@@ -128,22 +123,22 @@ TEST(SupernodalLLT, SweepsInPlaceMatchCholmodsSolveAtEverySize)
   }
 }
 
-TEST(SupernodalLLT, ColumnsMovedWithRoomToGrowAreSweptWhereTheyAre)
+TEST(CholmodLDLTSwept, ColumnsMovedWithRoomToGrowAreSweptWhereTheyAre)
 {
   const Sparse_matrix matrix = triangulated_grid_laplacian(90);
-  Inspected_LLT solver;
+  FASI::Cholmod_LDLT_swept solver;
   solver.sweep_from(0);
   solver.compute(matrix);
   ASSERT_EQ(solver.info(), Eigen::Success);
-  ASSERT_FALSE(solver.has_unpacked_columns());
-  const std::size_t n = solver.factor().n;
+  ASSERT_FALSE(has_unpacked_columns(*solver.factor()));
+  const std::size_t n = solver.factor()->n;
   // CHOLMOD moves a column it gives more room to the end of its storage: the factor is then
   // neither packed nor in column order, as after an update of the factor.
-  cholmod_factor& factor = const_cast<cholmod_factor&>(solver.factor());
+  cholmod_factor& factor = const_cast<cholmod_factor&>(*solver.factor());
   const int* count = static_cast<const int*>(factor.nz);
   for (std::size_t j : {std::size_t(0), n / 3, n / 2, n / 2 + 1, n - 2})
     ASSERT_TRUE(cholmod_reallocate_column(j, std::size_t(count[j]) + 7, &factor, &solver.cholmod()));
-  ASSERT_TRUE(solver.has_unpacked_columns());
+  ASSERT_TRUE(has_unpacked_columns(factor));
   ASSERT_FALSE(factor.is_monotonic);
   Eigen::CholmodSimplicialLDLT<Sparse_matrix> peer;
   peer.compute(matrix);
@@ -151,13 +146,13 @@ TEST(SupernodalLLT, ColumnsMovedWithRoomToGrowAreSweptWhereTheyAre)
   EXPECT_LT(relative_difference(solver.solve(b), peer.solve(b)), 1e-12);
 }
 
-TEST(SupernodalLLT, SupernodesOfOneColumnAreSwept)
+TEST(CholmodLDLTSwept, SupernodesOfOneColumnAreSwept)
 {
   Sparse_matrix diagonal(300, 300);
   diagonal.setIdentity();
   diagonal *= 1.5;
   for (const Sparse_matrix& matrix : {tridiagonal(500), diagonal}) {
-    FASI::Supernodal_LLT<double> solver;
+    FASI::Cholmod_LDLT_swept solver;
     solver.sweep_from(0);
     solver.compute(matrix);
     ASSERT_EQ(solver.info(), Eigen::Success);
@@ -172,9 +167,9 @@ TEST(SupernodalLLT, SupernodesOfOneColumnAreSwept)
   }
 }
 
-TEST(SupernodalLLT, SmallFactorsUseCholmodsSolveAndLargeOnesTheSweeps)
+TEST(CholmodLDLTSwept, SmallFactorsUseCholmodsSolveAndLargeOnesTheSweeps)
 {
-  FASI::Supernodal_LLT<double> small, large;
+  FASI::Cholmod_LDLT_swept small, large;
   small.compute(triangulated_grid_laplacian(20));
   EXPECT_FALSE(small.uses_supernodal_sweeps());
   large.sweep_from(1e4);
@@ -188,10 +183,10 @@ TEST(SupernodalLLT, SmallFactorsUseCholmodsSolveAndLargeOnesTheSweeps)
   }
 }
 
-TEST(SupernodalLLT, RowMajorRightHandSidesAreSolvedToo)
+TEST(CholmodLDLTSwept, RowMajorRightHandSidesAreSolvedToo)
 {
   const Sparse_matrix matrix = triangulated_grid_laplacian(50);
-  FASI::Supernodal_LLT<double> solver;
+  FASI::Cholmod_LDLT_swept solver;
   solver.sweep_from(0);
   solver.compute(matrix);
   const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> b =
@@ -201,22 +196,25 @@ TEST(SupernodalLLT, RowMajorRightHandSidesAreSolvedToo)
   EXPECT_LT((matrix * x - b).norm() / b.norm(), 1e-9);
 }
 
-TEST(SupernodalLLT, SinglePrecisionCopyIsAccurateToSinglePrecision)
+// The single-precision copy solves a whole system (a correction from 0) to single precision.
+TEST(CholmodLDLTSwept, SinglePrecisionCopyIsAccurateToSinglePrecision)
 {
   const Sparse_matrix matrix = triangulated_grid_laplacian(80);
-  FASI::Supernodal_LLT<double> exact;
-  FASI::Supernodal_LLT<float> single;
+  FASI::Cholmod_LDLT_swept exact, single;
   exact.sweep_from(0);
   single.sweep_from(0);
+  single.single_precision_from(0);
   exact.compute(matrix);
   single.compute(matrix);
   ASSERT_EQ(single.info(), Eigen::Success);
+  ASSERT_TRUE(single.solves_corrections_in_single_precision());
   const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), 3);
-  const double error = relative_difference(single.solve(b), exact.solve(b));
+  Eigen::MatrixXd x;
+  single.solve_correction(Eigen::MatrixXd::Zero(matrix.rows(), 3), b, x);
+  const double error = relative_difference(x, exact.solve(b));
   EXPECT_LT(error, 1e-5);
   // Really single precision: a double factor would agree to about 1e-14.
   EXPECT_GT(error, 1e-10);
-  EXPECT_EQ(single.bytes_per_sweep() < 0.7 * exact.bytes_per_sweep(), true);
 }
 
 // One step of iterative refinement from a first approximation x0: the single-precision copy's
@@ -225,14 +223,14 @@ TEST(SupernodalLLT, SinglePrecisionCopyIsAccurateToSinglePrecision)
 // is the shift at the middle node: the structure of L + W); the component of the correction
 // along it is known exactly (sum of A c = shift c_middle = sum of the residual), and with it set,
 // what remains is about 1e-7 times the condition number of A on the other directions.
-TEST(SupernodalLLT, CorrectionsAreAccurateRelativeToTheCorrection)
+TEST(CholmodLDLTSwept, CorrectionsAreAccurateRelativeToTheCorrection)
 {
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
   const int m = 80;
   const double shift = 6e-3;
   const Sparse_matrix matrix = triangulated_grid_laplacian(m, shift);
   const Eigen::Index middle = (m / 2) * m + m / 2;
-  FASI::Supernodal_LLT<double> solver, without_copy;
+  FASI::Cholmod_LDLT_swept solver, without_copy;
   solver.single_precision_from(0);
   without_copy.single_precision_from(1e300);
   solver.compute(matrix);
@@ -241,7 +239,6 @@ TEST(SupernodalLLT, CorrectionsAreAccurateRelativeToTheCorrection)
   EXPECT_TRUE(solver.solves_corrections_in_single_precision());
   EXPECT_FALSE(solver.uses_supernodal_sweeps()); // solve() is still CHOLMOD's, in double
   EXPECT_FALSE(without_copy.solves_corrections_in_single_precision());
-  EXPECT_LT(solver.bytes_per_correction_sweep(), 0.7 * without_copy.bytes_per_correction_sweep());
 
   const Rows b = Rows::Random(matrix.rows(), 3);
   const Rows exact = without_copy.solve(b);
@@ -274,24 +271,24 @@ TEST(SupernodalLLT, CorrectionsAreAccurateRelativeToTheCorrection)
 }
 
 // Where the single-precision copy is kept: large factors of a double solver by default.
-TEST(SupernodalLLT, SinglePrecisionCopyOnlyOnLargeFactors)
+TEST(CholmodLDLTSwept, SinglePrecisionCopyOnlyOnLargeFactors)
 {
   const Sparse_matrix matrix = triangulated_grid_laplacian(40);
-  FASI::Supernodal_LLT<double> by_default, forced;
+  FASI::Cholmod_LDLT_swept by_default, forced;
   by_default.compute(matrix);
-  EXPECT_LT(by_default.number_of_entries(), FASI::Supernodal_LLT<double>::default_smallest_single_precision_factor);
+  EXPECT_LT(by_default.number_of_entries(), FASI::Cholmod_LDLT_swept::default_smallest_single_precision_factor);
   EXPECT_FALSE(by_default.solves_corrections_in_single_precision());
   forced.single_precision_from(by_default.number_of_entries());
   forced.compute(matrix);
   EXPECT_TRUE(forced.solves_corrections_in_single_precision());
 }
 
-TEST(SupernodalLLT, NotPositiveDefiniteIsReported)
+TEST(CholmodLDLTSwept, NotPositiveDefiniteIsReported)
 {
   Sparse_matrix matrix = triangulated_grid_laplacian(10);
   matrix.coeffRef(55, 55) = -4;
   // Solved by CHOLMOD (a small factor) and by the sweeps.
-  FASI::Supernodal_LLT<double> solver, swept;
+  FASI::Cholmod_LDLT_swept solver, swept;
   solver.compute(matrix);
   EXPECT_NE(solver.info(), Eigen::Success);
   swept.sweep_from(0);
@@ -299,26 +296,28 @@ TEST(SupernodalLLT, NotPositiveDefiniteIsReported)
   EXPECT_NE(swept.info(), Eigen::Success);
 }
 
-TEST(SupernodalLLT, OrderingCanBeChosen)
+TEST(CholmodLDLTSwept, OrderingCanBeChosen)
 {
   const Sparse_matrix matrix = triangulated_grid_laplacian(100);
-  FASI::Supernodal_LLT<double> by_default, dissected;
+  FASI::Cholmod_LDLT_swept by_default, dissected;
   by_default.compute(matrix);
-  EXPECT_EQ(by_default.ordering(), CHOLMOD_AMD);
-  dissected.use_ordering(CHOLMOD_METIS);
+  EXPECT_EQ(by_default.factor()->ordering, CHOLMOD_AMD);
+  // Through CHOLMOD's own settings: the next analysis tries METIS only.
+  dissected.cholmod().nmethods = 1;
+  dissected.cholmod().method[0].ordering = CHOLMOD_METIS;
   dissected.sweep_from(0);
   dissected.compute(matrix);
   ASSERT_EQ(dissected.info(), Eigen::Success);
-  EXPECT_EQ(dissected.ordering(), CHOLMOD_METIS);
+  EXPECT_EQ(dissected.factor()->ordering, CHOLMOD_METIS);
   const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), 3);
   EXPECT_LT(relative_difference(dissected.solve(b), by_default.solve(b)), 1e-9);
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
-TEST(SupernodalLLT, ParallelSweepsGiveTheSerialSolutionBitForBit)
+TEST(CholmodLDLTSwept, ParallelSweepsGiveTheSerialSolutionBitForBit)
 {
   const Sparse_matrix matrix = triangulated_grid_laplacian(120);
-  FASI::Supernodal_LLT<double> serial, parallel;
+  FASI::Cholmod_LDLT_swept serial, parallel;
   serial.sweep_from(0);
   serial.single_precision_from(0);
   serial.compute(matrix);
@@ -473,5 +472,16 @@ TEST(EliminationSubtrees, ATreeThatIsNotPostorderedIsSweptInSequence)
 }
 
 } // namespace
+
+#else // CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
+
+#include "skip_without_tool.h"
+
+#include <gtest/gtest.h>
+
+TEST(CholmodLDLTSwept, NeedsCholmod)
+{
+  FAS_SKIP_WITHOUT_CHOLMOD();
+}
 
 #endif // CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD

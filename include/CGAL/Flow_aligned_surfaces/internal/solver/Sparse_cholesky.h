@@ -18,16 +18,15 @@
 // default: a user who wants it passes it as the SparseLinearSolver and controls its threads with
 // the environment (OMP_THREAD_LIMIT, OPENBLAS_NUM_THREADS).
 
-#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SPARSE_CHOLESKY_H
-#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SPARSE_CHOLESKY_H
+#ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SOLVER_SPARSE_CHOLESKY_H
+#define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SOLVER_SPARSE_CHOLESKY_H
 
 #include <CGAL/Eigen_solver_traits.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
-#include <CGAL/Flow_aligned_surfaces/internal/Supernodal_LLT.h>
-#include <Eigen/CholmodSupport>
+#include <CGAL/Flow_aligned_surfaces/internal/solver/Cholmod_LDLT_swept.h>
 #endif
 
 #include <stdexcept>
@@ -38,38 +37,11 @@ namespace Flow_aligned_surfaces {
 namespace internal {
 
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
-/// Not the default (it may start threads, see the top of this file); kept for the benchmark's
-/// comparison.  CHOLMOD's LDL^T: factored the way CHOLMOD's own switch chooses (simplicial when
-/// flops / nnz(L) < 40, i.e. below about 5e3 faces; supernodal LL^T above, blocked BLAS-3), then
-/// left by `cholmod_factorize` as a simplicial LDL^T factor (`final_super = 0`, `final_ll = 0`)
-/// without the zeros of relaxed supernodal amalgamation (`final_resymbol = 1`).  So the
-/// factorization is the one CHOLMOD expects to be faster, and the back-substitutions, paid every
-/// iteration, are always CHOLMOD's simplicial ones, which sweep the three coordinate columns at
-/// once instead of making many small BLAS calls per supernode (1.4 to 3.8 times faster).  Measured in benchmark/Flow_aligned_surfaces/RESULTS.md,
-/// "The solver".
-template <class MatrixType>
-class Cholmod_auto_LDLT : public Eigen::CholmodBase<MatrixType, Eigen::Lower, Cholmod_auto_LDLT<MatrixType>> {
-  using Base = Eigen::CholmodBase<MatrixType, Eigen::Lower, Cholmod_auto_LDLT<MatrixType>>;
-
-public:
-  Cholmod_auto_LDLT() : Base()
-  {
-    cholmod_common& common = this->cholmod();
-    common.supernodal = CHOLMOD_AUTO;
-    common.final_asis = 0;
-    common.final_super = 0;
-    common.final_ll = 0;
-    common.final_pack = 1;
-    common.final_monotonic = 1;
-    common.final_resymbol = 1;
-  }
-};
-
 /// CHOLMOD's simplicial LDL^T (fill-reducing ordering by CHOLMOD's default strategy): one thread,
 /// no BLAS; on large factors, its back-substitutions sweep the factor by supernodes where CHOLMOD
 /// stores it, the three coordinate columns at once, in parallel over independent subtrees when
-/// asked (Supernodal_LLT.h).
-using Default_sparse_linear_solver = CGAL::Eigen_solver_traits<Supernodal_LLT<double>>;
+/// asked (Cholmod_LDLT_swept.h).
+using Default_sparse_linear_solver = CGAL::Eigen_solver_traits<Cholmod_LDLT_swept>;
 #else
 using Default_sparse_linear_solver =
     CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>;
@@ -82,8 +54,7 @@ void use_parallelism_in(EigenSolver&, bool)
 {
 }
 #ifdef CGAL_FLOW_ALIGNED_SURFACES_USE_CHOLMOD
-template <class FactorScalar>
-void use_parallelism_in(Supernodal_LLT<FactorScalar>& solver, bool parallel)
+inline void use_parallelism_in(Cholmod_LDLT_swept& solver, bool parallel)
 {
   solver.use_parallelism(parallel);
 }
@@ -92,7 +63,7 @@ void use_parallelism_in(Supernodal_LLT<FactorScalar>& solver, bool parallel)
 /// `dest = base + A^{-1} residual`, `residual = b - A base` computed by the caller in double: one
 /// step of iterative refinement from `base`, a first approximation of the solution of `A x = b`,
 /// with `solver`, an Eigen solver of A.  The package's default solver sweeps the correction with
-/// a single-precision copy of a large factor (Supernodal_LLT::solve_correction()); any other
+/// a single-precision copy of a large factor (Cholmod_LDLT_swept::solve_correction()); any other
 /// solves it as it solves everything.
 template <class EigenSolver, class Base, class Residual, class Dest>
 auto solve_correction(const EigenSolver& solver, const Base& base, const Residual& residual, Dest& dest, int)
@@ -144,4 +115,4 @@ void factor_pattern_or_throw(SparseLinearSolver& solver, const Eigen::SparseMatr
 } // namespace Flow_aligned_surfaces
 } // namespace CGAL
 
-#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SPARSE_CHOLESKY_H
+#endif // CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_SOLVER_SPARSE_CHOLESKY_H
