@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "planar_patch_mesh.h"
 #include "skip_without_tool.h"
 
 #include <gtest/gtest.h>
@@ -38,12 +39,7 @@ using Mesh = CGAL::Surface_mesh<Point>;
 namespace FAS = CGAL::Flow_aligned_surfaces;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-Mesh planar_patch(const Point& center, const Vector& normal, double size, std::size_t faces)
-{
-  Mesh tm;
-  FAS::make_planar_patch(tm, center, normal, size, size, faces);
-  return tm;
-}
+using fas_test::planar_patch;
 
 // max - min of a scalar function over the vertices.
 template <class Function>
@@ -58,12 +54,7 @@ double spread_over_vertices(const Mesh& tm, const Function& f)
   return hi - lo;
 }
 
-double diameter(const Mesh& tm)
-{
-  const auto box = PMP::bbox(tm);
-  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                   CGAL::square(box.zmax() - box.zmin()));
-}
+using fas_test::diameter;
 
 // |v| averaged over the vertices: the scale of |grad phi| on the patch.
 template <class Flow>

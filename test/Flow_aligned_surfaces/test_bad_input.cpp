@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include "expect_invalid_argument.h"
+#include "planar_patch_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -47,12 +48,7 @@ Field point_source()
   return FAS::Point_source_flow<K>(Point(0, 0, 0), 1.0);
 }
 
-Mesh planar_patch(const Point& center, const Vector& normal, double size, std::size_t faces)
-{
-  Mesh tm;
-  FAS::make_planar_patch(tm, center, normal, size, size, faces);
-  return tm;
-}
+using fas_test::planar_patch;
 
 // The vertex positions and the combinatorics, to check that a failed call left the mesh alone.
 struct Snapshot {

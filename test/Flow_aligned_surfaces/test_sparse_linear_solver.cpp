@@ -19,6 +19,8 @@
 
 #include <Eigen/SparseCholesky>
 
+#include "planar_patch_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -41,12 +43,8 @@ using Simplicial = CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::Sparse
 // round differently (about 1e-16 of a solution), and the iterations do not amplify it this much.
 constexpr double tolerance = 1e-9;
 
-double diameter(const Mesh& tm)
-{
-  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(tm);
-  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                   CGAL::square(box.zmax() - box.zmin()));
-}
+using fas_test::diameter;
+using fas_test::planar_patch;
 
 // The largest distance between the vertices of two meshes of the same connectivity.
 double largest_distance(const Mesh& a, const Mesh& b)
@@ -58,12 +56,6 @@ double largest_distance(const Mesh& a, const Mesh& b)
   return largest;
 }
 
-Mesh patch(const Point& center, const Vector& normal, double size, std::size_t faces)
-{
-  Mesh tm;
-  FAS::make_planar_patch(tm, center, normal, size, size, faces);
-  return tm;
-}
 
 TEST(SparseLinearSolver, DefaultIsCholmodsWhenFoundElseEigens)
 {
@@ -90,10 +82,10 @@ void expect_the_default_solvers_alignment(const Mesh& start, const Flow& flow, F
 
 TEST(SparseLinearSolver, AlignToFlowGivesTheDefaultSolversSurface)
 {
-  expect_the_default_solvers_alignment(patch(Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 3000),
+  expect_the_default_solvers_alignment(planar_patch(Point(0.2, -0.1, 2.0), Vector(0.3, 0.2, 1.0), 1.0, 3000),
                                        FAS::Point_source_flow<K>(Point(0, 0, 0), 1.0),
                                        FAS::Alignment::ORTHOGONAL);
-  expect_the_default_solvers_alignment(patch(Point(1.0, 0.2, 0.0), Vector(1.0, 0.3, 0.2), 0.8, 3000),
+  expect_the_default_solvers_alignment(planar_patch(Point(1.0, 0.2, 0.0), Vector(1.0, 0.3, 0.2), 0.8, 3000),
                                        FAS::Helical_flow<K>(0.5), FAS::Alignment::TANGENTIAL);
 }
 
@@ -143,7 +135,7 @@ void expect_the_default_solvers_maps(const Mesh& tm, const Parametrize& parametr
 TEST(SparseLinearSolver, ParametrizationsGiveTheDefaultSolversMaps)
 {
   const FAS::Helical_flow<K> helix(0.5);
-  const Mesh tm = patch(Point(1.0, 0.2, 0.0), Vector(1.0, 0.3, 0.2), 0.8, 3000);
+  const Mesh tm = planar_patch(Point(1.0, 0.2, 0.0), Vector(1.0, 0.3, 0.2), 0.8, 3000);
   expect_the_default_solvers_maps(tm, [&](const Mesh& m, auto r, auto s, const auto& np) {
     return FAS::parametrize_tangential(m, helix, r, s, np);
   });
