@@ -16,6 +16,7 @@ around it stays; a missing file is created with the markers.  Standard library o
 import argparse
 import json
 import os
+import re
 import sys
 
 BEGIN = "<!-- BEGIN GENERATED -->"
@@ -32,6 +33,61 @@ PAPER = {
 }
 FACTOR_DIVISOR = 5.0  # FACTOR <= paper / 5
 ITS_FACTOR = 3.0      # IT/s >= 3 x paper
+
+# bench_deformation labels its solver configurations; the default's configurations carry the
+# label "supernodal_llt" of the class that Cholmod_LDLT_swept (internal/solver/) replaced.  The
+# tables print the current names.
+OLD_DEFAULT_LABEL = "supernodal_llt"
+DEFAULT_LABEL = "cholmod_ldlt_swept"
+DISPLAY = {
+    DEFAULT_LABEL: "`Cholmod_LDLT_swept`",
+    DEFAULT_LABEL + "_double_corrections": "double corrections",
+    DEFAULT_LABEL + "_float": "float factor",
+    DEFAULT_LABEL + "_parallel": "parallel sweeps",
+    DEFAULT_LABEL + "_metis": "METIS ordering",
+    "cholmod_simplicial_ldlt": "CHOLMOD simplicial LDLᵀ",
+    "cholmod_supernodal": "CHOLMOD supernodal LLᵀ",
+    "cholmod_auto_ldlt": "CHOLMOD's own choice",
+    "eigen_simplicial_ldlt": "Eigen `SimplicialLDLT`",
+    "warm_conjugate_gradient": "warm conjugate gradient",
+}
+# The peers of the default in the solver table, in this order; every other configuration is a
+# variant of the default (the same factor, or the same solver with another ordering).
+PEERS = ["cholmod_simplicial_ldlt", "cholmod_supernodal", "cholmod_auto_ldlt", "eigen_simplicial_ldlt",
+         "warm_conjugate_gradient"]
+
+
+def label(name):
+    """A configuration's label under the current class names."""
+    if name == OLD_DEFAULT_LABEL or name.startswith(OLD_DEFAULT_LABEL + "_"):
+        return DEFAULT_LABEL + name[len(OLD_DEFAULT_LABEL):]
+    return name
+
+
+def display(name):
+    name = label(name)
+    return DISPLAY.get(name, f"`{name}`")
+
+
+# What the configurations are today, where bench_deformation's own description is that of the
+# class the default replaced.
+DESCRIPTIONS = {
+    DEFAULT_LABEL: "the package's default: CHOLMOD simplicial LDLᵀ (CHOLMOD's default ordering strategy), "
+                   "CHOLMOD's solve below 3e6 nonzeros of the factor and supernodal sweeps of the factor "
+                   "in place above, the iterations' corrections with a single-precision copy from 1e6 nonzeros",
+}
+
+
+def describe_solver(name, text):
+    return DESCRIPTIONS.get(label(name), describe(text))
+
+
+def describe(text):
+    """A JSON description with the old class name and labels replaced by the current ones."""
+    text = text.replace("the package's Supernodal_LLT: ", "the package's default: ")
+    text = text.replace("the package's Cholmod_LDLT_swept: ", "the package's default: ")
+    text = text.replace("Supernodal_LLT", "Cholmod_LDLT_swept")
+    return re.sub(r"\bsupernodal_llt\w*", lambda m: display(m.group(0)).strip("`"), text)
 
 
 def fmt(x, digits=3):
@@ -61,7 +117,7 @@ def mark(ok):
 def table1_section(data, label=None):
     out = []
     sizes = data["sizes"]
-    solver = sizes[0]["default_solver"] if sizes else "?"
+    solver = display(sizes[0]["default_solver"]).strip("`") if sizes else "?"
     title = "Table 1" if label is None else f"Table 1, variant: {label}"
     out.append(f"### {title}\n")
     overlay = data["machine"].get("include_overlay", "")
@@ -85,7 +141,9 @@ def table1_section(data, label=None):
             f'| {fmt(s["its_per_s"])} / {fmt(p("its_per_s"))} '
             f'| {nconv} / {fmt(p("nconv"))} | {fmt(s.get("construct_ms"))} |')
     out.append("")
-    out.append("Targets: FACTOR ≤ paper/5, IT/s ≥ 3 × paper, NCONV ≤ paper (both alignments).\n")
+    out.append("Targets: FACTOR ≤ paper/5, IT/s ≥ 3 × paper, NCONV ≤ paper (both alignments); ×: ours "
+               "divided by the target.  The wall-clock rate times whole `step()` calls, which also write the "
+               "positions back and measure the step; IT/s is the paper's 1000 / (GTRANSF + SOLVE).\n")
     out.append("| faces | FACTOR ≤ | | IT/s ≥ | | NCONV ≤ | | wall-clock step() rate |")
     out.append("|---:|---:|---|---:|---|---:|---|---:|")
     for s in sizes:
@@ -104,58 +162,77 @@ def table1_section(data, label=None):
             f'| {PAPER["nconv"][i]} | {mark(converged and nconv <= PAPER["nconv"][i])} ({nconv}) '
             f'| {fmt(s["its_per_s_wall"])} it/s |')
     out.append("")
-    out.append("(×: ours divided by the target.  The wall-clock rate times whole `step()` calls, which "
-               "also write the positions back and measure the step; IT/s is the paper's "
-               "1000 / (GTRANSF + SOLVE).)\n")
     return out
 
 
 def convergence_section(data):
     out = ["### Convergence from the fixed starts\n"]
     setup = data["setup"]
-    out.append(f'- Field: {setup["field"]}.')
-    out.append(f'- Patch: {setup["patch"]}.')
-    out.append(f'- Orthogonal start: {setup["start_orthogonal"]}.')
-    out.append(f'- Tangential start: {setup["start_tangential"]}.')
-    out.append(f'- Convergence: {setup["convergence"]}; at most {setup["max_iterations"]} iterations.\n')
-    out.append("| faces | alignment | NCONV | rule | f_n start → end | last requested rotation (rad) |")
-    out.append("|---:|---|---:|---|---|---:|")
+    out.append(f'Field: {setup["field"]}.  Patch: {setup["patch"]}.  '
+               f'Orthogonal start: {setup["start_orthogonal"]}.  Tangential start: {setup["start_tangential"]}.  '
+               f'Convergence: {setup["convergence"]}; at most {setup["max_iterations"]} iterations.\n')
+    out.append("| faces | orthogonal: NCONV, rule | f_n start → end | last rotation (rad) "
+               "| tangential: NCONV, rule | f_n start → end | last rotation (rad) |")
+    out.append("|---:|---|---|---:|---|---|---:|")
     for s in data["sizes"]:
+        cells = []
         for name in ("orthogonal", "tangential"):
             a = s["by_alignment"][name]
             rule = a["rule"] if a["converged"] else "not converged"
-            out.append(f'| {s["faces"]:,} | {name} | {a["nconv"]} | {rule} '
-                       f'| {a["initial_flux"]:.4f} → {a["final_flux"]:.6f} | {a["last_max_rotation_angle"]:.2e} |')
+            cells.append(f'{a["nconv"]}, {rule} | {a["initial_flux"]:.4f} → {a["final_flux"]:.6f} '
+                         f'| {a["last_max_rotation_angle"]:.2e}')
+        out.append(f'| {s["faces"]:,} | ' + " | ".join(cells) + " |")
     out.append("")
     return out
 
 
 def solver_section(data):
+    """One row per mesh: the default, its variants and its peers side by side."""
+    sizes = data["sizes"]
+    if not sizes:
+        return []
+    names = [label(c["name"]) for c in sizes[0]["solvers"]]
+    default = label(sizes[0]["default_solver"])
+    peers = [n for n in PEERS if n in names and n != default]
+    variants = [n for n in names if n != default and n not in peers]
+    first = {label(c["name"]): c for c in sizes[0]["solvers"]}
+    # A variant that keeps the default's ordering has the default's factor: only its SOLVE differs.
+    same_factor = {n for n in variants if default in first and first[n]["ordering"] == first[default]["ordering"]}
     out = ["### Sparse Cholesky solvers on the same matrix L + W\n"]
-    out.append(f'FACTOR = symbolic analysis + numeric factorization (wall clock; thread CPU time beside it); '
-               f'SOLVE = median of {data["setup"]["solver_steps"]} iterations (the three coordinates at once).  '
-               'nnz(L) and flops are CHOLMOD\'s counts from the analysis.\n')
-    out.append("| faces | solver | ordering | FACTOR ms | analyze | numeric | FACTOR cpu | SOLVE ms | nnz(L) | MB per solve | flops |")
-    out.append("|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
-    for s in data["sizes"]:
-        best_factor = min(c["factor_ms"] for c in s["solvers"])
-        best_solve = min(c["solve_ms"] for c in s["solvers"])
-        for c in s["solvers"]:
-            f = fmt(c["factor_ms"])
-            if c["factor_ms"] == best_factor:
-                f = f"**{f}**"
-            sv = fmt(c["solve_ms"])
-            if c["solve_ms"] == best_solve:
-                sv = f"**{sv}**"
-            default = " (default)" if c["name"] == s["default_solver"] else ""
-            flops = fmt(c["flops"]) if c.get("flops") not in (None, -1) else "–"
-            mb = fmt(c["bytes_per_solve"] / 1e6) if c.get("bytes_per_solve", -1) not in (None, -1) else "–"
-            nnz = fmt(c["nnz_L"]) if c.get("nnz_L", -1) not in (None, -1) else "–"
-            out.append(f'| {s["faces"]:,} | `{c["name"]}`{default} | {c["ordering"]} | {f} | {fmt(c["analyze_ms"])} '
-                       f'| {fmt(c["numeric_ms"])} | {fmt(c["factor_cpu_ms"])} | {sv} | {nnz} | {mb} | {flops} |')
+    out.append('Cells: FACTOR / SOLVE ms (FACTOR = symbolic analysis + numeric factorization, wall clock; '
+               f'SOLVE = median of {data["setup"]["solver_steps"]} iterations, the three coordinates at once); '
+               "SOLVE only for the default's variants that keep its factor.  nnz(L), flops and the "
+               "analysis time are the default's (CHOLMOD's counts).  Fastest FACTOR and SOLVE of a row in bold.\n")
+    columns = [default] + variants + peers
+    out.append("| faces | nnz(L) | flops | analysis ms | " + display(default) + " (default) | "
+               + " | ".join(display(n) for n in columns[1:]) + " |")
+    out.append("|---:|---:|---:|---:|" + "---:|" * len(columns))
+    for s in sizes:
+        c = {label(x["name"]): x for x in s["solvers"]}
+        present = [n for n in columns if n in c]
+        best_factor = min(c[n]["factor_ms"] for n in present if n not in same_factor)
+        best_solve = min(c[n]["solve_ms"] for n in present)
+
+        def cell(n):
+            if n not in c:
+                return "–"
+            sv = fmt(c[n]["solve_ms"])
+            sv = f"**{sv}**" if c[n]["solve_ms"] == best_solve else sv
+            if n in same_factor:
+                return sv
+            f = fmt(c[n]["factor_ms"])
+            f = f"**{f}**" if c[n]["factor_ms"] == best_factor else f
+            return f"{f} / {sv}"
+
+        d = c.get(default, {})
+        nnz = fmt(d["nnz_L"]) if d.get("nnz_L", -1) not in (None, -1) else "–"
+        flops = fmt(d["flops"]) if d.get("flops", -1) not in (None, -1) else "–"
+        out.append(f'| {s["faces"]:,} | {nnz} | {flops} | {fmt(d.get("analyze_ms"))} | '
+                   + " | ".join(cell(n) for n in columns) + " |")
     out.append("")
-    out.append("Solvers: " + "; ".join(f'`{c["name"]}`: {c["description"].replace(" (package default)", "")}' for c in data["sizes"][0]["solvers"]) + ".\n"
-               if data["sizes"] else "")
+    out.append("Solvers: " + "; ".join(
+        f'{display(n)}: {describe_solver(n, first[n]["description"]).replace(" (package default)", "")}'
+        for n in columns) + ".\n")
     return out
 
 
@@ -168,16 +245,17 @@ def limits_section(data):
         return []
     after = data["run"].get("read_bandwidth_gb_s_1_thread_after")
     out = ["### The physical limit of SOLVE, and both cores\n"]
+    default_name = display(data["sizes"][0]["default_solver"]) if data["sizes"] else "?"
     out.append(f'Read bandwidth measured in this run (one thread streaming 256 MiB, median of 5): '
                f'{fmt(bandwidth)} GB/s before the sizes, {fmt(after)} GB/s after; '
                f'{fmt(m.get("read_bandwidth_gb_s_all_threads"))} GB/s on all {m["hardware_threads"]} threads.  '
-               'Bytes: the factor read by the two sweeps of one solve (values and row indices), the '
-               'least any direct solve with this factor must stream; bound = bytes / bandwidth.  '
+               f'Bytes: the factor of {default_name} read by the two sweeps of one solve (values and row '
+               'indices), the least any direct solve with this factor must stream; bound = bytes / bandwidth.  '
                'The parallel columns repeat the orthogonal run with `use_parallelism(true)` '
                '(TBB over the faces and over independent subtrees of the elimination tree).\n')
-    out.append("| faces | solver | nnz(L) | MB per solve | bound ms | SOLVE ms | SOLVE / bound "
+    out.append("| faces | nnz(L) | MB per solve | bound ms | SOLVE ms | SOLVE / bound "
                "| parallel GTRANSF ms | parallel SOLVE ms | parallel IT/s | parallel / serial IT/s |")
-    out.append("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    out.append("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for s in data["sizes"]:
         default = next((c for c in s["solvers"] if c["name"] == s["default_solver"]), None)
         if default is None or default.get("bytes_per_solve", -1) in (None, -1):
@@ -187,7 +265,7 @@ def limits_section(data):
         par = s.get("parallel")
         par_cells = (f'| {fmt(par["gtransf_ms"])} | {fmt(par["solve_ms"])} | {fmt(par["its_per_s"])} '
                      f'| {fmt(par["its_per_s"] / s["its_per_s"], 2)}× |') if par else "| – | – | – | – |"
-        out.append(f'| {s["faces"]:,} | `{default["name"]}` | {fmt(default["nnz_L"])} | {fmt(mb)} | {fmt(bound)} '
+        out.append(f'| {s["faces"]:,} | {fmt(default["nnz_L"])} | {fmt(mb)} | {fmt(bound)} '
                    f'| {fmt(s["solve_ms"])} | {fmt(s["solve_ms"] / bound, 2)}× {par_cells}')
     out.append("")
     return out
@@ -195,14 +273,13 @@ def limits_section(data):
 
 def grid_section(grid, command):
     out = ["### Grid sampling (bench_grid_sampling)\n"]
-    if command:
-        out.append(f"Command: `{command}`\n")
     ctx = grid.get("context", {})
     build = ctx.get("library_build_type", "")
     out.append(f'Google Benchmark ({build} build of the library{": its own overhead is included" if build == "debug" else ""}), '
                f'{ctx.get("num_cpus", "?")} CPUs at {ctx.get("mhz_per_cpu", "?")} MHz, load average '
                f'{", ".join(f"{x:.2f}" for x in ctx.get("load_avg", []))}.  One iteration is '
-               'one query on a 128³ grid sampled from the ABC flow; 7 repetitions; target ≤ 50 ns at coherent positions.\n')
+               'one query on a 128³ grid sampled from the ABC flow; 7 repetitions; target ≤ 50 ns at coherent positions.'
+               + (f'  Command: `{command}`.' if command else "") + "\n")
     rows = {}
     for b in grid.get("benchmarks", []):
         if b.get("run_type") != "aggregate":
@@ -233,8 +310,8 @@ def machine_section(data, command):
                f'`{m["loadavg_before"]}`, after `{run["loadavg_after"]}`; run {run["wall_s"]:.1f} s wall, '
                f'{run["cpu_s"]:.1f} s CPU ('
                + ("CPU ≈ wall: one thread, rarely preempted" if run["cpu_s"] >= 0.9 * run["wall_s"]
-                  else "CPU < wall: the process waited for a core; figures are noisier") + ').')
-    out.append(f'- Software: GCC {m["compiler"]}, CGAL {m["cgal"]}, Eigen {m["eigen"]}, CHOLMOD {m["cholmod"]}; '
+                  else "CPU < wall: the process waited for a core; figures are noisier") + ').  '
+               f'GCC {m["compiler"]}, CGAL {m["cgal"]}, Eigen {m["eigen"]}, CHOLMOD {m["cholmod"]}; '
                f'NDEBUG {m["ndebug"]}; OMP_NUM_THREADS={m["omp_num_threads"]}, '
                f'OMP_THREAD_LIMIT={m.get("omp_thread_limit", "?")}, OPENBLAS_NUM_THREADS={m.get("openblas_num_threads", "?")}.')
     out.append(f'- Libraries loaded: `{m.get("libraries", "")}`')
