@@ -4,9 +4,11 @@
 # Builds what the tests run and runs every test through ctest:
 #  1. Release: the core GoogleTest executable (no VTK), the VTK one, the examples and the demo
 #     programs (run as tests), the ParaView plugin (pvbatch scripts, the GUI under Xvfb, 2 MPI
-#     ranks), the Doxygen manual, the find_package consumer project, the install-deps guard.  The benchmarks are not built: scripts/build-benchmarks.sh builds them.
-#  2. AddressSanitizer + UndefinedBehaviorSanitizer, compiled by clang++ when there is one: the core
-#     executable, and the readers' libFuzzer targets (clang++).  Rendering and VTK are not sanitized.
+#     ranks), the Doxygen manual, the find_package consumer project, the install-deps guard.  The
+#     benchmarks are not built: scripts/build-benchmarks.sh builds them.
+#  2. AddressSanitizer + UndefinedBehaviorSanitizer: the core executable, and the readers'
+#     libFuzzer targets (clang++).  Rendering and VTK are not sanitized.
+#  Both passes are compiled by clang++ when there is one, the consumer project by g++.
 #     The package is configured without CHOLMOD here (FAS_WITH_CHOLMOD=OFF): the core suite runs once
 #     with the solver of a machine without SuiteSparse, and the CHOLMOD solver's own tests run
 #     sanitized with CHOLMOD from an executable of their own (test_flow_aligned_surfaces_cholmod).
@@ -22,28 +24,34 @@ jobs=$(nproc)
 # ccache hashes paths relative to the clone, so a fresh clone reuses an earlier clone's objects.
 export CCACHE_BASEDIR="$root"
 
+# Both passes are compiled by clang++ when there is one (installed for the fuzz targets), and the
+# outside project of consumer_find_package by g++: every run compiles the package with both
+# compilers (each rejects some of what the other lets pass: clang a structured binding captured
+# by a lambda, for one), and clang's front end takes the package's templates in about
+# half of GCC's time (measured, cold, -O3: the examples 213 s of CPU against 390 s).
+compilers=()
+consumer_compiler=()
+if command -v clang++ > /dev/null && command -v clang > /dev/null; then
+  compilers=(-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang)
+  if command -v g++ > /dev/null; then
+    consumer_compiler=(-DFAS_CONSUMER_CXX_COMPILER="$(command -v g++)")
+  fi
+fi
+
 build="$root/build/release"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+cmake -S "$root" -B "$build" "${compilers[@]}" "${consumer_compiler[@]}" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j"$jobs"
 (cd "$build" && ctest --output-on-failure -j"$jobs")
 
 if [ "${FAS_SKIP_SANITIZERS:-0}" != 1 ]; then
   sanitized="$root/build/sanitize"
-  # clang++ (installed for the fuzz targets) when there is one: the package is then compiled by
-  # both compilers in every run (clang rejects what GCC lets pass, a structured binding captured
-  # by a lambda for one), and clang's front end takes the suite's templates in a fraction of GCC's
-  # time (measured: the heaviest unity batch 80 s of CPU against 314 s).
-  sanitizer_compiler=()
-  if command -v clang++ > /dev/null && command -v clang > /dev/null; then
-    sanitizer_compiler=(-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang)
-  fi
   # -O0, no debug information: the core suite compiles in a quarter of the time of -O1
   # (measured with clang: one unity batch 80 s of CPU at -O0, 334 s at -O1) and still runs in
   # minutes.  ASan's reports name the functions from the symbols; add -g1 for line numbers.
   # Without CHOLMOD: the Release pass above runs the suite with it, so the fallback solver (Eigen's
   # SimplicialLDLT) gets its run here at no cost in build time; the CHOLMOD solver's test file is
   # compiled alone with CHOLMOD, so that its sweeps stay sanitized.
-  cmake -S "$root" -B "$sanitized" "${sanitizer_compiler[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  cmake -S "$root" -B "$sanitized" "${compilers[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O0 -DNDEBUG" -DFAS_SANITIZE=ON -DFAS_WITH_CHOLMOD=OFF \
     -DFAS_BUILD_EXAMPLES=OFF -DFAS_BUILD_DEMO=OFF -DFAS_BUILD_DOC_TEST=OFF
   cmake --build "$sanitized" --target fas_core_tests -j"$jobs"

@@ -180,8 +180,9 @@ int vtkFlowTexture::RequestData(
 
     auto surface = vtkSmartPointer<vtkPolyData>::New();
     surface->ShallowCopy(input_surface);
-    add_vertex_array(surface, tm, "r", 1, [&](Vertex v) { return r[v]; });
-    add_vertex_array(surface, tm, "s", 1, [&](Vertex v) { return s[v]; });
+    // The maps by value: C++17 lets no lambda capture a structured binding (clang refuses it).
+    add_vertex_array(surface, tm, "r", 1, [r = r](Vertex v) { return r[v]; });
+    add_vertex_array(surface, tm, "s", 1, [s = s](Vertex v) { return s[v]; });
     add_vertex_array(surface, tm, "texture_coordinates", 2, [&](Vertex v) { return uv[v]; });
     surface->GetPointData()->SetTCoords(surface->GetPointData()->GetArray("texture_coordinates"));
     auto face_mask = make_array("texture_mask", 1, vtkIdType(tm.number_of_faces()));
