@@ -3,7 +3,7 @@
 //
 // integrate_streamline() beside VTK's vtkStreamTracer (RK45) in the same run.  The ABC
 // flow with C = 0, v = (A sin z, B sin x + A cos z, B cos x), A = √3, B = √2, is sampled on a
-// 64³ grid over [0, 2π]³; VTK traces through a vtkImageData holding the very same float samples,
+// n³ grid over [0, 2π]³ (n = 64 unless given); VTK traces through a vtkImageData holding the very same float samples,
 // ours through Regular_grid_flow_field_3.  Same seeds (pseudo-random in [0.5, 2π - 0.5]³, fixed
 // generator), same maximum length, forward.  Per tracer: median process CPU time and wall time
 // over the runs of tracing every seed, the number of points, and the drift of the first integral
@@ -13,7 +13,10 @@
 // the drift on the grid includes the interpolation's error, the deviation does not; the drift of
 // ours on the analytic flow is printed too.  Plain main().
 //
-//   bench_streamline [number_of_seeds (100)] [max_length (10)] [runs (7)]
+// The interpolation floor is the drift of the reference lines themselves: what no tracer of the
+// grid's samples goes below.
+//
+//   bench_streamline [number_of_seeds (100)] [max_length (10)] [runs (7)] [grid nodes per axis (64)]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
@@ -202,17 +205,17 @@ Figures run_ours(const Field& field, const std::vector<Point>& seeds, double max
 }
 
 #ifdef FAS_HAVE_VTK_FLOW_PATHS
-Figures run_vtk(const FAS::Regular_grid_flow_field_3<K>& grid, double h, const std::vector<Point>& seeds,
+Figures run_vtk(const FAS::Regular_grid_flow_field_3<K>& grid, int n, double h, const std::vector<Point>& seeds,
                 double max_length, int runs, double maximum_error, const std::vector<Line>* reference)
 {
   vtkNew<vtkImageData> image;
-  image->SetDimensions(64, 64, 64);
+  image->SetDimensions(n, n, n);
   image->SetOrigin(0., 0., 0.);
   image->SetSpacing(h, h, h);
   vtkNew<vtkFloatArray> velocity;
   velocity->SetName("velocity");
   velocity->SetNumberOfComponents(3);
-  velocity->SetNumberOfTuples(64 * 64 * 64);
+  velocity->SetNumberOfTuples(vtkIdType(n) * n * n);
   std::memcpy(velocity->GetPointer(0), grid.values().data(), grid.values().size() * sizeof(float));
   image->GetPointData()->SetVectors(velocity);
   vtkNew<vtkPoints> seed_points;
@@ -283,9 +286,10 @@ int main(int argc, char** argv)
   const std::size_t number_of_seeds = argc > 1 ? std::size_t(std::atoi(argv[1])) : 100;
   const double max_length = argc > 2 ? std::atof(argv[2]) : 10.;
   const int runs = argc > 3 ? std::max(1, std::atoi(argv[3])) : 7;
-  const double two_pi = 2. * std::acos(-1.), h = two_pi / 63.;
+  const int n = argc > 4 ? std::max(4, std::atoi(argv[4])) : 64;
+  const double two_pi = 2. * std::acos(-1.), h = two_pi / double(n - 1);
   const FAS::ABC_flow<K> abc(A, B, 0.);
-  const auto grid = FAS::sample_on_grid(abc, Point(0., 0., 0.), Vector(h, h, h), {64, 64, 64});
+  const auto grid = FAS::sample_on_grid(abc, Point(0., 0., 0.), Vector(h, h, h), {std::size_t(n), std::size_t(n), std::size_t(n)});
   std::mt19937 generator(1);
   std::uniform_real_distribution<double> coordinate(0.5, two_pi - 0.5);
   std::vector<Point> seeds;
@@ -293,13 +297,14 @@ int main(int argc, char** argv)
     const double x = coordinate(generator), y = coordinate(generator), z = coordinate(generator);
     seeds.emplace_back(x, y, z);
   }
-  std::printf("ABC (C = 0) on 64^3 over [0, 2pi]^3, %zu seeds, max length %g, median of %d runs\n",
+  std::printf("ABC (C = 0) on %d^3 over [0, 2pi]^3, %zu seeds, max length %g, median of %d runs\n", n,
               number_of_seeds, max_length, runs);
   // The reference lines on the grid: ours at tolerance 1e-12, sampled every 1e-3 of length.
   std::vector<int> unused(8, 0);
   const std::vector<Line> reference = our_lines(grid, seeds, max_length, 1e-12, unused, 1e-3);
   std::printf("%-34s %8s %8s %8s %10s %10s %10s %8s  %s\n", "tracer", "cpu_ms", "wall_ms", "points",
               "drift_med", "drift_max", "deviation", "mean_len", "reasons");
+  print("interpolation floor (reference)", summarize(reference, {0.}, {0.}, nullptr));
   print("FAS grid (rtol 1e-8, default)", run_ours(grid, seeds, max_length, runs, 1e-8, &reference));
   print("FAS grid (rtol 1e-6)", run_ours(grid, seeds, max_length, runs, 1e-6, &reference));
   // The same samples interpolated tricubically: its own reference lines (the field differs).
@@ -308,8 +313,8 @@ int main(int argc, char** argv)
   print("FAS tricubic grid (rtol 1e-8)", run_ours(cubic, seeds, max_length, runs, 1e-8, &cubic_reference));
   print("FAS tricubic grid (rtol 1e-6)", run_ours(cubic, seeds, max_length, runs, 1e-6, &cubic_reference));
 #ifdef FAS_HAVE_VTK_FLOW_PATHS
-  print("VTK RK45 grid (MaximumError 1e-6)", run_vtk(grid, h, seeds, max_length, runs, 1e-6, &reference));
-  print("VTK RK45 grid (MaximumError 1e-8)", run_vtk(grid, h, seeds, max_length, runs, 1e-8, &reference));
+  print("VTK RK45 grid (MaximumError 1e-6)", run_vtk(grid, n, h, seeds, max_length, runs, 1e-6, &reference));
+  print("VTK RK45 grid (MaximumError 1e-8)", run_vtk(grid, n, h, seeds, max_length, runs, 1e-8, &reference));
 #else
   std::printf("VTK's FiltersFlowPaths not found: no vtkStreamTracer row\n");
 #endif

@@ -21,6 +21,12 @@
 #include <limits>
 #include <vector>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#endif
+
 namespace CGAL {
 namespace Flow_aligned_surfaces {
 namespace internal {
@@ -236,6 +242,63 @@ private:
     return node;
   }
 
+  // A cell and the centre of its box, as the tree's partitions move them.
+  struct Centred_cell {
+    float centre[3];
+    Index cell;
+  };
+
+  // f(i) for i in [0, n): on all cores with TBB.
+  template <class F>
+  static void for_each_in_range(std::size_t n, const F& f)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&f](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t i = r.begin(); i != r.end(); ++i)
+        f(i);
+    });
+#else
+    for (std::size_t i = 0; i < n; ++i)
+      f(i);
+#endif
+  }
+
+  // Orders the cells of the subtree of `node` (an inner node) so that each of its inner nodes
+  // splits its cells at the median of the longest axis of their centres; the two subtrees of
+  // a node of many cells are ordered concurrently with TBB.
+  static void split_subtree(const Cell_point_location& s, std::size_t node, std::vector<Centred_cell>& cells)
+  {
+    if (node >= s.leaves - 1)
+      return;
+    const std::size_t first = leaf_size * leaf_rank(s, leftmost_leaf(s, node));
+    const std::size_t middle = leaf_size * leaf_rank(s, leftmost_leaf(s, 2 * node + 2));
+    const std::size_t last = (std::min)(leaf_size * (leaf_rank(s, rightmost_leaf(s, node)) + 1), cells.size());
+    float lo[3], hi[3];
+    for (int a = 0; a < 3; ++a)
+      lo[a] = hi[a] = cells[first].centre[a];
+    for (std::size_t k = first; k < last; ++k)
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = (std::min)(lo[a], cells[k].centre[a]);
+        hi[a] = (std::max)(hi[a], cells[k].centre[a]);
+      }
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+      if (hi[a] - lo[a] > hi[axis] - lo[axis])
+        axis = a;
+    std::nth_element(cells.begin() + std::ptrdiff_t(first), cells.begin() + std::ptrdiff_t(middle),
+                     cells.begin() + std::ptrdiff_t(last),
+                     [axis](const Centred_cell& u, const Centred_cell& v) { return u.centre[axis] < v.centre[axis]; });
+#ifdef CGAL_LINKED_WITH_TBB
+    if (last - first >= 16384) {
+      tbb::parallel_invoke([&] { split_subtree(s, 2 * node + 1, cells); },
+                           [&] { split_subtree(s, 2 * node + 2, cells); });
+      return;
+    }
+#endif
+    split_subtree(s, 2 * node + 1, cells);
+    split_subtree(s, 2 * node + 2, cells);
+  }
+
   static void build_hierarchy(Cell_point_location& s)
   {
     const std::size_t nc = s.cell_types.size();
@@ -256,54 +319,31 @@ private:
       enclose(s.double_points);
     // The cells' box centres, then the tree top down: each node's cells split at the median
     // of the longest axis of their centres, the left part holding as many leaves as the left
-    // subtree of the complete tree has (a kd-tree of boxes in the implicit layout).
-    std::vector<float> centre(3 * nc);
-    for (std::size_t c = 0; c < nc; ++c) {
+    // subtree of the complete tree has (a kd-tree of boxes in the implicit layout).  The centres
+    // move with their cells, so that the partitions read them in order; with TBB the centres,
+    // the subtrees and the leaves' boxes are computed on all cores (the same tree as on one).
+    std::vector<Centred_cell> cells(nc);
+    for_each_in_range(nc, [&](std::size_t c) {
       double b[6];
       cell_box(s, c, b);
       for (int a = 0; a < 3; ++a)
-        centre[3 * c + a] = static_cast<float>(0.5 * (b[a] + b[a + 3]));
-    }
-    s.order.resize(nc);
-    for (std::size_t c = 0; c < nc; ++c)
-      s.order[c] = static_cast<Index>(c);
+        cells[c].centre[a] = static_cast<float>(0.5 * (b[a] + b[a + 3]));
+      cells[c].cell = static_cast<Index>(c);
+    });
     s.leaves = (nc + leaf_size - 1) / leaf_size;
     const std::size_t nodes = 2 * s.leaves - 1;
     s.first_deepest = 0;
     while (2 * s.first_deepest + 1 < nodes)
       s.first_deepest = 2 * s.first_deepest + 1;
-    std::vector<std::size_t> todo(1, 0);
-    while (!todo.empty()) {
-      const std::size_t node = todo.back();
-      todo.pop_back();
-      if (node >= s.leaves - 1)
-        continue;
-      const std::size_t first = leaf_size * leaf_rank(s, leftmost_leaf(s, node));
-      const std::size_t middle = leaf_size * leaf_rank(s, leftmost_leaf(s, 2 * node + 2));
-      const std::size_t last = (std::min)(leaf_size * (leaf_rank(s, rightmost_leaf(s, node)) + 1), nc);
-      float lo[3], hi[3];
-      for (int a = 0; a < 3; ++a)
-        lo[a] = hi[a] = centre[3 * std::size_t(s.order[first]) + a];
-      for (std::size_t k = first; k < last; ++k)
-        for (int a = 0; a < 3; ++a) {
-          lo[a] = (std::min)(lo[a], centre[3 * std::size_t(s.order[k]) + a]);
-          hi[a] = (std::max)(hi[a], centre[3 * std::size_t(s.order[k]) + a]);
-        }
-      int axis = 0;
-      for (int a = 1; a < 3; ++a)
-        if (hi[a] - lo[a] > hi[axis] - lo[axis])
-          axis = a;
-      std::nth_element(s.order.begin() + std::ptrdiff_t(first), s.order.begin() + std::ptrdiff_t(middle),
-                       s.order.begin() + std::ptrdiff_t(last), [&](Index u, Index v) {
-                         return centre[3 * std::size_t(u) + axis] < centre[3 * std::size_t(v) + axis];
-                       });
-      todo.push_back(2 * node + 1);
-      todo.push_back(2 * node + 2);
-    }
-    centre = std::vector<float>();
+    split_subtree(s, 0, cells);
+    s.order.resize(nc);
+    for (std::size_t k = 0; k < nc; ++k)
+      s.order[k] = cells[k].cell;
+    cells = std::vector<Centred_cell>();
     s.node_box.assign(6 * nodes, 0.f);
     const float finf = std::numeric_limits<float>::infinity();
-    for (std::size_t node = s.leaves - 1; node < nodes; ++node) {
+    for_each_in_range(s.leaves, [&](std::size_t leaf) {
+      const std::size_t node = s.leaves - 1 + leaf;
       double u[6] = {inf, inf, inf, -inf, -inf, -inf};
       for (std::size_t k = leaf_begin(s, node); k < leaf_end(s, node); ++k) {
         double b[6];
@@ -317,7 +357,7 @@ private:
         s.node_box[6 * node + a] = std::nextafter(static_cast<float>(u[a]), -finf);
         s.node_box[6 * node + a + 3] = std::nextafter(static_cast<float>(u[a + 3]), finf);
       }
-    }
+    });
     for (std::size_t node = s.leaves - 1; node-- > 0;) {
       float* b = s.node_box.data() + 6 * node;
       const float* l = s.node_box.data() + 6 * (2 * node + 1); // the children, l and r
