@@ -294,21 +294,34 @@ inline bool decode_valid_binary_cells(const VTK_legacy_parser& parser, const std
   });
 }
 
-// The cells of an UNSTRUCTURED_GRID (either form of CELLS) in the form of
-// `Unstructured_flow_field_3`, with every type, point count and point index checked.
-inline Unstructured_grid_cells read_unstructured_cells(VTK_legacy_parser& parser)
+// The messages of the value-by-value decoding of an UNSTRUCTURED_GRID's cells: the checked
+// point index at a value, and a cell's name.
+struct Unstructured_cell_checks {
+  VTK_legacy_parser& parser;
+  const Unstructured_grid_cells& r;
+
+  Unstructured_grid_cells::Index point_index(std::size_t cell, double v, std::size_t offset, std::size_t line) const
+  {
+    const std::size_t np = parser.nodes;
+    if (!(v >= 0. && v < static_cast<double>(np) && v == std::floor(v)))
+      parser.fail_at(offset, line,
+                     "cell " + std::to_string(cell) + " has the point index " + number_string(v) +
+                         "; expected an index in [0, " + std::to_string(np) + ") (POINTS " +
+                         std::to_string(np) + ")");
+    return static_cast<Unstructured_grid_cells::Index>(v);
+  }
+  std::string cell_name(std::size_t cell) const
+  {
+    return "cell " + std::to_string(cell) + " (" + vtk_cell_type_name(r.cell_types[cell]) + ")";
+  }
+};
+
+// The cell types into r, and each cell's number of points; a type the field does not hold is
+// refused, naming the cell.
+inline std::vector<int> read_cell_types(VTK_legacy_parser& parser, Unstructured_grid_cells& r)
 {
-  typedef Unstructured_grid_cells::Index Index;
-  Unstructured_grid_cells r;
-  const std::size_t nc = parser.cells, np = parser.nodes;
-  const std::size_t indices = parser.cell_list ? parser.cell_list->tuples - nc : parser.connectivity->tuples;
-  const std::size_t most = static_cast<std::size_t>((std::numeric_limits<Index>::max)());
-  if (np > most || indices > most)
-    parser.fail_file("the grid has " + std::to_string(np) + " points and " + std::to_string(indices) +
-                     " point indices in its cells; Unstructured_flow_field_3 holds at most " + std::to_string(most) +
-                     " of each (32-bit indices)");
-  std::vector<int> points_per_cell(nc);
-  r.cell_types.resize(nc);
+  std::vector<int> points_per_cell(parser.cells);
+  r.cell_types.resize(parser.cells);
   parser.decode(*parser.cell_types, [&](std::size_t i, double t, std::size_t offset, std::size_t line) {
     int n = 0;
     const char* name = vtk_cell_type_name(t, &n);
@@ -320,62 +333,53 @@ inline Unstructured_grid_cells read_unstructured_cells(VTK_legacy_parser& parser
     r.cell_types[i] = static_cast<unsigned char>(t);
     points_per_cell[i] = n;
   });
-  auto point_index = [&](std::size_t cell, double v, std::size_t offset, std::size_t line) {
-    if (!(v >= 0. && v < static_cast<double>(np) && v == std::floor(v)))
-      parser.fail_at(offset, line,
-                     "cell " + std::to_string(cell) + " has the point index " + number_string(v) +
-                         "; expected an index in [0, " + std::to_string(np) + ") (POINTS " +
-                         std::to_string(np) + ")");
-    return static_cast<Index>(v);
-  };
-  auto cell_name = [&](std::size_t cell) {
-    return "cell " + std::to_string(cell) + " (" + vtk_cell_type_name(r.cell_types[cell]) + ")";
-  };
-  if (parser.binary) {
-    if (decode_valid_binary_cells(parser, points_per_cell, r)) {
-      voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
-      return r;
+  return points_per_cell;
+}
+
+// Legacy form of CELLS, value by value: per cell, its number of points, then their indices.
+inline void decode_cell_list(VTK_legacy_parser& parser, const std::vector<int>& points_per_cell,
+                             Unstructured_grid_cells& r)
+{
+  const Unstructured_cell_checks check{parser, r};
+  const std::size_t nc = parser.cells;
+  const VTK_legacy_array& list = *parser.cell_list;
+  const std::string cells_line = "CELLS " + std::to_string(nc) + " " + std::to_string(list.tuples);
+  r.offsets.reserve(nc + 1);
+  r.offsets.push_back(0);
+  r.connectivity.reserve(list.tuples - nc); // nc <= list.tuples, checked by pass 1
+  std::size_t cell = 0, left = 0;           // the current cell and its points still to read
+  parser.decode(list, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
+    if (left == 0) {
+      if (cell == nc)
+        parser.fail_at(offset, line,
+                       cells_line + ": the " + std::to_string(nc) + " cells end after " + std::to_string(i) +
+                           " values, not " + std::to_string(list.tuples));
+      if (v != points_per_cell[cell])
+        parser.fail_at(offset, line,
+                       check.cell_name(cell) + " lists " + number_string(v) + " points; expected " +
+                           std::to_string(points_per_cell[cell]));
+      left = static_cast<std::size_t>(points_per_cell[cell]);
+      return;
     }
-    r.offsets.clear();
-    r.connectivity.clear();
-  }
+    r.connectivity.push_back(check.point_index(cell, v, offset, line));
+    if (--left == 0) {
+      r.offsets.push_back(static_cast<Unstructured_grid_cells::Index>(r.connectivity.size()));
+      ++cell;
+    }
+  });
+  if (cell != nc)
+    parser.fail_at(list.header, list.header_line,
+                   cells_line + ": the values end inside cell " + std::to_string(cell) + " of " +
+                       std::to_string(nc) + " (wrong count)");
+}
 
-  if (parser.cell_list) {
-    // Legacy form: per cell, its number of points, then their indices.
-    const VTK_legacy_array& list = *parser.cell_list;
-    const std::string cells_line = "CELLS " + std::to_string(nc) + " " + std::to_string(list.tuples);
-    r.offsets.reserve(nc + 1);
-    r.offsets.push_back(0);
-    r.connectivity.reserve(list.tuples - nc); // nc <= list.tuples, checked by pass 1
-    std::size_t cell = 0, left = 0;           // the current cell and its points still to read
-    parser.decode(list, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
-      if (left == 0) {
-        if (cell == nc)
-          parser.fail_at(offset, line,
-                         cells_line + ": the " + std::to_string(nc) + " cells end after " +
-                             std::to_string(i) + " values, not " + std::to_string(list.tuples));
-        if (v != points_per_cell[cell])
-          parser.fail_at(offset, line,
-                         cell_name(cell) + " lists " + number_string(v) + " points; expected " +
-                             std::to_string(points_per_cell[cell]));
-        left = static_cast<std::size_t>(points_per_cell[cell]);
-        return;
-      }
-      r.connectivity.push_back(point_index(cell, v, offset, line));
-      if (--left == 0) {
-        r.offsets.push_back(static_cast<Index>(r.connectivity.size()));
-        ++cell;
-      }
-    });
-    if (cell != nc)
-      parser.fail_at(list.header, list.header_line,
-                     cells_line + ": the values end inside cell " + std::to_string(cell) + " of " +
-                         std::to_string(nc) + " (wrong count)");
-    voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
-    return r;
-  }
-
-  // File version 5.1: OFFSETS (cells + 1 of them) and CONNECTIVITY.
+// File version 5.1, value by value: OFFSETS (cells + 1 of them) and CONNECTIVITY.
+inline void decode_offsets_and_connectivity(VTK_legacy_parser& parser, const std::vector<int>& points_per_cell,
+                                            Unstructured_grid_cells& r)
+{
+  typedef Unstructured_grid_cells::Index Index;
+  const Unstructured_cell_checks check{parser, r};
+  const std::size_t nc = parser.cells;
   const VTK_legacy_array& offsets = *parser.offsets;
   const VTK_legacy_array& connectivity = *parser.connectivity;
   r.offsets.resize(nc + 1);
@@ -386,7 +390,7 @@ inline Unstructured_grid_cells read_unstructured_cells(VTK_legacy_parser& parser
       const double previous = static_cast<double>(r.offsets[i - 1]);
       if (v - previous != points_per_cell[i - 1])
         parser.fail_at(offset, line,
-                       cell_name(i - 1) + " has OFFSETS " + number_string(previous) + " and " +
+                       check.cell_name(i - 1) + " has OFFSETS " + number_string(previous) + " and " +
                            number_string(v) + ", so " + number_string(v - previous) + " points; expected " +
                            std::to_string(points_per_cell[i - 1]));
     }
@@ -399,10 +403,34 @@ inline Unstructured_grid_cells read_unstructured_cells(VTK_legacy_parser& parser
   r.connectivity.resize(connectivity.tuples);
   parser.decode(connectivity, [&](std::size_t i, double v, std::size_t offset, std::size_t line) {
     const std::size_t cell = static_cast<std::size_t>(
-        std::upper_bound(r.offsets.begin(), r.offsets.end(), static_cast<Index>(i)) -
-        r.offsets.begin() - 1);
-    r.connectivity[i] = point_index(cell, v, offset, line);
+        std::upper_bound(r.offsets.begin(), r.offsets.end(), static_cast<Index>(i)) - r.offsets.begin() - 1);
+    r.connectivity[i] = check.point_index(cell, v, offset, line);
   });
+}
+
+// The cells of an UNSTRUCTURED_GRID (either form of CELLS) in the form of
+// `Unstructured_flow_field_3`, with every type, point count and point index checked: binary
+// files in blocks, and value by value where those checks refuse a value (or in ASCII files),
+// to say where and why.
+inline Unstructured_grid_cells read_unstructured_cells(VTK_legacy_parser& parser)
+{
+  const std::size_t nc = parser.cells, np = parser.nodes;
+  const std::size_t indices = parser.cell_list ? parser.cell_list->tuples - nc : parser.connectivity->tuples;
+  const std::size_t most = static_cast<std::size_t>((std::numeric_limits<Unstructured_grid_cells::Index>::max)());
+  if (np > most || indices > most)
+    parser.fail_file("the grid has " + std::to_string(np) + " points and " + std::to_string(indices) +
+                     " point indices in its cells; Unstructured_flow_field_3 holds at most " + std::to_string(most) +
+                     " of each (32-bit indices)");
+  Unstructured_grid_cells r;
+  const std::vector<int> points_per_cell = read_cell_types(parser, r);
+  if (!parser.binary || !decode_valid_binary_cells(parser, points_per_cell, r)) {
+    r.offsets.clear();
+    r.connectivity.clear();
+    if (parser.cell_list)
+      decode_cell_list(parser, points_per_cell, r);
+    else
+      decode_offsets_and_connectivity(parser, points_per_cell, r);
+  }
   voxels_as_hexahedra(r.cell_types, r.offsets, r.connectivity);
   return r;
 }
