@@ -203,11 +203,11 @@ const char* cholmod_ordering_name(int ordering)
 }
 
 // Ordering < 0: CHOLMOD's default strategy (nmethods = 0: AMD, and METIS/NESDIS as well when
-// AMD's fill is high); otherwise that ordering only.  ToSimplicial: after a supernodal
-// factorization, convert the factor to a simplicial LL^T (cholmod_change_factor, O(nnz(L))) so
-// that the solves use CHOLMOD's simplicial triangular solves, which handle the three right-hand
-// sides in one sweep instead of many small BLAS calls per supernode.
-template <class CholmodSolver, int Ordering, bool ToSimplicial = false>
+// AMD's fill is high); otherwise that ordering only.  What the factorization chose is read from
+// CHOLMOD's common structure (Eigen's public cholmod()), never from Eigen's members: the ordering
+// of the method selected, and supernodal when CHOLMOD's rule chose it (flops per nonzero of the
+// factor at least its supernodal_switch, unless the solver forces one kind).
+template <class CholmodSolver, int Ordering>
 class Instrumented_cholmod : public Timed_solve<CholmodSolver> {
 public:
   Instrumented_cholmod()
@@ -225,19 +225,15 @@ public:
 
   Instrumented_cholmod& compute(const Sparse_matrix& matrix)
   {
-    bool supernodal = false;
-    timed_factorization(static_cast<Timed_solve<CholmodSolver>&>(*this), matrix, [&] {
-      supernodal = this->m_cholmodFactor && this->m_cholmodFactor->is_super;
-      if (ToSimplicial && this->info() == Eigen::Success && supernodal &&
-          !cholmod_change_factor(CHOLMOD_REAL, true, false, true, true, this->m_cholmodFactor,
-                                 &this->cholmod()))
-        throw std::runtime_error("cholmod_change_factor failed");
-    });
+    timed_factorization(static_cast<Timed_solve<CholmodSolver>&>(*this), matrix, [] {});
     const cholmod_common& common = this->cholmod();
+    const bool supernodal = common.supernodal == CHOLMOD_SUPERNODAL ||
+                            (common.supernodal != CHOLMOD_SIMPLICIAL && common.lnz > 0 &&
+                             common.fl / common.lnz >= common.supernodal_switch);
     last_factor_stats.nnz_L = common.lnz;
     last_factor_stats.flops = common.fl;
     last_factor_stats.ordering =
-        this->m_cholmodFactor ? cholmod_ordering_name(this->m_cholmodFactor->ordering) : "none";
+        common.selected >= 0 ? cholmod_ordering_name(common.method[common.selected].ordering) : "none";
     last_factor_stats.supernodal = supernodal;
     // The simplicial solve reads a value and a row index per nonzero, and the column pointers.
     last_factor_stats.bytes_per_solve =
@@ -258,8 +254,10 @@ public:
   Instrumented_eigen& compute(const Sparse_matrix& matrix)
   {
     timed_factorization(static_cast<Timed_solve<EigenSimplicialSolver>&>(*this), matrix, [] {});
-    // Strictly lower part plus the diagonal, as CHOLMOD counts it.
-    last_factor_stats.nnz_L = double(this->m_matrix.nonZeros()) + double(this->m_matrix.rows());
+    // Strictly lower part plus the diagonal, as CHOLMOD counts it (matrixL(): Eigen's public view
+    // of the factor, unit diagonal not stored).
+    const auto& L = this->matrixL().nestedExpression();
+    last_factor_stats.nnz_L = double(L.nonZeros()) + double(L.rows());
     last_factor_stats.flops = -1;
     last_factor_stats.ordering = "AMD (Eigen)";
     last_factor_stats.supernodal = false;
