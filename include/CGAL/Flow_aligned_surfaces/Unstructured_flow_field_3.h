@@ -54,7 +54,8 @@ namespace Flow_aligned_surfaces {
 /// thread on the same field (the hint), for the coherent queries that integration and
 /// deformation make, and else with a bounding volume hierarchy: a complete binary tree of
 /// float boxes (rounded outwards) whose leaves hold 8 cells each, built top down by splitting
-/// the cells at the median of their bounding boxes' centres along the longest axis.  The walk
+/// the cells at the median of their bounding boxes' centres along the longest axis (by the
+/// constructor, with TBB on the threads of the caller's arena: the same tree).  The walk
 /// inverts the hint cell's map at `p` (Newton's method from the previous parametric position);
 /// if `p` is outside, it crosses the face through which the parametric point leaves the
 /// reference cell the most into the cell sharing that face, and so on, for at most 8 cells.
