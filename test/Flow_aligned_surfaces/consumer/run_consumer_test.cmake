@@ -6,6 +6,7 @@
 #   (4) run it (it returns nonzero when the alignment misses its flux)
 # Run as: cmake -DPACKAGE_SOURCE_DIR=... -DCONSUMER_SOURCE_DIR=... -DWORK_DIR=... -P run_consumer_test.cmake
 # Optional: -DCONSUMER_GENERATOR=..., -DCONSUMER_CXX_COMPILER=..., -DCONSUMER_BUILD_TYPE=...,
+#           -DCONSUMER_COMPILER_LAUNCHER=... (ccache: the consumer's own compilations only),
 #           -DEXPECT_CHOLMOD=ON|OFF (checks that the CHOLMOD usage requirement reached the consumer),
 #           -DEXPECT_ZLIB=ON|OFF (likewise for zlib: the consumer then reads a gzip NRRD file),
 #           -DWITH_PARAVIEW_VTK=ON (also the component VTK after ParaView: consumer_VTK must run with
@@ -54,6 +55,9 @@ function(configure_args variable source binary)
   endif()
   if(CONSUMER_CXX_COMPILER)
     list(APPEND args "-DCMAKE_CXX_COMPILER=${CONSUMER_CXX_COMPILER}")
+  endif()
+  if(CONSUMER_COMPILER_LAUNCHER)
+    list(APPEND args "-DCMAKE_CXX_COMPILER_LAUNCHER=${CONSUMER_COMPILER_LAUNCHER}")
   endif()
   set(${variable} ${args} PARENT_SCOPE)
 endfunction()
