@@ -40,10 +40,12 @@ function(fas_add_test_file_entries)
     list(APPEND all_filters "${filter}")
     add_test(NAME ${stem} COMMAND ${ARG_EXECUTABLE} "--gtest_filter=${filter}" --gtest_brief=1
              WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-    set_tests_properties(${stem} PROPERTIES TIMEOUT 1500 LABELS "${ARG_LABELS}")
-    if(ARG_ENVIRONMENT)
-      set_tests_properties(${stem} PROPERTIES ENVIRONMENT "${ARG_ENVIRONMENT}")
-    endif()
+    # Scratch files (GoogleTest's TempDir()) go to a folder of the entry's own in the build
+    # folder: entries running side by side cannot collide, and nothing is left in /tmp.
+    set(scratch "${CMAKE_CURRENT_BINARY_DIR}/scratch/${stem}/")
+    file(MAKE_DIRECTORY "${scratch}")
+    set(environment "TEST_TMPDIR=${scratch}" ${ARG_ENVIRONMENT})
+    set_tests_properties(${stem} PROPERTIES TIMEOUT 1500 LABELS "${ARG_LABELS}" ENVIRONMENT "${environment}")
   endforeach()
   string(JOIN ":" all_filters ${all_filters})
   add_test(NAME ${ARG_EXECUTABLE}_every_test_case_has_an_entry

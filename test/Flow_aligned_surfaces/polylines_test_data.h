@@ -5,6 +5,8 @@
 
 #include "test_kernel.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,7 +23,7 @@ inline const std::vector<std::vector<Point_3>>& test_polylines()
 
 inline std::filesystem::path polylines_scratch(const std::string& name)
 {
-  const auto dir = std::filesystem::temp_directory_path() / "fas_test_write_VTP_polylines";
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "fas_test_write_VTP_polylines";
   std::filesystem::create_directories(dir);
   return dir / name;
 }

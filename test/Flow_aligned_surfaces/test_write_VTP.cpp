@@ -50,7 +50,7 @@ std::vector<double> data_array(const std::string& xml, const std::string& tag)
 
 std::filesystem::path scratch(const std::string& name)
 {
-  const auto dir = std::filesystem::temp_directory_path() / "fas_test_write_VTP";
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "fas_test_write_VTP";
   std::filesystem::create_directories(dir);
   return dir / name;
 }
