@@ -12,8 +12,9 @@ with the time as a second argument.  A lambda is a model.
 
 A steady field is an unsteady one that ignores the time; conversely, an unsteady field
 frozen at a time \f$ t_0 \f$, `[&](const Point_3& p) { return field(p, t0); }`, is a model
-of `FlowField_3`, which is how the deformation of this package looks at one instant of an
-unsteady flow.
+of `FlowField_3`; `Time_slice_flow_field_3` is one whose time can be changed, which is how the
+deformation of this package looks at one instant of an unsteady flow and follows it through
+time.
 
 \cgalHasModelsBegin
 \cgalHasModels{Any callable `std::optional<Vector_3>(const Point_3&, double)`, such as a lambda}
