@@ -29,6 +29,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -50,6 +51,160 @@ std::vector<double> read_scalars(const TriangleMesh& tm, ScalarMap scalar_map, V
                                   " is not a number");
   return f;
 }
+
+// Edge numbers: the `edge_index_map` given, or a dense numbering of our own (a Polyhedron_3
+// without ids, for one, has no edge index of its own).
+template <class TriangleMesh, class NamedParameters>
+auto edge_index_map_or_numbering(const TriangleMesh& tm, const NamedParameters& np)
+{
+  if constexpr (parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_index_t>::value) {
+    auto own = get(CGAL::dynamic_edge_property_t<std::size_t>(), tm);
+    std::size_t i = 0;
+    for (auto e : edges(tm))
+      put(own, e, i++);
+    return own;
+  }
+  else
+    return parameters::get_parameter(np, CGAL::internal_np::edge_index);
+}
+
+/// The iso-values as doubles; throws std::invalid_argument naming `caller` and the first one
+/// that is not finite.
+template <class ValueRange>
+std::vector<double> read_iso_values(const ValueRange& values, const std::string& caller)
+{
+  std::vector<double> levels;
+  for (const auto& value : values) {
+    levels.push_back(CGAL::to_double(value));
+    if (!std::isfinite(levels.back()))
+      throw std::invalid_argument(caller + ": iso-value " + std::to_string(levels.size() - 1) +
+                                  " is not finite");
+  }
+  return levels;
+}
+
+// The iso-contours of the vertex values `f` on `tm`, one iso-value at a time: the crossing point
+// of every edge whose ends lie on either side of the value, each crossed edge linked to the next
+// and the previous one along the contour (the two crossed edges of a face), and the polylines
+// those links chain into.
+template <class TriangleMesh, class VertexPointMap, class GeomTraits, class VertexIndexMap,
+          class EdgeIndexMap>
+class Iso_contour_tracer {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  using Point_3 = typename GeomTraits::Point_3;
+  static constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+
+public:
+  Iso_contour_tracer(const TriangleMesh& tm, const std::vector<double>& f, VertexPointMap vpm,
+                     const GeomTraits& gt, VertexIndexMap vim, EdgeIndexMap eim)
+      : m_tm(tm), m_f(f), m_vpm(vpm), m_construct_point(gt.construct_point_3_object()), m_vim(vim),
+        m_eim(eim), m_next(num_edges(tm)), m_previous(num_edges(tm)), m_crossing(num_edges(tm)),
+        m_visited(num_edges(tm))
+  {
+  }
+
+  // Writes the polylines of the iso-value c to `out`.
+  template <class OutputIterator>
+  OutputIterator trace(double c, OutputIterator out)
+  {
+    link_crossings(c);
+    for (std::size_t e : m_crossed)
+      m_visited[e] = false;
+    // Open contours start on the border, at a crossing that no face enters.
+    for (std::size_t e : m_crossed)
+      if (m_previous[e] == none)
+        write_polyline(e, out);
+    for (std::size_t e : m_crossed)
+      if (!m_visited[e])
+        write_polyline(e, out);
+    return out;
+  }
+
+private:
+  // In each face, the link from the crossing of its above-to-below edge to the crossing of its
+  // below-to-above edge.
+  void link_crossings(double c)
+  {
+    std::fill(m_next.begin(), m_next.end(), none);
+    std::fill(m_previous.begin(), m_previous.end(), none);
+    m_crossed.clear();
+    for (auto face_h : faces(m_tm)) {
+      std::size_t from = none, to = none;
+      for (auto h : halfedges_around_face(halfedge(face_h, m_tm), m_tm)) {
+        const bool source_above = above(source(h, m_tm), c), target_above = above(target(h, m_tm), c);
+        if (source_above == target_above)
+          continue;
+        const std::size_t e = get(m_eim, edge(h, m_tm));
+        (source_above ? from : to) = e;
+        if (m_next[e] == none && m_previous[e] == none) { // first time: compute the crossing point
+          m_crossed.push_back(e);
+          m_crossing[e] = crossing_point(h, source_above, c);
+        }
+      }
+      if (from == none)
+        continue;
+      m_next[from] = to;
+      m_previous[to] = from;
+    }
+  }
+
+  bool above(vertex_descriptor v, double c) const { return m_f[get(m_vim, v)] >= c; }
+
+  // Where the contour at c crosses the edge of h, whose source is above c or else its target.
+  Point_3 crossing_point(halfedge_descriptor h, bool source_above, double c) const
+  {
+    const vertex_descriptor low = source_above ? target(h, m_tm) : source(h, m_tm);
+    const vertex_descriptor high = source_above ? source(h, m_tm) : target(h, m_tm);
+    const double f_low = m_f[get(m_vim, low)], f_high = m_f[get(m_vim, high)];
+    // An infinite end puts the crossing at the other end.
+    const double t = std::isinf(f_high)  ? 0
+                     : std::isinf(f_low) ? 1
+                                         : (std::min)(1.0, (c - f_low) / (f_high - f_low));
+    const std::array<double, 3> p = coordinates(low), q = coordinates(high);
+    return m_construct_point(p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), p[2] + t * (q[2] - p[2]));
+  }
+
+  std::array<double, 3> coordinates(vertex_descriptor v) const
+  {
+    const auto& p = get(m_vpm, v);
+    return std::array<double, 3>{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  }
+
+  // The polyline that follows the links from the crossing of edge `start`, without repeated points,
+  // closed by its first point again if it comes back to `start`; none if it shrinks to one point.
+  template <class OutputIterator>
+  void write_polyline(std::size_t start, OutputIterator& out)
+  {
+    std::vector<Point_3> polyline;
+    std::size_t e = start;
+    do {
+      m_visited[e] = true;
+      if (polyline.empty() || !(polyline.back() == m_crossing[e]))
+        polyline.push_back(m_crossing[e]);
+      e = m_next[e];
+    } while (e != none && e != start);
+    const bool closed = e == start;
+    if (closed && polyline.size() > 1 && polyline.back() == polyline.front())
+      polyline.pop_back();
+    if (polyline.size() < 2)
+      return;
+    if (closed)
+      polyline.push_back(polyline.front());
+    *out++ = std::move(polyline);
+  }
+
+  const TriangleMesh& m_tm;
+  const std::vector<double>& m_f;
+  VertexPointMap m_vpm;
+  decltype(std::declval<const GeomTraits&>().construct_point_3_object()) m_construct_point;
+  VertexIndexMap m_vim;
+  EdgeIndexMap m_eim;
+  std::vector<std::size_t> m_next, m_previous; // along the contour, per edge
+  std::vector<Point_3> m_crossing;             // per edge
+  std::vector<bool> m_visited;                 // per edge
+  std::vector<std::size_t> m_crossed;          // the edges crossed, in the order they are found
+};
 
 } // namespace internal
 
@@ -105,108 +260,15 @@ OutputIterator extract_iso_contours(const TriangleMesh& tm, ScalarMap scalar_map
                                     OutputIterator out,
                                     const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using Geom_traits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
-  using Point_3 = typename Geom_traits::Point_3;
   const std::string caller = "extract_iso_contours";
   const auto [vpm, gt] = internal::checked_mesh_input(tm, np, caller + ": tm");
   const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  // Edge numbers: the `edge_index_map` given, or a dense numbering of our own (a Polyhedron_3
-  // without ids, for one, has no edge index of its own).
-  const auto eim = [&] {
-    if constexpr (parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_index_t>::value) {
-      auto own = get(CGAL::dynamic_edge_property_t<std::size_t>(), tm);
-      std::size_t i = 0;
-      for (auto e : edges(tm))
-        put(own, e, i++);
-      return own;
-    }
-    else
-      return parameters::get_parameter(np, CGAL::internal_np::edge_index);
-  }();
+  const auto eim = internal::edge_index_map_or_numbering(tm, np);
   const std::vector<double> f = internal::read_scalars(tm, scalar_map, vim, caller);
-  std::vector<double> levels;
-  for (const auto& value : values) {
-    levels.push_back(CGAL::to_double(value));
-    if (!std::isfinite(levels.back()))
-      throw std::invalid_argument(caller + ": iso-value " + std::to_string(levels.size() - 1) +
-                                  " is not finite");
-  }
-  const auto construct_point = gt.construct_point_3_object();
-  // vpm by an init-capture: C++17 lambdas cannot capture a structured binding.
-  const auto coordinates = [vpm = vpm](auto v) {
-    const auto& p = get(vpm, v);
-    return std::array<double, 3>{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-  };
-
-  constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
-  const std::size_t number_of_edges = num_edges(tm);
-  std::vector<std::size_t> next(number_of_edges), previous(number_of_edges);
-  std::vector<Point_3> crossing(number_of_edges);
-  std::vector<bool> visited(number_of_edges);
-  std::vector<std::size_t> crossed;
-  for (const double c : levels) {
-    std::fill(next.begin(), next.end(), none);
-    std::fill(previous.begin(), previous.end(), none);
-    crossed.clear();
-    const auto above = [&](auto v) { return f[get(vim, v)] >= c; };
-    for (auto face_h : faces(tm)) {
-      std::size_t from = none, to = none;
-      for (auto h : halfedges_around_face(halfedge(face_h, tm), tm)) {
-        const bool source_above = above(source(h, tm)), target_above = above(target(h, tm));
-        if (source_above == target_above)
-          continue;
-        const std::size_t e = get(eim, edge(h, tm));
-        (source_above ? from : to) = e;
-        if (next[e] == none && previous[e] == none) { // first time: compute the crossing point
-          crossed.push_back(e);
-          const auto low = source_above ? target(h, tm) : source(h, tm);
-          const auto high = source_above ? source(h, tm) : target(h, tm);
-          const double f_low = f[get(vim, low)], f_high = f[get(vim, high)];
-          // An infinite end puts the crossing at the other end.
-          const double t = std::isinf(f_high)  ? 0
-                           : std::isinf(f_low) ? 1
-                                               : (std::min)(1.0, (c - f_low) / (f_high - f_low));
-          const std::array<double, 3> p = coordinates(low), q = coordinates(high);
-          crossing[e] =
-              construct_point(p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]), p[2] + t * (q[2] - p[2]));
-        }
-      }
-      if (from == none)
-        continue;
-      next[from] = to;
-      previous[to] = from;
-    }
-
-    const auto emit = [&](std::size_t start) {
-      std::vector<Point_3> polyline;
-      std::size_t e = start;
-      do {
-        visited[e] = true;
-        if (polyline.empty() || !(polyline.back() == crossing[e]))
-          polyline.push_back(crossing[e]);
-        e = next[e];
-      } while (e != none && e != start);
-      const bool closed = e == start;
-      if (closed && polyline.size() > 1 && polyline.back() == polyline.front())
-        polyline.pop_back();
-      if (polyline.size() < 2)
-        return;
-      if (closed)
-        polyline.push_back(polyline.front());
-      *out++ = std::move(polyline);
-    };
-    for (std::size_t e : crossed)
-      visited[e] = false;
-    // Open contours start on the border, at a crossing that no face enters.
-    for (std::size_t e : crossed)
-      if (previous[e] == none)
-        emit(e);
-    for (std::size_t e : crossed)
-      if (!visited[e])
-        emit(e);
-  }
+  const std::vector<double> levels = internal::read_iso_values(values, caller);
+  internal::Iso_contour_tracer tracer(tm, f, vpm, gt, vim, eim);
+  for (const double c : levels)
+    out = tracer.trace(c, out);
   return out;
 }
 

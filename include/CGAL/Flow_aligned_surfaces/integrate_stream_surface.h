@@ -754,6 +754,89 @@ struct Ignored_vertex_double_map {
   }
 };
 
+// The stream lines' own options (tolerances, max_time / max_length, steps, direction), with
+// tolerances tighter than a stream line's defaults: the vertices then follow the sampled field as
+// closely as its interpolation allows (1e-8 drifted up to 1.6 × that floor on a trilinear grid).
+template <class NamedParameters>
+Streamline_options read_stream_surface_line_options(const NamedParameters& np)
+{
+  Streamline_options lines = read_streamline_options(np, "integrate_stream_surface");
+  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::relative_tolerance_t>::value)
+    lines.tolerances.relative = 1e-10;
+  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::absolute_tolerance_t>::value)
+    lines.tolerances.absolute = 1e-12;
+  return lines;
+}
+
+// h over the median speed at the seed points: time lines about h apart (h where the field is
+// zero or undefined at every sample).
+template <class Field>
+double median_speed_time_line_step(const Field& f, const Seed_curve& seed, double spacing, double t0)
+{
+  std::vector<double> speeds;
+  const std::size_t n = std::min<std::size_t>(64, seed.number_of_segments());
+  for (std::size_t i = 0; i <= n; ++i)
+    if (const std::optional<Eigen::Vector3d> v = f(seed(seed.length() * double(i) / double(n)), t0))
+      if (v->norm() > 0)
+        speeds.push_back(v->norm());
+  std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 2), speeds.end());
+  return speeds.empty() ? spacing : spacing / speeds[speeds.size() / 2];
+}
+
+// The front's settings from the named parameters, each checked, for the front spacing h and the
+// stream lines' options `lines`.
+template <class Settings, class Point_3, class FlowField, class NamedParameters>
+Settings read_stream_surface_settings(const FlowField& field, const Seed_curve& seed, bool arc_length,
+                                      double spacing, const Streamline_options& lines,
+                                      const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const double max_parameter = arc_length ? lines.max_length : lines.max_time;
+  const double t0 = choose_parameter(get_parameter(np, internal_np::start_time_t()), 0.);
+  if (!std::isfinite(t0))
+    checked_positive(t0, "start_time");
+  const double tear_angle = choose_parameter(get_parameter(np, internal_np::tear_angle_t()), CGAL_PI / 4);
+  checked_positive(tear_angle, "tear_angle");
+  const std::size_t max_vertices = std::size_t(
+      checked_positive(double(choose_parameter(get_parameter(np, internal_np::max_number_of_vertices_t()),
+                                               std::size_t(1000000))),
+                       "max_number_of_vertices"));
+  // Without a limit in τ at most 100 time lines by default; with one, only the limit (and
+  // max_number_of_vertices) unless max_number_of_time_lines is given.
+  const std::size_t max_time_lines = choose_parameter(
+      get_parameter(np, internal_np::max_number_of_time_lines_t()),
+      std::isfinite(max_parameter) ? std::numeric_limits<std::size_t>::max() : std::size_t(100));
+  if (max_time_lines == 0)
+    throw std::invalid_argument(
+        "integrate_stream_surface: max_number_of_time_lines is 0; expected at least 1");
+
+  constexpr bool default_step =
+      parameters::is_default_parameter<NamedParameters, internal_np::time_line_step_t>::value;
+  double step;
+  if constexpr (!default_step)
+    step = checked_positive(get_parameter(np, internal_np::time_line_step_t()), "time_line_step");
+  else if (arc_length)
+    step = spacing;
+  else
+    step = median_speed_time_line_step(Front_field<FlowField, Point_3>{&field, false}, seed, spacing, t0);
+
+  Settings settings{spacing,
+                    step,
+                    max_parameter,
+                    t0,
+                    std::cos(std::min(tear_angle, CGAL_PI)),
+                    1e-9 * seed.length(),
+                    max_time_lines,
+                    max_vertices,
+                    lines.max_number_of_steps,
+                    lines.direction == Integration_direction::BACKWARD ? -1 : 1,
+                    lines.tolerances};
+  settings.skip_thin_strips = default_step;
+  settings.callback = progress_callback(np);
+  return settings;
+}
+
 } // namespace internal
 
 /*!
@@ -941,54 +1024,7 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
       internal::checked_positive(choose_parameter(get_parameter(np, internal_np::front_spacing_t()),
                                                   seed.length() / double(seed.number_of_segments())),
                                  "front_spacing");
-  // The stream lines' own options: tolerances, max_time / max_length, steps, direction.
-  internal::Streamline_options lines = internal::read_streamline_options(np, "integrate_stream_surface");
-  // Tighter than a stream line's defaults: the vertices then follow the sampled field as closely
-  // as its interpolation allows (1e-8 drifted up to 1.6 × that floor on a trilinear grid).
-  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::relative_tolerance_t>::value)
-    lines.tolerances.relative = 1e-10;
-  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::absolute_tolerance_t>::value)
-    lines.tolerances.absolute = 1e-12;
-  const double max_parameter = arc_length ? lines.max_length : lines.max_time;
-  const double t0 = choose_parameter(get_parameter(np, internal_np::start_time_t()), 0.);
-  if (!std::isfinite(t0))
-    internal::checked_positive(t0, "start_time");
-  const double tear_angle = choose_parameter(get_parameter(np, internal_np::tear_angle_t()), CGAL_PI / 4);
-  internal::checked_positive(tear_angle, "tear_angle");
-  const std::size_t max_vertices = std::size_t(internal::checked_positive(
-      double(
-          choose_parameter(get_parameter(np, internal_np::max_number_of_vertices_t()), std::size_t(1000000))),
-      "max_number_of_vertices"));
-  // Without a limit in τ at most 100 time lines by default; with one, only the limit (and
-  // max_number_of_vertices) unless max_number_of_time_lines is given.
-  const std::size_t max_time_lines = choose_parameter(
-      get_parameter(np, internal_np::max_number_of_time_lines_t()),
-      std::isfinite(max_parameter) ? std::numeric_limits<std::size_t>::max() : std::size_t(100));
-  if (max_time_lines == 0)
-    throw std::invalid_argument("integrate_stream_surface: max_number_of_time_lines is 0; expected at least 1");
-
-  double step;
-  if constexpr (!parameters::is_default_parameter<NamedParameters, internal_np::time_line_step_t>::value)
-    step = internal::checked_positive(get_parameter(np, internal_np::time_line_step_t()), "time_line_step");
-  else if (arc_length)
-    step = spacing;
-  else {
-    // h over the median speed at the seed points: time lines about h apart.
-    const Field f{&field, false};
-    std::vector<double> speeds;
-    const std::size_t n = std::min<std::size_t>(64, seed.number_of_segments());
-    for (std::size_t i = 0; i <= n; ++i)
-      if (const std::optional<Eigen::Vector3d> v = f(seed(seed.length() * double(i) / double(n)), t0))
-        if (v->norm() > 0)
-          speeds.push_back(v->norm());
-    std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 2), speeds.end());
-    step = speeds.empty() ? spacing : spacing / speeds[speeds.size() / 2];
-  }
-
-  Stream_surface_report report;
-  report.seed_length = seed.length();
-  report.front_spacing = spacing;
-  report.time_line_step = step;
+  const internal::Streamline_options lines = internal::read_stream_surface_line_options(np);
 
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_property_map(CGAL::vertex_point, tm_out));
@@ -998,20 +1034,14 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
                                       internal::Ignored_vertex_double_map());
   using Front = internal::Stream_surface_front<FlowField, Point_3, TriangleMesh, std::decay_t<decltype(vpm)>,
                                                std::decay_t<decltype(u_map)>, std::decay_t<decltype(t_map)>>;
-  typename Front::Settings settings{spacing,
-                                    step,
-                                    max_parameter,
-                                    t0,
-                                    std::cos(std::min(tear_angle, CGAL_PI)),
-                                    1e-9 * seed.length(),
-                                    max_time_lines,
-                                    max_vertices,
-                                    lines.max_number_of_steps,
-                                    lines.direction == Integration_direction::BACKWARD ? -1 : 1,
-                                    lines.tolerances};
-  settings.skip_thin_strips =
-      parameters::is_default_parameter<NamedParameters, internal_np::time_line_step_t>::value;
-  settings.callback = internal::progress_callback(np);
+  typename Front::Settings settings =
+      internal::read_stream_surface_settings<typename Front::Settings, Point_3>(field, seed, arc_length,
+                                                                                spacing, lines, np);
+
+  Stream_surface_report report;
+  report.seed_length = seed.length();
+  report.front_spacing = spacing;
+  report.time_line_step = settings.step;
   typename Front::Seed_vertices seed_vertices;
   if (lines.direction != Integration_direction::FORWARD) {
     settings.direction = -1;

@@ -42,119 +42,154 @@ public:
   Session parse()
   {
     Session session;
-    bool have_patch = false, have_alignment = false, have_flow = false;
-    std::size_t line_number = 0;
+    Setup_lines_seen seen;
     std::size_t start = 0;
-    while (start < m_bytes.size()) {
-      std::size_t end = m_bytes.find('\n', start);
-      if (end == std::string_view::npos)
-        end = m_bytes.size();
-      ++line_number;
-      std::string_view text = m_bytes.substr(start, end - start);
-      start = end + 1;
-      if (const std::size_t hash = text.find('#'); hash != std::string_view::npos)
-        text = text.substr(0, hash);
-      m_line = line_number;
-      m_words = split(text);
+    while (next_line(start)) {
       if (m_words.empty())
         continue;
-      const std::string_view keyword = m_words[0];
-
-      if (keyword == "flow" || keyword == "alignment" || keyword == "patch") {
-        if (!session.operations.empty())
-          fail("'" + std::string(keyword) +
-               "' sets up the session and must come before its first operation (line " +
-               std::to_string(session.operations.front().line) + ")");
-        bool& seen = keyword == "flow" ? have_flow : keyword == "alignment" ? have_alignment : have_patch;
-        if (seen)
-          fail("a second '" + std::string(keyword) + "' line");
-        seen = true;
-        if (keyword == "flow") {
-          expect_arguments(1, "flow NAME-OR-FILE");
-          session.flow = std::string(m_words[1]);
-        }
-        else if (keyword == "alignment") {
-          expect_arguments(1, "alignment tangential|orthogonal");
-          if (m_words[1] == "tangential")
-            session.alignment = Alignment::TANGENTIAL;
-          else if (m_words[1] == "orthogonal")
-            session.alignment = Alignment::ORTHOGONAL;
-          else
-            fail("unknown alignment '" + printable(m_words[1]) + "' (expected tangential or orthogonal)");
-        }
-        else {
-          session.patch = parse_patch();
-        }
+      if (is_setup_keyword(m_words[0])) {
+        parse_setup_line(session, seen);
         continue;
       }
-
-      if (!have_patch)
-        fail("'" + printable(keyword) + "' before the 'patch' line that gives the initial surface");
-      Session_operation op;
-      op.line = line_number;
-      if (keyword == "iterate") {
-        op.kind = Session_operation::Kind::ITERATE;
-        if (m_words.size() >= 2 && m_words[1] == "until-converged") {
-          if (m_words.size() > 3)
-            fail("too many arguments (expected: iterate until-converged [N])");
-          op.until_converged = true;
-          op.number_of_iterations = m_words.size() == 3
-                                        ? positive_count(2, "the largest number of iterations")
-                                        : default_iterations_until_converged;
-        }
-        else {
-          expect_arguments(1, "iterate N | iterate until-converged [N]");
-          op.number_of_iterations = positive_count(1, "the number of iterations");
-        }
-      }
-      else if (keyword == "translate") {
-        expect_arguments(3, "translate dx dy dz");
-        op.kind = Session_operation::Kind::TRANSLATE;
-        op.vector = vector(1, "the translation");
-      }
-      else if (keyword == "rotate") {
-        expect_arguments(4, "rotate ax ay az angle");
-        op.kind = Session_operation::Kind::ROTATE;
-        op.vector = nonzero_vector(1, "the rotation axis");
-        op.angle = number(4, "the angle in degrees") * 3.14159265358979323846 / 180;
-      }
-      else if (keyword == "grow") {
-        op.kind = Session_operation::Kind::GROW;
-        if (m_words.size() != 2 && m_words.size() != 3 && m_words.size() != 5)
-          fail("expected: grow distance [dx dy dz | across-flow]");
-        op.distance = number(1, "the distance");
-        if (!(op.distance > 0))
-          fail("the distance " + printable(m_words[1]) + " is not positive");
-        if (m_words.size() == 3) {
-          if (m_words[2] != "across-flow")
-            fail("'" + printable(m_words[2]) + "' is neither a direction dx dy dz nor across-flow");
-          if (session.alignment != Alignment::TANGENTIAL)
-            fail("'grow ... across-flow' grows a tangential surface, and this session's alignment is "
-                 "orthogonal");
-          op.growth = Session_operation::Growth::ACROSS_FLOW;
-        }
-        else if (m_words.size() == 5) {
-          op.growth = Session_operation::Growth::DIRECTION;
-          op.vector = nonzero_vector(2, "the growth direction");
-        }
-      }
-      else if (keyword == "save") {
-        expect_arguments(1, "save path (no spaces)");
-        op.kind = Session_operation::Kind::SAVE;
-        op.path = std::string(m_words[1]);
-      }
-      else {
-        fail("unknown operation '" + printable(keyword) +
-             "' (expected flow, alignment, patch, iterate, translate, rotate, grow or save)");
-      }
-      session.operations.push_back(op);
+      if (!seen.patch)
+        fail("'" + printable(m_words[0]) + "' before the 'patch' line that gives the initial surface");
+      session.operations.push_back(parse_operation(session.alignment));
     }
-    if (!have_patch)
+    if (!seen.patch)
       throw Read_error("read_session: " + m_filename + ": no 'patch' line gives the initial surface");
     return session;
   }
 
 private:
+  // Which of the set-up lines, each allowed once, the file has given so far.
+  struct Setup_lines_seen {
+    bool flow = false, alignment = false, patch = false;
+  };
+
+  static bool is_setup_keyword(std::string_view keyword)
+  {
+    return keyword == "flow" || keyword == "alignment" || keyword == "patch";
+  }
+
+  // The line that begins at `start` into m_line and m_words (without its comment), and `start` to
+  // the next line; false after the last line.
+  bool next_line(std::size_t& start)
+  {
+    if (start >= m_bytes.size())
+      return false;
+    std::size_t end = m_bytes.find('\n', start);
+    if (end == std::string_view::npos)
+      end = m_bytes.size();
+    ++m_line;
+    std::string_view text = m_bytes.substr(start, end - start);
+    start = end + 1;
+    if (const std::size_t hash = text.find('#'); hash != std::string_view::npos)
+      text = text.substr(0, hash);
+    m_words = split(text);
+    return true;
+  }
+
+  void parse_setup_line(Session& session, Setup_lines_seen& seen) const
+  {
+    const std::string_view keyword = m_words[0];
+    if (!session.operations.empty())
+      fail("'" + std::string(keyword) +
+           "' sets up the session and must come before its first operation (line " +
+           std::to_string(session.operations.front().line) + ")");
+    bool& given = keyword == "flow" ? seen.flow : keyword == "alignment" ? seen.alignment : seen.patch;
+    if (given)
+      fail("a second '" + std::string(keyword) + "' line");
+    given = true;
+    if (keyword == "flow") {
+      expect_arguments(1, "flow NAME-OR-FILE");
+      session.flow = std::string(m_words[1]);
+    }
+    else if (keyword == "alignment")
+      session.alignment = parse_alignment();
+    else
+      session.patch = parse_patch();
+  }
+
+  Alignment parse_alignment() const
+  {
+    expect_arguments(1, "alignment tangential|orthogonal");
+    if (m_words[1] == "tangential")
+      return Alignment::TANGENTIAL;
+    if (m_words[1] != "orthogonal")
+      fail("unknown alignment '" + printable(m_words[1]) + "' (expected tangential or orthogonal)");
+    return Alignment::ORTHOGONAL;
+  }
+
+  // The operation of the current line, in a session of the given alignment.
+  Session_operation parse_operation(Alignment alignment) const
+  {
+    const std::string_view keyword = m_words[0];
+    Session_operation op;
+    op.line = m_line;
+    if (keyword == "iterate")
+      parse_iterate(op);
+    else if (keyword == "translate") {
+      expect_arguments(3, "translate dx dy dz");
+      op.kind = Session_operation::Kind::TRANSLATE;
+      op.vector = vector(1, "the translation");
+    }
+    else if (keyword == "rotate") {
+      expect_arguments(4, "rotate ax ay az angle");
+      op.kind = Session_operation::Kind::ROTATE;
+      op.vector = nonzero_vector(1, "the rotation axis");
+      op.angle = number(4, "the angle in degrees") * 3.14159265358979323846 / 180;
+    }
+    else if (keyword == "grow")
+      parse_grow(op, alignment);
+    else if (keyword == "save") {
+      expect_arguments(1, "save path (no spaces)");
+      op.kind = Session_operation::Kind::SAVE;
+      op.path = std::string(m_words[1]);
+    }
+    else
+      fail("unknown operation '" + printable(keyword) +
+           "' (expected flow, alignment, patch, iterate, translate, rotate, grow or save)");
+    return op;
+  }
+
+  void parse_iterate(Session_operation& op) const
+  {
+    op.kind = Session_operation::Kind::ITERATE;
+    if (m_words.size() >= 2 && m_words[1] == "until-converged") {
+      if (m_words.size() > 3)
+        fail("too many arguments (expected: iterate until-converged [N])");
+      op.until_converged = true;
+      op.number_of_iterations = m_words.size() == 3 ? positive_count(2, "the largest number of iterations")
+                                                    : default_iterations_until_converged;
+    }
+    else {
+      expect_arguments(1, "iterate N | iterate until-converged [N]");
+      op.number_of_iterations = positive_count(1, "the number of iterations");
+    }
+  }
+
+  void parse_grow(Session_operation& op, Alignment alignment) const
+  {
+    op.kind = Session_operation::Kind::GROW;
+    if (m_words.size() != 2 && m_words.size() != 3 && m_words.size() != 5)
+      fail("expected: grow distance [dx dy dz | across-flow]");
+    op.distance = number(1, "the distance");
+    if (!(op.distance > 0))
+      fail("the distance " + printable(m_words[1]) + " is not positive");
+    if (m_words.size() == 3) {
+      if (m_words[2] != "across-flow")
+        fail("'" + printable(m_words[2]) + "' is neither a direction dx dy dz nor across-flow");
+      if (alignment != Alignment::TANGENTIAL)
+        fail("'grow ... across-flow' grows a tangential surface, and this session's alignment is "
+             "orthogonal");
+      op.growth = Session_operation::Growth::ACROSS_FLOW;
+    }
+    else if (m_words.size() == 5) {
+      op.growth = Session_operation::Growth::DIRECTION;
+      op.vector = nonzero_vector(2, "the growth direction");
+    }
+  }
+
   static std::string printable(std::string_view s) { return internal::printable(s); }
 
   static std::vector<std::string_view> split(std::string_view text)

@@ -76,6 +76,9 @@ struct Reference_face {
                   : edge_stiffness[std::size_t(3 - i - k)];
   }
 
+  /// The corner of the face at vertex `v` (one of its vertices).
+  int corner(Eigen::Index v) const { return vertices[0] == v ? 0 : vertices[1] == v ? 1 : 2; }
+
   /// K_j m, for m with one row per corner: row i is sum over k != i of K(i, k) (m_k - m_i).
   Eigen::Matrix3d times_stiffness(const Eigen::Matrix3d& m) const
   {
@@ -133,6 +136,31 @@ struct Degenerate_face {
   std::size_t face;
 };
 
+/// The faces from `first_face` on around each vertex of a mesh with m vertices, in increasing
+/// face order, as a CSR array: those of vertex v are `around[first[v]]` to `around[first[v + 1] - 1]`.
+struct Faces_around_vertices {
+  using StorageIndex = Eigen::SparseMatrix<double>::StorageIndex;
+  std::vector<StorageIndex> first;
+  std::vector<StorageIndex> around;
+
+  Faces_around_vertices(Eigen::Index m, const std::vector<Reference_face>& faces, std::size_t first_face = 0)
+      : first(std::size_t(m) + 1, 0)
+  {
+    for (std::size_t j = first_face; j < faces.size(); ++j)
+      for (Eigen::Index v : faces[j].vertices)
+        ++first[std::size_t(v) + 1];
+    for (std::size_t v = 0; v < std::size_t(m); ++v)
+      first[v + 1] += first[v];
+    around.resize(static_cast<std::size_t>(first[std::size_t(m)]));
+    std::vector<StorageIndex> next(first.begin(), first.end() - 1);
+    for (std::size_t j = first_face; j < faces.size(); ++j)
+      for (Eigen::Index v : faces[j].vertices)
+        around[std::size_t(next[std::size_t(v)]++)] = StorageIndex(j);
+  }
+
+  bool none_around(std::size_t v) const { return first[v + 1] == first[v]; }
+};
+
 /// L = sum_j K_j (each face's local stiffness scattered to its vertices), assembled directly in
 /// compressed column form: the rows of column v are v and the vertices of the faces around v,
 /// and each entry sums the faces' contributions in increasing face order, as
@@ -144,20 +172,9 @@ inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m,
                                                              const std::vector<Reference_face>& faces)
 {
   using StorageIndex = Eigen::SparseMatrix<double>::StorageIndex;
-  // The faces around each vertex, in increasing face order (a CSR array of face indices).
-  std::vector<StorageIndex> first(std::size_t(m) + 1, 0);
-  for (const Reference_face& face : faces)
-    for (Eigen::Index v : face.vertices)
-      ++first[std::size_t(v) + 1];
-  for (std::size_t v = 0; v < std::size_t(m); ++v)
-    first[v + 1] += first[v];
-  std::vector<StorageIndex> around(3 * faces.size());
-  {
-    std::vector<StorageIndex> next(first.begin(), first.end() - 1);
-    for (std::size_t j = 0; j < faces.size(); ++j)
-      for (Eigen::Index v : faces[j].vertices)
-        around[std::size_t(next[std::size_t(v)]++)] = StorageIndex(j);
-  }
+  const Faces_around_vertices faces_around(m, faces);
+  const std::vector<StorageIndex>& first = faces_around.first;
+  const std::vector<StorageIndex>& around = faces_around.around;
   // The rows of column v: v and the other vertices of its faces, each once (`seen[u] == v` marks
   // u as taken), sorted; `at[u]` then is the position of row u in the column.
   std::vector<StorageIndex> seen(static_cast<std::size_t>(m), StorageIndex(-1));
@@ -195,9 +212,7 @@ inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m,
     }
     for (StorageIndex k = first[v]; k < first[v + 1]; ++k) {
       const Reference_face& face = faces[std::size_t(around[std::size_t(k)])];
-      const int corner = face.vertices[0] == Eigen::Index(v)   ? 0
-                         : face.vertices[1] == Eigen::Index(v) ? 1
-                                                               : 2;
+      const int corner = face.corner(Eigen::Index(v));
       for (int i = 0; i < 3; ++i)
         values[at[std::size_t(face.vertices[i])]] += face.stiffness(i, corner);
     }
@@ -248,22 +263,150 @@ make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions
   return ops;
 }
 
-/// Extends `ops`, assembled by `make_poisson_operators()` without G and D on the first
-/// `ops.faces.size()` faces of `face_vertices`, to all of them: the faces after those (a mesh
-/// grown at its boundary) on `positions`, whose rows for the vertices of the old faces must be
-/// the ones `ops` was made from.  The old faces' data are kept, the new faces' computed, and L
-/// is extended in place (its old columns moved toward the end of its arrays from the last one
-/// down, the new faces' entries merged in): each entry is the old sum plus the new faces'
-/// contributions in increasing face order, so the result is what `make_poisson_operators()`
-/// makes of the whole mesh, to the last bit, with a fraction of the work and little fresh memory
-/// (the arrays grow by half again when full, so repeated growing mostly reuses them).
-/// Returns the first degenerate new face, if any, and then leaves `ops` untouched.
-/// \pre `face_vertices[j] == ops.faces[j].vertices` for the old faces; `ops.G` is empty.
-inline std::optional<Degenerate_face>
-extend_poisson_operators(Poisson_operators& ops, const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
-                         const std::vector<std::array<Eigen::Index, 3>>& face_vertices)
-{
+/// Extends L = sum_j K_j of the first `old_faces` of `faces` to all of them, on m vertices, in
+/// place: its old columns are moved toward the end of its arrays from the last one down, the new
+/// faces' entries merged in, and each entry is the old sum plus the new faces' contributions in
+/// increasing face order.
+class Stiffness_matrix_extension {
+public:
   using StorageIndex = Eigen::SparseMatrix<double>::StorageIndex;
+
+  Stiffness_matrix_extension(Eigen::SparseMatrix<double>& l, Eigen::Index m,
+                             const std::vector<Reference_face>& faces, std::size_t old_faces)
+      : m_l(l), m_old_m(l.cols()), m_m(m), m_faces(faces), m_new_faces(m, faces, old_faces),
+        m_old_outer(l.outerIndexPtr(), l.outerIndexPtr() + m_old_m + 1),
+        m_seen(std::size_t(m), StorageIndex(-1))
+  {
+  }
+
+  void extend()
+  {
+    count_column_entries();
+    std::fill(m_seen.begin(), m_seen.end(), StorageIndex(-1));
+    const Eigen::Index nonzeros = m_outer[std::size_t(m_m)];
+    if (nonzeros > Eigen::Index(m_l.data().allocatedSize()))
+      m_l.data().reserve(nonzeros - m_l.nonZeros() + nonzeros / 2);
+    m_l.conservativeResize(m_m, m_m);
+    m_l.resizeNonZeros(nonzeros);
+    // From the last column down: a column's new place starts at or after its old one and ends
+    // before the old place of the next column, which was already moved.
+    for (std::size_t v = std::size_t(m_m); v-- > 0;) {
+      if (m_new_faces.none_around(v))
+        move_old_column(v);
+      else {
+        merge_added_rows(v);
+        add_new_face_stiffness(v);
+      }
+    }
+    std::copy(m_outer.begin(), m_outer.end(), m_l.outerIndexPtr());
+  }
+
+private:
+  StorageIndex old_begin(std::size_t v) const { return v < std::size_t(m_old_m) ? m_old_outer[v] : 0; }
+  StorageIndex old_end(std::size_t v) const { return v < std::size_t(m_old_m) ? m_old_outer[v + 1] : 0; }
+
+  bool old_column_has(std::size_t v, StorageIndex row) const
+  {
+    if (v >= std::size_t(m_old_m))
+      return false;
+    const StorageIndex* begin = m_l.innerIndexPtr() + m_old_outer[v];
+    const StorageIndex* end = m_l.innerIndexPtr() + m_old_outer[v + 1];
+    return std::binary_search(begin, end, row);
+  }
+
+  // The rows the new faces add to column v (not in the old column), unsorted, into `m_rows`.
+  void find_added_rows(std::size_t v)
+  {
+    m_rows.clear();
+    for (StorageIndex k = m_new_faces.first[v]; k < m_new_faces.first[v + 1]; ++k)
+      for (Eigen::Index u : m_faces[std::size_t(m_new_faces.around[std::size_t(k)])].vertices)
+        if (m_seen[std::size_t(u)] != StorageIndex(v)) {
+          m_seen[std::size_t(u)] = StorageIndex(v);
+          if (!old_column_has(v, StorageIndex(u)))
+            m_rows.push_back(StorageIndex(u));
+        }
+  }
+
+  // The extended matrix's column starts, into `m_outer`.
+  void count_column_entries()
+  {
+    m_outer.assign(std::size_t(m_m) + 1, 0);
+    for (std::size_t v = 0; v < std::size_t(m_m); ++v) {
+      const StorageIndex old_count = old_end(v) - old_begin(v);
+      if (!m_new_faces.none_around(v))
+        find_added_rows(v);
+      else
+        m_rows.clear();
+      m_outer[v + 1] = m_outer[v] + old_count + StorageIndex(m_rows.size());
+    }
+  }
+
+  void move_old_column(std::size_t v)
+  {
+    StorageIndex* inner = m_l.innerIndexPtr();
+    double* values = m_l.valuePtr();
+    std::copy_backward(inner + old_begin(v), inner + old_end(v), inner + m_outer[v + 1]);
+    std::copy_backward(values + old_begin(v), values + old_end(v), values + m_outer[v + 1]);
+  }
+
+  // Column v at its new place: its old entries and the new faces' rows with zero values, merged
+  // from the back.
+  void merge_added_rows(std::size_t v)
+  {
+    StorageIndex* inner = m_l.innerIndexPtr();
+    double* values = m_l.valuePtr();
+    find_added_rows(v);
+    std::sort(m_rows.begin(), m_rows.end());
+    const StorageIndex begin = old_begin(v);
+    StorageIndex read = old_end(v); // one past the next old entry
+    StorageIndex write = m_outer[v + 1];
+    std::size_t r = m_rows.size();
+    while (write > m_outer[v]) {
+      --write;
+      if (r > 0 && (read == begin || m_rows[r - 1] > inner[read - 1])) {
+        inner[write] = m_rows[--r];
+        values[write] = 0;
+      }
+      else {
+        --read;
+        inner[write] = inner[read];
+        values[write] = values[read];
+      }
+    }
+  }
+
+  void add_new_face_stiffness(std::size_t v)
+  {
+    const StorageIndex* inner = m_l.innerIndexPtr();
+    double* values = m_l.valuePtr();
+    const StorageIndex* column = inner + m_outer[v];
+    const StorageIndex* column_end = inner + m_outer[v + 1];
+    for (StorageIndex k = m_new_faces.first[v]; k < m_new_faces.first[v + 1]; ++k) {
+      const Reference_face& face = m_faces[std::size_t(m_new_faces.around[std::size_t(k)])];
+      const int corner = face.corner(Eigen::Index(v));
+      for (int i = 0; i < 3; ++i) {
+        const StorageIndex row = StorageIndex(face.vertices[i]);
+        values[std::lower_bound(column, column_end, row) - inner] += face.stiffness(i, corner);
+      }
+    }
+  }
+
+  Eigen::SparseMatrix<double>& m_l;
+  const Eigen::Index m_old_m, m_m;
+  const std::vector<Reference_face>& m_faces;
+  const Faces_around_vertices m_new_faces;
+  const std::vector<StorageIndex> m_old_outer;
+  std::vector<StorageIndex> m_seen;  // m_seen[u] == v: row u of column v is taken
+  std::vector<StorageIndex> m_rows;  // of the column at hand
+  std::vector<StorageIndex> m_outer; // of the extended matrix
+};
+
+/// The faces of `face_vertices` after the `ops.faces.size()` ones of `ops`, appended to `ops.faces`
+/// and `ops.face_areas`; the first degenerate one instead, if any, and then `ops` is untouched.
+inline std::optional<Degenerate_face>
+append_reference_faces(Poisson_operators& ops, const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
+                       const std::vector<std::array<Eigen::Index, 3>>& face_vertices)
+{
   const std::size_t old_faces = ops.faces.size();
   std::vector<Reference_face> added;
   added.reserve(face_vertices.size() - old_faces);
@@ -279,102 +422,28 @@ extend_poisson_operators(Poisson_operators& ops, const Eigen::Matrix<double, Eig
   ops.face_areas.conservativeResize(Eigen::Index(ops.faces.size()));
   for (std::size_t j = old_faces; j < ops.faces.size(); ++j)
     ops.face_areas[Eigen::Index(j)] = ops.faces[j].area;
+  return std::nullopt;
+}
 
-  // The new faces around each vertex, in increasing face order.
-  Eigen::SparseMatrix<double>& l = ops.L;
-  const Eigen::Index old_m = l.cols(), m = positions.rows();
-  std::vector<StorageIndex> first(std::size_t(m) + 1, 0);
-  for (std::size_t j = old_faces; j < ops.faces.size(); ++j)
-    for (Eigen::Index v : ops.faces[j].vertices)
-      ++first[std::size_t(v) + 1];
-  for (std::size_t v = 0; v < std::size_t(m); ++v)
-    first[v + 1] += first[v];
-  std::vector<StorageIndex> around(static_cast<std::size_t>(first[std::size_t(m)]));
-  {
-    std::vector<StorageIndex> next(first.begin(), first.end() - 1);
-    for (std::size_t j = old_faces; j < ops.faces.size(); ++j)
-      for (Eigen::Index v : ops.faces[j].vertices)
-        around[std::size_t(next[std::size_t(v)]++)] = StorageIndex(j);
-  }
-  const std::vector<StorageIndex> old_outer(l.outerIndexPtr(), l.outerIndexPtr() + old_m + 1);
-  auto old_column_has = [&](std::size_t v, StorageIndex row) {
-    if (v >= std::size_t(old_m))
-      return false;
-    const StorageIndex* begin = l.innerIndexPtr() + old_outer[v];
-    const StorageIndex* end = l.innerIndexPtr() + old_outer[v + 1];
-    return std::binary_search(begin, end, row);
-  };
-  // The rows the new faces add to column v (not in the old column), unsorted, into `rows`.
-  std::vector<StorageIndex> seen(std::size_t(m), StorageIndex(-1)), rows;
-  auto added_rows = [&](std::size_t v) {
-    rows.clear();
-    for (StorageIndex k = first[v]; k < first[v + 1]; ++k)
-      for (Eigen::Index u : ops.faces[std::size_t(around[std::size_t(k)])].vertices)
-        if (seen[std::size_t(u)] != StorageIndex(v)) {
-          seen[std::size_t(u)] = StorageIndex(v);
-          if (!old_column_has(v, StorageIndex(u)))
-            rows.push_back(StorageIndex(u));
-        }
-  };
-  std::vector<StorageIndex> outer(std::size_t(m) + 1, 0);
-  for (std::size_t v = 0; v < std::size_t(m); ++v) {
-    const StorageIndex old_count = v < std::size_t(old_m) ? old_outer[v + 1] - old_outer[v] : 0;
-    if (first[v + 1] > first[v])
-      added_rows(v);
-    else
-      rows.clear();
-    outer[v + 1] = outer[v] + old_count + StorageIndex(rows.size());
-  }
-  std::fill(seen.begin(), seen.end(), StorageIndex(-1));
-
-  const Eigen::Index nonzeros = outer[std::size_t(m)];
-  if (nonzeros > Eigen::Index(l.data().allocatedSize()))
-    l.data().reserve(nonzeros - l.nonZeros() + nonzeros / 2);
-  l.conservativeResize(m, m);
-  l.resizeNonZeros(nonzeros);
-  StorageIndex* inner = l.innerIndexPtr();
-  double* values = l.valuePtr();
-  // From the last column down: a column's new place starts at or after its old one and ends
-  // before the old place of the next column, which was already moved.
-  for (std::size_t v = std::size_t(m); v-- > 0;) {
-    const StorageIndex old_begin = v < std::size_t(old_m) ? old_outer[v] : 0;
-    StorageIndex read = v < std::size_t(old_m) ? old_outer[v + 1] : 0; // one past the next old entry
-    StorageIndex write = outer[v + 1];
-    if (first[v + 1] == first[v]) { // no new face here: the old column, moved
-      std::copy_backward(inner + old_begin, inner + read, inner + write);
-      std::copy_backward(values + old_begin, values + read, values + write);
-      continue;
-    }
-    added_rows(v);
-    std::sort(rows.begin(), rows.end());
-    // Merge the old entries and the new zero entries from the back.
-    std::size_t r = rows.size();
-    while (write > outer[v]) {
-      --write;
-      if (r > 0 && (read == old_begin || rows[r - 1] > inner[read - 1])) {
-        inner[write] = rows[--r];
-        values[write] = 0;
-      }
-      else {
-        --read;
-        inner[write] = inner[read];
-        values[write] = values[read];
-      }
-    }
-    const StorageIndex* column = inner + outer[v];
-    const StorageIndex* column_end = inner + outer[v + 1];
-    for (StorageIndex k = first[v]; k < first[v + 1]; ++k) {
-      const Reference_face& face = ops.faces[std::size_t(around[std::size_t(k)])];
-      const int corner = face.vertices[0] == Eigen::Index(v)   ? 0
-                         : face.vertices[1] == Eigen::Index(v) ? 1
-                                                               : 2;
-      for (int i = 0; i < 3; ++i) {
-        const StorageIndex row = StorageIndex(face.vertices[i]);
-        values[std::lower_bound(column, column_end, row) - inner] += face.stiffness(i, corner);
-      }
-    }
-  }
-  std::copy(outer.begin(), outer.end(), l.outerIndexPtr());
+/// Extends `ops`, assembled by `make_poisson_operators()` without G and D on the first
+/// `ops.faces.size()` faces of `face_vertices`, to all of them: the faces after those (a mesh
+/// grown at its boundary) on `positions`, whose rows for the vertices of the old faces must be
+/// the ones `ops` was made from.  The old faces' data are kept, the new faces' computed, and L
+/// is extended in place (`Stiffness_matrix_extension`): each entry is the old sum plus the new
+/// faces' contributions in increasing face order, so the result is what
+/// `make_poisson_operators()` makes of the whole mesh, to the last bit, with a fraction of the
+/// work and little fresh memory (the arrays grow by half again when full, so repeated growing
+/// mostly reuses them).
+/// Returns the first degenerate new face, if any, and then leaves `ops` untouched.
+/// \pre `face_vertices[j] == ops.faces[j].vertices` for the old faces; `ops.G` is empty.
+inline std::optional<Degenerate_face>
+extend_poisson_operators(Poisson_operators& ops, const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
+                         const std::vector<std::array<Eigen::Index, 3>>& face_vertices)
+{
+  const std::size_t old_faces = ops.faces.size();
+  if (const std::optional<Degenerate_face> degenerate = append_reference_faces(ops, positions, face_vertices))
+    return degenerate;
+  Stiffness_matrix_extension(ops.L, positions.rows(), ops.faces, old_faces).extend();
   return std::nullopt;
 }
 

@@ -204,20 +204,21 @@ inline bool in_reference_cell(unsigned char type, const double* xi)
   }
 }
 
-// Inverts the map x(xi) = p of the cell of type `type` with points X by Newton's method from
-// `start` (in the reference cell) or else from the cell's parametric center.  Returns whether
-// it converged and xi is in the reference cell, with the shape function values and xi in hit;
-// else, if `estimate` is not null, stores there the last iterate (exact where the iteration
-// converged outside the reference cell, NaN or huge where it diverged), for the walk.
-inline bool invert_cell_map(unsigned char type, const double (*X)[3], int n, const double* p,
-                            Cell_parametric_point& hit, const double* start = nullptr,
-                            double* estimate = nullptr)
+// The largest coordinate difference between a cell's points and its first one: the scale of the
+// residual test of `invert_cell_map()`.
+inline double cell_extent(const double (*X)[3], int n)
 {
   double size = 0.;
   for (int i = 0; i < n; ++i)
     for (int a = 0; a < 3; ++a)
       size = (std::max)(size, std::abs(X[i][a] - X[0][a]));
-  double xi[3];
+  return size;
+}
+
+// Where Newton's method starts: `start` if given (in the reference cell), else the cell's
+// parametric center.
+inline void newton_start(unsigned char type, const double* start, double (&xi)[3])
+{
   switch (type) {
   case VTK_cell_type::TETRA:
     xi[0] = xi[1] = xi[2] = 0.25;
@@ -236,82 +237,128 @@ inline bool invert_cell_map(unsigned char type, const double (*X)[3], int n, con
   if (start != nullptr && type != VTK_cell_type::TETRA) // linear maps need no start
     for (int a = 0; a < 3; ++a)
       xi[a] = start[a];
-  auto reject = [&] {
-    if (estimate != nullptr)
-      for (int a = 0; a < 3; ++a)
-        estimate[a] = xi[a];
-    return false;
-  };
+}
+
+// The determinant of a 3 x 3 matrix, expanded along its first row.
+inline double determinant_3(const double (&M)[3][3])
+{
+  return M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
+         M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+         M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
+}
+
+// The solution d of J d = res by Cramer's rule, `det` being the determinant of J.
+inline void solve_by_cramer(const double (&J)[3][3], const double (&res)[3], double det, double (&d)[3])
+{
+  for (int b = 0; b < 3; ++b) {
+    double M[3][3];
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c)
+        M[a][c] = c == b ? res[a] : J[a][c];
+    d[b] = determinant_3(M) / det;
+  }
+}
+
+// Newton's step d from xi toward x(xi) = p for the cell of type `type` with points X; false
+// where the Jacobian is singular or not finite.
+inline bool newton_step(unsigned char type, const double (*X)[3], int n, const double* p,
+                        const double (&xi)[3], double (&d)[3])
+{
   double N[8], dN[8][3];
+  cell_shape_functions(type, xi, N, dN);
+  double res[3] = {p[0], p[1], p[2]};
+  double J[3][3] = {{0., 0., 0.}, {0., 0., 0.}, {0., 0., 0.}};
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < 3; ++a) {
+      res[a] -= N[i] * X[i][a];
+      for (int b = 0; b < 3; ++b)
+        J[a][b] += X[i][a] * dN[i][b];
+    }
+  const double det = determinant_3(J);
+  if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
+    return false;
+  solve_by_cramer(J, res, det, d);
+  return true;
+}
+
+// How Newton's iteration of `invert_cell_map()` ended: at a step small enough, stopped without
+// that (diverging, a singular Jacobian, or out of iterations), or far from the reference cell.
+enum class Newton_outcome { CONVERGED, STOPPED, FAR_OUTSIDE };
+
+inline Newton_outcome newton_iterations(unsigned char type, const double (*X)[3], int n, const double* p,
+                                        double (&xi)[3])
+{
   // Linear cells converge in one step; the trilinear map in a few for reasonable cells.  The
   // cap bounds the cost of points that are far outside a cell (in its bounding box only).
   const int max_iterations = type == VTK_cell_type::TETRA ? 1 : 12;
-  bool converged = false;
   for (int it = 0; it < max_iterations; ++it) {
-    cell_shape_functions(type, xi, N, dN);
-    double res[3] = {p[0], p[1], p[2]};
-    double J[3][3] = {{0., 0., 0.}, {0., 0., 0.}, {0., 0., 0.}};
-    for (int i = 0; i < n; ++i)
-      for (int a = 0; a < 3; ++a) {
-        res[a] -= N[i] * X[i][a];
-        for (int b = 0; b < 3; ++b)
-          J[a][b] += X[i][a] * dN[i][b];
-      }
-    const double det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
-                       J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                       J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-    if (!(std::abs(det) > 1e-300) || !std::isfinite(det))
-      break;
-    // Cramer's rule for J d = res.
     double d[3];
-    for (int b = 0; b < 3; ++b) {
-      double M[3][3];
-      for (int a = 0; a < 3; ++a)
-        for (int c = 0; c < 3; ++c)
-          M[a][c] = c == b ? res[a] : J[a][c];
-      d[b] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) -
-              M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-              M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
-             det;
-    }
+    if (!newton_step(type, X, n, p, xi, d))
+      return Newton_outcome::STOPPED;
     double step = 0.;
     for (int a = 0; a < 3; ++a) {
       xi[a] += d[a];
       step = (std::max)(step, std::abs(d[a]));
     }
     if (!(step < 1e3)) // diverging: far outside the cell
-      break;
+      return Newton_outcome::STOPPED;
     // Newton's error after a step of size h is about C h^2 (C: the map's second derivatives
     // over its first, O(1) in parametric units for usable cells), so after a step below 1e-8
     // xi is as accurate as rounding allows, without one more step to see it.  A
     // tetrahedron's map is affine: one step solves it.
-    if (step < 1e-8 || type == VTK_cell_type::TETRA) {
-      converged = true;
-      break;
-    }
+    if (step < 1e-8 || type == VTK_cell_type::TETRA)
+      return Newton_outcome::CONVERGED;
     if (it >= 3) {
       // Far from the reference cell after a few steps: p is not in this cell.
       bool far = false;
       for (int a = 0; a < 3; ++a)
         far = far || xi[a] < -0.5 || xi[a] > 1.5;
       if (far)
-        return reject();
+        return Newton_outcome::FAR_OUTSIDE;
     }
   }
-  if (!converged) {
-    // Accept when the residual is at rounding level (the step criterion can miss it near
-    // the pyramid's apex, where the map is singular).
-    cell_shape_functions(type, xi, N, dN);
-    double err = 0.;
-    for (int a = 0; a < 3; ++a) {
-      double x = 0.;
-      for (int i = 0; i < n; ++i)
-        x += N[i] * X[i][a];
-      err = (std::max)(err, std::abs(x - p[a]));
-    }
-    if (!(err <= 1e-12 * size))
-      return reject();
+  return Newton_outcome::STOPPED;
+}
+
+// Whether x(xi) is p up to rounding, relative to the cell's extent `size`: the step criterion can
+// miss a solution near the pyramid's apex, where the map is singular.
+inline bool residual_at_rounding_level(unsigned char type, const double (*X)[3], int n, const double* p,
+                                       const double (&xi)[3], double size)
+{
+  double N[8], dN[8][3];
+  cell_shape_functions(type, xi, N, dN);
+  double err = 0.;
+  for (int a = 0; a < 3; ++a) {
+    double x = 0.;
+    for (int i = 0; i < n; ++i)
+      x += N[i] * X[i][a];
+    err = (std::max)(err, std::abs(x - p[a]));
   }
+  return err <= 1e-12 * size;
+}
+
+// Inverts the map x(xi) = p of the cell of type `type` with points X by Newton's method from
+// `start` (in the reference cell) or else from the cell's parametric center.  Returns whether
+// it converged and xi is in the reference cell, with the shape function values and xi in hit;
+// else, if `estimate` is not null, stores there the last iterate (exact where the iteration
+// converged outside the reference cell, NaN or huge where it diverged), for the walk.
+inline bool invert_cell_map(unsigned char type, const double (*X)[3], int n, const double* p,
+                            Cell_parametric_point& hit, const double* start = nullptr,
+                            double* estimate = nullptr)
+{
+  const double size = cell_extent(X, n);
+  double xi[3];
+  newton_start(type, start, xi);
+  auto reject = [&] {
+    if (estimate != nullptr)
+      for (int a = 0; a < 3; ++a)
+        estimate[a] = xi[a];
+    return false;
+  };
+  const Newton_outcome outcome = newton_iterations(type, X, n, p, xi);
+  if (outcome == Newton_outcome::FAR_OUTSIDE ||
+      (outcome == Newton_outcome::STOPPED && !residual_at_rounding_level(type, X, n, p, xi, size)))
+    return reject();
   if (type == VTK_cell_type::PYRAMID && xi[2] >= 1. - 1e-8) {
     // At the apex r and s are undetermined and irrelevant.
     xi[0] = (std::min)((std::max)(xi[0], 0.), 1.);
@@ -319,6 +366,7 @@ inline bool invert_cell_map(unsigned char type, const double (*X)[3], int n, con
   }
   if (!in_reference_cell(type, xi))
     return reject();
+  double dN[8][3];
   hit.n = cell_shape_functions(type, xi, hit.N, dN);
   for (int a = 0; a < 3; ++a)
     hit.xi[a] = xi[a];
