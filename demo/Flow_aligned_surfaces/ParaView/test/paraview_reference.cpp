@@ -17,10 +17,18 @@
 //       the patch of align, written to IN.vtp, then grown STEPS times (each followed by at most
 //       GROW_ITERATIONS iterations) by a deformation made on it; point data growth_step, and
 //       OUT.vtp.txt: the summed Growth_report and the deformation's counts, "name value" a line
+//   paraview_reference unsteady_field OUT.pvd
+//       a swirl whose axis drifts, v(x, y, z, t) = (-y, x - 0.2 t, 0.3), sampled on a regular
+//       grid at t = 0, 0.25, ..., 1: a .pvd and its .vti steps beside it
+//   paraview_reference follow FIELD.pvd OUT.vtp <align's 11 patch arguments> T
+//       the patch aligned at the first step, then re-aligned at every later step up to T and
+//       at T (each time at most ITERATIONS iterations): the surface that followed the flow
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
+#include <CGAL/Flow_aligned_surfaces/Time_slice_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/IO/read_flow_field.h>
 #include <CGAL/Flow_aligned_surfaces/IO/write_VTP.h>
 #include <CGAL/Flow_aligned_surfaces/IO/write_flow_field.h>
@@ -39,6 +47,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -62,7 +71,9 @@ int usage()
                "       paraview_reference stream FIELD.vti SEEDS.txt OUT.vtp forward_time|backward_time|both_length\n"
                "       paraview_reference grow FIELD.vti IN.vtp OUT.vtp CX CY CZ NX NY NZ SIZE FACES "
                "planar|disk tangential|orthogonal ITERATIONS DISTANCE all|across|DX,DY,DZ STEPS "
-               "GROW_ITERATIONS\n";
+               "GROW_ITERATIONS\n"
+               "       paraview_reference unsteady_field OUT.pvd\n"
+               "       paraview_reference follow FIELD.pvd OUT.vtp <align's 11 patch arguments> T\n";
   return 2;
 }
 
@@ -453,6 +464,63 @@ int texture(char** argv)
 
 } // namespace
 
+int write_unsteady_field(const std::string& pvd)
+{
+  const std::string folder = pvd.substr(0, pvd.find_last_of('/') + 1);
+  std::ofstream collection(pvd);
+  collection << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (int i = 0; i <= 4; ++i) {
+    const double t = 0.25 * i;
+    const auto swirl = [t](const K::Point_3& p) -> std::optional<K::Vector_3> {
+      return K::Vector_3(-p.y(), p.x() - 0.2 * t, 0.3);
+    };
+    const auto grid = FAS::Regular_grid_flow_field_3<K>::sample(
+        swirl, K::Point_3(-2, -2, -1), K::Vector_3(0.1, 0.1, 0.1), {{41, 41, 21}});
+    const std::string name = "swirl_" + std::to_string(i) + ".vti";
+    std::string error;
+    if (!FAS::IO::write_VTI_flow_field(folder + name, grid, FAS::parameters::error_message(&error))) {
+      std::cerr << error << "\n";
+      return 1;
+    }
+    collection << "<DataSet timestep=\"" << t << "\" file=\"" << name << "\"/>\n";
+  }
+  collection << "</Collection>\n</VTKFile>\n";
+  return collection ? 0 : 1;
+}
+
+int follow(char** argv)
+{
+  using Series = FAS::Unsteady_flow_field_3<FAS::Regular_grid_flow_field_3<K>>;
+  Series series;
+  std::string error;
+  if (!FAS::IO::read_PVD_flow_field(argv[2], series, FAS::parameters::error_message(&error))) {
+    std::cerr << error << "\n";
+    return 1;
+  }
+  char** spec = argv + 4;
+  const double t = number(argv[15]);
+  Mesh tm;
+  const K::Point_3 center(number(spec[0]), number(spec[1]), number(spec[2]));
+  const K::Vector_3 normal(number(spec[3]), number(spec[4]), number(spec[5]));
+  if (std::string(spec[8]) == "disk")
+    FAS::make_disk_patch(tm, center, normal, number(spec[6]) / 2, std::size_t(number(spec[7])));
+  else
+    FAS::make_planar_patch(tm, center, normal, number(spec[6]), number(spec[6]), std::size_t(number(spec[7])));
+  FAS::Time_slice_flow_field_3<Series> flow(series, series.start_time());
+  FAS::Flow_aligned_deformation<Mesh, decltype(flow)> deformation(tm, flow, alignment_of(spec[9]));
+  const std::size_t iterations = std::size_t(number(spec[10]));
+  std::vector<double> times;
+  for (std::size_t i = 0; i < series.number_of_steps() && series.time(i) <= t; ++i)
+    times.push_back(series.time(i));
+  if (times.back() < t)
+    times.push_back(t);
+  for (double time : times) {
+    flow.set_time(time);
+    deformation.run(iterations);
+  }
+  return write_surface(argv[3], tm, {}) ? 0 : 1;
+}
+
 int main(int argc, char** argv)
 {
   const std::string command = argc > 1 ? argv[1] : "";
@@ -468,5 +536,9 @@ int main(int argc, char** argv)
     return stream_surfaces(argv);
   if (command == "grow" && argc == 20)
     return grow(argv);
+  if (command == "unsteady_field" && argc == 3)
+    return write_unsteady_field(argv[2]);
+  if (command == "follow" && argc == 16)
+    return follow(argv);
   return usage();
 }

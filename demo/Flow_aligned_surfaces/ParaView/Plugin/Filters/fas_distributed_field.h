@@ -13,11 +13,18 @@
 // rank 0 says it has finished (`serve()`), so they take part in exactly as many exchanges as
 // rank 0 needs; a rank that fails sends its reason instead of hanging the others.
 //
+// A temporal input is sampled at a time: each rank interpolates its piece's steps around it
+// linearly in time (Unsteady_flow_field_3), and rank 0 sends the time with every exchange.
+//
 // With one process (or no controller) nothing is exchanged: the field is the input's own.
 #ifndef FAS_DISTRIBUTED_FIELD_H
 #define FAS_DISTRIBUTED_FIELD_H
 
 #include "fas_paraview_support.h"
+#include "fas_temporal_input.h"
+
+#include <CGAL/Flow_aligned_surfaces/Time_slice_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
 
 #include <vtkAppendPolyData.h>
 #include <vtkCleanPolyData.h>
@@ -62,6 +69,10 @@ struct Distributed_input {
   }
 };
 
+/// A rank's piece of the flow at a time: its steps (one for a steady input) interpolated linearly
+/// in time.
+using Piece_field = FAS::Time_slice_flow_field_3<FAS::Unsteady_flow_field_3<Velocity_field>>;
+
 /// A `FlowField_3` over a data set whose pieces live on the ranks of the global controller.  On
 /// one process it is the input's own field.  On several, only rank 0 samples it: at the points
 /// given to `probe()` beforehand (looked up by the exact point), and any other point in an
@@ -72,62 +83,70 @@ public:
 
   Distributed_velocity_field() : m_state(std::make_shared<State>()) {}
 
-  /// Samples this rank's piece of the input of `input_information` (a data set, or the 3D blocks
-  /// of a composite data set: `flow_data_set()`; none when the piece has no cells) with the array
-  /// `selection` (empty name: the active vectors), anew when either changed since the last
-  /// sampling.  Not collective: RequestInformation calls it for the panel's default patch, and
-  /// the update that follows finds the field built (and still reports the piece as changed).
-  /// Never throws: a piece that cannot be sampled is reported by the next update.
-  void sample_piece(vtkInformation* input_information, const Velocity_selection& selection)
+  /// Samples this rank's piece of the flow at `time` from `steps` (each a data set, or the 3D
+  /// blocks of a composite data set: `flow_data_set()`; none when the piece has no cells) with
+  /// the array `selection` (empty name: the active vectors); a step's field is built anew only
+  /// when its data or the selection changed.  Not collective: RequestInformation calls it for
+  /// the panel's default patch.  Never throws: a piece that cannot be sampled is reported by the
+  /// next update.
+  void sample_piece(const std::vector<Flow_step>& steps, double time, const Velocity_selection& selection)
   {
     State& s = *m_state;
-    vtkDataObject* input = input_information != nullptr ? vtkDataObject::GetData(input_information) : nullptr;
-    if (s.have_field && input != nullptr && input->GetMTime() == s.input_time && selection == s.selection)
+    s.time = time;
+    if (s.have_field && same_steps(steps, selection))
+    {
+      if (s.local)
+        s.local->set_time(time);
       return;
-    const int* whole_extent =
-      input_information != nullptr && input_information->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())
-      ? input_information->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())
-      : nullptr;
-    const bool several = global_controller() != nullptr;
+    }
+    std::vector<Sampled_step> sampled;
     s.local.reset();
     s.local_error.clear();
-    s.flow = flow_data_set(input);
     try
     {
-      if (s.flow.data_set == nullptr && vtkCompositeDataSet::SafeDownCast(input) != nullptr)
-      {
-        if (!several)
-          throw std::invalid_argument("the Input (" + std::string(input->GetClassName()) +
-                                      ") has no block with 3D cells: there is no volume to sample the flow in" +
-                                      (s.flow.note.empty() ? std::string() : " (" + s.flow.note + ")"));
-      }
-      else if (!several || (s.flow.data_set != nullptr && s.flow.data_set->GetNumberOfCells() > 0))
-        s.local = make_velocity_field(s.flow.data_set, selection, whole_extent);
+      for (const Flow_step& step : steps)
+        sampled.push_back(sample_step(step, selection));
+      s.local = piece_field(steps, sampled, time);
     }
     catch (const std::exception& e)
     {
       s.local_error = e.what();
     }
-    s.input_time = input != nullptr ? input->GetMTime() : 0;
+    s.flow = sampled.empty() ? Flow_data_set() : sampled.front().flow;
+    s.sampled = std::move(sampled);
     s.selection = selection;
     s.have_field = s.local_error.empty();
     s.sampled_since_update = true;
   }
 
+  /// The piece of a steady input (`input_information`'s data set) at time 0.
+  void sample_piece(vtkInformation* input_information, const Velocity_selection& selection)
+  {
+    Flow_step step;
+    step.data = input_information != nullptr ? vtkDataObject::GetData(input_information) : nullptr;
+    using Pipeline = vtkStreamingDemandDrivenPipeline;
+    if (input_information != nullptr && input_information->Has(Pipeline::WHOLE_EXTENT()))
+    {
+      step.whole_extent.emplace();
+      input_information->Get(Pipeline::WHOLE_EXTENT(), step.whole_extent->data());
+    }
+    sample_piece({ step }, 0., selection);
+  }
+
   /// This rank's field of its piece (`sample_piece()`): null when the piece has no cells or
   /// cannot be sampled.
-  const Velocity_field* piece_field() const { return m_state->local ? &*m_state->local : nullptr; }
-  /// What `piece_field()` samples.
+  const Piece_field* piece_field() const { return m_state->local ? &*m_state->local : nullptr; }
+  /// What `piece_field()` samples (its first step).
   const Flow_data_set& piece() const { return m_state->flow; }
 
   /// Called by every rank at the start of every update, collective when distributed: samples
-  /// this rank's piece (`sample_piece()`) and gathers on rank 0 the state of every rank's piece.
-  /// The calling thread is the one that may exchange.  Never throws: a piece that cannot be
-  /// sampled is reported in `errors`.
-  Distributed_input update(vtkInformation* input_information, const Velocity_selection& selection)
+  /// this rank's piece at `time` (`sample_piece()`) and gathers on rank 0 the state of every
+  /// rank's piece.  The calling thread is the one that may exchange.  Never throws: a piece that
+  /// cannot be sampled is reported in `errors`.
+  Distributed_input update(const std::vector<Flow_step>& steps, double time, const Velocity_selection& selection)
   {
     State& s = *m_state;
-    sample_piece(input_information, selection);
+    sample_piece(steps, time, selection);
     const bool changed = std::exchange(s.sampled_since_update, false);
     std::array<double, 6> local_bounds{ { 1, -1, 1, -1, 1, -1 } };
     if (s.flow.data_set != nullptr && s.flow.data_set->GetNumberOfCells() > 0)
@@ -135,6 +154,22 @@ public:
     Distributed_input pieces = start(global_controller(), local_bounds, changed);
     pieces.note = s.flow.note;
     return pieces;
+  }
+
+  /// Rank 0 (or the only process): samples the flow at time `t` from now on (within the times
+  /// of the steps of the update).  The samples probed for another time are dropped.
+  /// The time at which rank 0 samples.
+  double time() const { return m_state->time; }
+
+  void set_time(double t)
+  {
+    State& s = *m_state;
+    if (s.time == t)
+      return;
+    s.time = t;
+    s.samples.clear();
+    if (s.local)
+      s.local->set_time(t);
   }
 
   /// Whether the samples come from other ranks (more than one process).
@@ -191,10 +226,12 @@ private:
     const int ranks = s.controller->GetNumberOfProcesses();
     int header[2] = { PROBE, int(points.size()) };
     s.controller->Broadcast(header, 2, 0);
-    std::vector<double> coordinates(3 * points.size());
+    // The time, then the points.
+    std::vector<double> coordinates(1 + 3 * points.size());
+    coordinates[0] = s.time;
     for (std::size_t i = 0; i < points.size(); ++i)
       for (int d = 0; d < 3; ++d)
-        coordinates[3 * i + std::size_t(d)] = points[i][d];
+        coordinates[1 + 3 * i + std::size_t(d)] = points[i][d];
     s.controller->Broadcast(coordinates.data(), vtkIdType(coordinates.size()), 0);
     const std::vector<double> mine = sample_local(coordinates, ranks, 0);
     std::vector<double> total(mine.size());
@@ -243,7 +280,7 @@ public:
       s.controller->Broadcast(header, 2, 0);
       if (header[0] != PROBE)
         return;
-      std::vector<double> coordinates(3 * std::size_t(header[1]));
+      std::vector<double> coordinates(1 + 3 * std::size_t(header[1]));
       s.controller->Broadcast(coordinates.data(), vtkIdType(coordinates.size()), 0);
       const std::vector<double> mine = sample_local(coordinates, ranks, rank);
       std::vector<double> total(mine.size());
@@ -366,12 +403,13 @@ private:
     return k;
   }
 
-  // This rank's reply: per point (vx, vy, vz, 1) where its piece has a sample, zeros elsewhere;
-  // then 1 if sampling failed here, then per rank the number of samples it supplied.
+  // This rank's reply to (time, points): per point (vx, vy, vz, 1) where its piece has a sample
+  // at that time, zeros elsewhere; then 1 if sampling failed here, then per rank the number of
+  // samples it supplied.
   std::vector<double> sample_local(const std::vector<double>& coordinates, int ranks, int rank) const
   {
     const State& s = *m_state;
-    const std::size_t n = coordinates.size() / 3;
+    const std::size_t n = (coordinates.size() - 1) / 3;
     std::vector<double> reply(4 * n + 1 + std::size_t(ranks), 0.);
     if (!s.local_error.empty())
     {
@@ -382,11 +420,13 @@ private:
       return reply;
     try
     {
+      Piece_field local = *s.local;
+      local.set_time(coordinates[0]);
+      const double* x = coordinates.data() + 1;
       double supplied = 0;
       for (std::size_t i = 0; i < n; ++i)
       {
-        const Sample v =
-          (*s.local)(Point(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]));
+        const Sample v = local(Point(x[3 * i], x[3 * i + 1], x[3 * i + 2]));
         if (!v)
           continue;
         reply[4 * i] = v->x();
@@ -405,9 +445,72 @@ private:
     return reply;
   }
 
+  // A step of this rank's piece and its field, with what it was built from.
+  struct Sampled_step {
+    vtkSmartPointer<vtkDataObject> data;
+    vtkMTimeType data_time = 0;
+    Flow_data_set flow;
+    std::optional<Velocity_field> field; // none: no cells here
+  };
+
+  bool same_steps(const std::vector<Flow_step>& steps, const Velocity_selection& selection) const
+  {
+    const State& s = *m_state;
+    if (selection != s.selection || steps.size() != s.sampled.size())
+      return false;
+    for (std::size_t i = 0; i < steps.size(); ++i)
+      if (steps[i].data != s.sampled[i].data ||
+          (steps[i].data != nullptr && steps[i].data->GetMTime() != s.sampled[i].data_time))
+        return false;
+    return true;
+  }
+
+  // `step`'s field: the one built before when its data and the selection are the same.
+  Sampled_step sample_step(const Flow_step& step, const Velocity_selection& selection) const
+  {
+    const State& s = *m_state;
+    const vtkMTimeType data_time = step.data != nullptr ? step.data->GetMTime() : 0;
+    if (selection == s.selection)
+      for (const Sampled_step& old : s.sampled)
+        if (old.data == step.data && old.data_time == data_time)
+          return old;
+    Sampled_step sampled{ step.data, data_time, flow_data_set(step.data), std::nullopt };
+    const bool several = global_controller() != nullptr;
+    if (sampled.flow.data_set == nullptr && vtkCompositeDataSet::SafeDownCast(step.data) != nullptr)
+    {
+      if (!several)
+        throw std::invalid_argument("the Input (" + std::string(step.data->GetClassName()) +
+                                    ") has no block with 3D cells: there is no volume to sample the flow in" +
+                                    (sampled.flow.note.empty() ? std::string() : " (" + sampled.flow.note + ")"));
+    }
+    else if (!several || (sampled.flow.data_set != nullptr && sampled.flow.data_set->GetNumberOfCells() > 0))
+      sampled.field = make_velocity_field(sampled.flow.data_set, selection,
+                                          step.whole_extent ? step.whole_extent->data() : nullptr);
+    return sampled;
+  }
+
+  // The piece's steps interpolated in time, at `time`; none when the piece has no cells.
+  static std::optional<Piece_field> piece_field(const std::vector<Flow_step>& steps,
+                                                const std::vector<Sampled_step>& sampled, double time)
+  {
+    std::vector<double> times;
+    std::vector<Velocity_field> fields;
+    for (std::size_t i = 0; i < sampled.size(); ++i)
+      if (sampled[i].field)
+      {
+        times.push_back(steps[i].time);
+        fields.push_back(*sampled[i].field);
+      }
+    if (fields.empty())
+      return std::nullopt;
+    if (fields.size() != sampled.size())
+      throw std::invalid_argument("the piece has cells at some time steps and none at others");
+    return Piece_field(FAS::Unsteady_flow_field_3<Velocity_field>(std::move(times), std::move(fields)), time);
+  }
+
   struct State {
     vtkMultiProcessController* controller = nullptr; // null: one process
-    std::optional<Velocity_field> local;             // this rank's piece; none: no cells
+    std::optional<Piece_field> local;                // this rank's piece; none: no cells
     std::string local_error;
     std::unordered_map<Key, Sample, Key_hash> samples;
     bool recording = false;
@@ -416,9 +519,10 @@ private:
     int failed_ranks = 0, supplying_ranks = 0;
     std::size_t exchanges = 0;
     std::thread::id owner;                           // the thread that may exchange
-    vtkMTimeType input_time = 0;                     // of the input sampled in `local`
+    double time = 0;                                 // at which rank 0 samples
+    std::vector<Sampled_step> sampled;               // the steps `local` interpolates
     Velocity_selection selection;
-    Flow_data_set flow;                              // what `local` samples
+    Flow_data_set flow;                              // of the first step
     bool have_field = false;
     bool sampled_since_update = false;               // `local` sampled anew since the last update
   };
@@ -528,6 +632,32 @@ inline vtkSmartPointer<vtkPolyData> gather_on_root(vtkPolyData* piece)
   last_stage->Update();
   vtkSmartPointer<vtkPolyData> whole = vtkPolyData::SafeDownCast(last_stage->GetOutputDataObject(0));
   return whole;
+}
+
+/// RequestUpdateExtent of a filter that samples the flow at the requested time: asks the input
+/// (port 0) for the steps around that time, one pass after the other (fas_temporal_input.h).
+inline void request_steps_around_requested_time(Temporal_flow_input& steps, vtkInformationVector** inputVector,
+                                                vtkInformationVector* outputVector)
+{
+  if (!steps.temporal())
+    return;
+  const double t = steps.requested_time(outputVector->GetInformationObject(0));
+  steps.request_next(inputVector[0]->GetInformationObject(0), steps.steps_around(t));
+}
+
+/// RequestData of a filter that samples the flow at the requested time (every rank, collective
+/// when distributed): none while the pipeline is still bringing steps (the filter returns and is
+/// run again); then `field.update()` with the steps around the requested time, at that time.
+inline std::optional<Distributed_input> update_at_requested_time(Temporal_flow_input& steps,
+  Distributed_velocity_field& field, vtkInformation* request, vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector, const Velocity_selection& selection)
+{
+  if (!steps.collect(request, inputVector[0]->GetInformationObject(0)))
+    return std::nullopt;
+  if (!steps.temporal())
+    return field.update(steps.steps({}), 0., selection);
+  const double t = steps.requested_time(outputVector->GetInformationObject(0));
+  return field.update(steps.steps(steps.steps_around(t)), t, selection);
 }
 
 } // namespace fas_paraview

@@ -18,6 +18,7 @@
 #include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <algorithm>
+#include <map>
 #include <chrono>
 #include <iterator>
 #include <cmath>
@@ -147,13 +148,42 @@ struct vtkFlowAlignedSurface::Internals {
   Kept_outputs kept; // the outputs of the last successful run
   double exchange_ms = 0, step_ms = 0; // of the iterations of the last update
 
+  // A temporal input: the surface after following the flow from the patch through the steps
+  // 0, 1, ..., i (aligned at each step's time from the surface of the step before), by step
+  // index; dropped when the input or a property changes.
+  struct Followed {
+    std::vector<Point> positions;
+    std::size_t iterations = 0;
+    bool converged = false;
+    double max_rotation_angle = 0;
+  };
+  Temporal_flow_input steps;           // the time steps of the input
+  std::map<std::size_t, Followed> followed;
+  std::vector<Point> initial;          // the patch at its pose, where following starts
+  std::size_t followed_in_update = 0;  // steps followed by the last update
+
   // The steps of an update on rank 0 (RequestData), in order.
-  std::array<double, 7> requested_pose(vtkFlowAlignedSurface* f, const Distributed_input& pieces);
+  std::array<double, 7> requested_pose(vtkFlowAlignedSurface* f, const Distributed_input& pieces, bool data_changed);
   void prepare_patch(vtkFlowAlignedSurface* f, const std::array<double, 7>& requested_pose);
   void start_iterations(const Distributed_input& pieces);
   std::size_t iterate(vtkFlowAlignedSurface* f, std::size_t requested);
   void show_iteration(vtkFlowAlignedSurface* f, std::size_t k, std::size_t computed,
                       const Distributed_input& pieces, vtkInformationVector* outputVector);
+  // What the output says of the surface it shows.
+  struct Shown {
+    std::size_t iteration = 0;
+    bool converged = false;
+    double max_rotation_angle = 0;
+  };
+  void show(vtkFlowAlignedSurface* f, const std::vector<Point>& x, const Shown& shown, std::size_t computed,
+            const Distributed_input& pieces, vtkInformationVector* outputVector);
+  bool in_converged_state(std::size_t k) const { return converged && k + 1 >= positions.size(); }
+  // A temporal input, instead of start_iterations(), iterate() and show_iteration().
+  std::vector<std::size_t> needed_steps(vtkInformation* output_information) const;
+  void follow_the_flow(vtkFlowAlignedSurface* f, double t, const Distributed_input& pieces,
+                       vtkInformationVector* outputVector);
+  Followed align_at(vtkFlowAlignedSurface* f, double t);
+  FAS::Iteration_report one_iteration();
 
   int factorizations() const
   {
@@ -167,6 +197,13 @@ struct vtkFlowAlignedSurface::Internals {
     for (Mesh::Vertex_index v : tm.vertices())
       x.push_back(tm.point(v));
     return x;
+  }
+
+  void set_positions(const std::vector<Point>& x)
+  {
+    std::size_t i = 0;
+    for (Mesh::Vertex_index v : tm.vertices())
+      tm.point(v) = x[i++];
   }
 };
 
@@ -221,6 +258,17 @@ vtkDoubleArray* vtkFlowAlignedSurface::GetSizeInfo()
 int vtkFlowAlignedSurface::RequestInformation(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  Internals& in = *this->Internal;
+  in.steps.read_time_steps(inputVector[0]->GetInformationObject(0));
+  if (in.steps.temporal())
+  {
+    // The data's time steps (copied to the output by the pipeline): the time controls play the
+    // data, and the surface follows the flow from the first step on.
+    in.followed.clear();
+    in.placed.reset();
+    this->OfferDefaultPatch(inputVector[0]->GetInformationObject(0));
+    return 1;
+  }
   // The iterations as time steps: the time controls play the deformation.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   const int iterations = std::clamp(this->NumberOfIterations, 0, 100000);
@@ -231,6 +279,17 @@ int vtkFlowAlignedSurface::RequestInformation(
   const double range[2] = { 0., double(iterations) };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   this->OfferDefaultPatch(inputVector[0]->GetInformationObject(0));
+  return 1;
+}
+
+int vtkFlowAlignedSurface::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
+  Internals& in = *this->Internal;
+  if (in.steps.temporal())
+    in.steps.request_next(inputVector[0]->GetInformationObject(0),
+                          in.needed_steps(outputVector->GetInformationObject(0)));
   return 1;
 }
 
@@ -250,7 +309,7 @@ void vtkFlowAlignedSurface::OfferDefaultPatch(vtkInformation* input_information)
     info->SetNumberOfTuples(0);
   // This rank's piece, sampled here once for the update that follows as well.
   in.field.sample_piece(input_information, selection);
-  const Velocity_field* piece_field = in.field.piece_field();
+  const Piece_field* piece_field = in.field.piece_field();
   if (piece_field == nullptr || in.field.piece().data_set->GetNumberOfCells() == 0)
     return;
   double bounds[6];
@@ -266,17 +325,24 @@ void vtkFlowAlignedSurface::OfferDefaultPatch(vtkInformation* input_information)
 }
 
 int vtkFlowAlignedSurface::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   Internals& in = *this->Internal;
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  // A temporal input: once the steps the update needs have come, one per pass of the pipeline.
+  if (!in.steps.collect(request, inputVector[0]->GetInformationObject(0)))
+    return 1;
+  const bool temporal = in.steps.temporal();
+  const double t = temporal ? in.steps.requested_time(outInfo) : 0.;
   try
   {
     // The field: sampled anew when the input or the array changed; the deformation keeps its
     // factorization (it depends on the patch only).  On several ranks every rank builds the
     // field of its own piece (none for a piece without cells) and rank 0 learns the pieces'
     // state; then the other ranks only answer rank 0's probes.
-    const Distributed_input pieces = in.field.update(inputVector[0]->GetInformationObject(0), selected_velocity(this));
+    const Distributed_input pieces =
+      in.field.update(in.steps.steps(temporal ? in.needed_steps(outInfo) : std::vector<std::size_t>()), t,
+                      selected_velocity(this));
     if (!in.field.is_root())
     {
       serve_rank_0(in.field, outputVector);
@@ -285,22 +351,30 @@ int vtkFlowAlignedSurface::RequestData(
     Finish_probes finish_probes(in.field);
     check_properties(this);
     pieces.require_samples();
-    if (pieces.changed)
+    // A temporal input's steps differ from update to update; what it followed is dropped when
+    // its data change (RequestInformation).
+    const bool data_changed = pieces.changed && !temporal;
+    if (data_changed)
     {
       in.restart = true;
       if (!pieces.note.empty())
         vtkOutputWindowDisplayText(("Flow-Aligned Surface: " + pieces.note + "\n").c_str());
     }
-    std::size_t requested = std::size_t(this->NumberOfIterations);
-    if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    in.prepare_patch(this, in.requested_pose(this, pieces, data_changed));
+    if (temporal)
+      in.follow_the_flow(this, t, pieces, outputVector);
+    else
     {
-      const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-      requested = std::size_t(std::lround(std::clamp(t, 0., double(this->NumberOfIterations))));
+      std::size_t requested = std::size_t(this->NumberOfIterations);
+      if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+      {
+        const double k = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+        requested = std::size_t(std::lround(std::clamp(k, 0., double(this->NumberOfIterations))));
+      }
+      in.start_iterations(pieces);
+      const std::size_t computed = in.iterate(this, requested);
+      in.show_iteration(this, std::min(requested, in.positions.size() - 1), computed, pieces, outputVector);
     }
-    in.prepare_patch(this, in.requested_pose(this, pieces));
-    in.start_iterations(pieces);
-    const std::size_t computed = in.iterate(this, requested);
-    in.show_iteration(this, std::min(requested, in.positions.size() - 1), computed, pieces, outputVector);
     in.kept.keep(outputVector);
     return 1;
   }
@@ -312,7 +386,8 @@ int vtkFlowAlignedSurface::RequestData(
   }
 }
 
-std::array<double, 7> vtkFlowAlignedSurface::Internals::requested_pose(vtkFlowAlignedSurface* f, const Distributed_input& pieces)
+std::array<double, 7> vtkFlowAlignedSurface::Internals::requested_pose(vtkFlowAlignedSurface* f, const Distributed_input& pieces,
+                                                                      bool data_changed)
 {
   Internals& in = *this;
   if (f->Size > 0)
@@ -321,9 +396,11 @@ std::array<double, 7> vtkFlowAlignedSurface::Internals::requested_pose(vtkFlowAl
   // Size 0: the default patch, placed once per input and alignment (its samples probed from
   // every rank in one exchange), not at every time step played.
   const bool orthogonal = f->Alignment == vtkFlowAlignedSurface::ORTHOGONAL;
-  if (!in.placed || pieces.changed || in.placed_alignment != f->Alignment)
+  if (!in.placed || data_changed || in.placed_alignment != f->Alignment)
   {
     in.placed.reset();
+    if (in.steps.temporal())
+      in.field.set_time(in.steps.times().front()); // placed where following the flow starts
     in.field.probe_points_of([&] { default_patch(in.field, pieces.bounds.data(), orthogonal); });
     in.placed = default_patch(in.field, pieces.bounds.data(), orthogonal);
     in.placed_alignment = f->Alignment;
@@ -372,6 +449,7 @@ void vtkFlowAlignedSurface::Internals::prepare_patch(vtkFlowAlignedSurface* f, c
     in.key = key;
     in.pose = center_normal;
     in.alignment = f->Alignment;
+    in.initial = in.current_positions();
     in.positions.clear();
     in.restart = true;
   }
@@ -386,6 +464,7 @@ void vtkFlowAlignedSurface::Internals::prepare_patch(vtkFlowAlignedSurface* f, c
     for (Mesh::Vertex_index v : in.tm.vertices())
       in.tm.point(v) = moved.point(v);
     in.pose = center_normal;
+    in.initial = in.current_positions();
     in.positions.clear();
     in.restart = true;
   }
@@ -404,12 +483,7 @@ void vtkFlowAlignedSurface::Internals::start_iterations(const Distributed_input&
   if (!in.restart)
     return;
   if (!in.positions.empty())
-  {
-    // Back to the patch at this pose (the iterations moved it).
-    std::size_t i = 0;
-    for (Mesh::Vertex_index v : in.tm.vertices())
-      in.tm.point(v) = in.positions.front()[i++];
-  }
+    in.set_positions(in.positions.front()); // back to the patch at this pose (the iterations moved it)
   in.positions.assign(1, in.current_positions());
   in.reports.clear();
   in.converged = false;
@@ -447,17 +521,7 @@ std::size_t vtkFlowAlignedSurface::Internals::iterate(vtkFlowAlignedSurface* f, 
     }
     if (in.positions.size() != in.reports.size() + 1)
       throw std::logic_error("iterations out of step");
-    if (in.field.distributed())
-    {
-      const auto exchange_start = std::chrono::steady_clock::now();
-      std::vector<Point> points;
-      in.deformation->next_sample_points(std::back_inserter(points));
-      in.field.probe(points);
-      in.exchange_ms += milliseconds_since(exchange_start);
-    }
-    const auto step_start = std::chrono::steady_clock::now();
-    const FAS::Iteration_report r = in.deformation->step();
-    in.step_ms += milliseconds_since(step_start);
+    const FAS::Iteration_report r = in.one_iteration();
     ++computed;
     in.reports.push_back(r);
     in.positions.push_back(in.current_positions());
@@ -473,19 +537,33 @@ std::size_t vtkFlowAlignedSurface::Internals::iterate(vtkFlowAlignedSurface* f, 
 void vtkFlowAlignedSurface::Internals::show_iteration(vtkFlowAlignedSurface* f, std::size_t k, std::size_t computed, const Distributed_input& pieces,
                                           vtkInformationVector* outputVector)
 {
+  const bool converged = in_converged_state(k);
+  show(f, positions[k], Shown{ k, converged, k == 0 ? 0. : reports[k - 1].max_rotation_angle }, computed, pieces,
+       outputVector);
+}
+
+void vtkFlowAlignedSurface::Internals::show(vtkFlowAlignedSurface* f, const std::vector<Point>& x, const Shown& shown,
+                                            std::size_t computed, const Distributed_input& pieces,
+                                            vtkInformationVector* outputVector)
+{
   Internals& in = *this;
-  Mesh shown = in.tm;
+  Mesh surface = in.tm;
   {
     std::size_t i = 0;
-    for (Mesh::Vertex_index v : shown.vertices())
-      shown.point(v) = in.positions[k][i++];
+    for (Mesh::Vertex_index v : surface.vertices())
+      surface.point(v) = x[i++];
   }
-  const auto [result, flux] = aligned_surface_output(shown, in.field);
-  add_field_value(result, "iteration", double(k));
-  add_field_value(result, "converged", in.converged && k + 1 >= in.positions.size() ? 1. : 0.);
-  add_field_value(result, "max_rotation_angle", k == 0 ? 0. : in.reports[k - 1].max_rotation_angle);
+  const auto [result, flux] = aligned_surface_output(surface, in.field);
+  add_field_value(result, "iteration", double(shown.iteration));
+  add_field_value(result, "converged", shown.converged ? 1. : 0.);
+  add_field_value(result, "max_rotation_angle", shown.max_rotation_angle);
   add_field_value(result, "number_of_factorizations", double(in.factorizations()));
   add_field_value(result, "size", in.key->size);
+  if (in.steps.temporal())
+  {
+    add_field_value(result, "time", in.field.time());
+    add_field_value(result, "time_steps_followed_in_update", double(in.followed_in_update));
+  }
   if (in.field.distributed())
   {
     // How the input was spread and what the exchanges cost (for the benchmark and the tests).
@@ -500,6 +578,110 @@ void vtkFlowAlignedSurface::Internals::show_iteration(vtkFlowAlignedSurface* f, 
   if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
     vtkWarningWithObjectMacro(f, << "Flow-Aligned Surface: " << warning);
   vtkPolyData::GetData(outputVector, 0)->ShallowCopy(result);
+}
+
+FAS::Iteration_report vtkFlowAlignedSurface::Internals::one_iteration()
+{
+  // On several ranks the iteration's samples are probed first, in one exchange.
+  if (field.distributed())
+  {
+    const auto exchange_start = std::chrono::steady_clock::now();
+    std::vector<Point> points;
+    deformation->next_sample_points(std::back_inserter(points));
+    field.probe(points);
+    exchange_ms += milliseconds_since(exchange_start);
+  }
+  const auto step_start = std::chrono::steady_clock::now();
+  const FAS::Iteration_report r = deformation->step();
+  step_ms += milliseconds_since(step_start);
+  return r;
+}
+
+std::vector<std::size_t> vtkFlowAlignedSurface::Internals::needed_steps(vtkInformation* output_information) const
+{
+  // The steps not followed yet up to the requested time, and the steps around it.
+  const double t = steps.requested_time(output_information);
+  const std::size_t k = steps.step_at_or_before(t);
+  std::size_t first = 0;
+  if (auto after = followed.upper_bound(k); after != followed.begin())
+    first = std::prev(after)->first + 1;
+  std::vector<std::size_t> needed;
+  for (std::size_t i = first; i <= k; ++i)
+    needed.push_back(i);
+  for (std::size_t i : steps.steps_around(t))
+    needed.push_back(i);
+  std::sort(needed.begin(), needed.end());
+  needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+  return needed;
+}
+
+vtkFlowAlignedSurface::Internals::Followed vtkFlowAlignedSurface::Internals::align_at(vtkFlowAlignedSurface* f, double t)
+{
+  // Up to Number Of Iterations iterations in the flow at time t, from the surface as it is.
+  field.set_time(t);
+  Followed result;
+  while (result.iterations < std::size_t(f->NumberOfIterations) && !result.converged && !f->GetAbortExecute())
+  {
+    const FAS::Iteration_report r = one_iteration();
+    ++result.iterations;
+    result.converged = r.converged;
+    result.max_rotation_angle = r.max_rotation_angle;
+  }
+  result.positions = current_positions();
+  return result;
+}
+
+void vtkFlowAlignedSurface::Internals::follow_the_flow(vtkFlowAlignedSurface* f, double t, const Distributed_input& pieces,
+                                                       vtkInformationVector* outputVector)
+{
+  // The surface at time t has followed the flow from the patch at the first step through every
+  // step up to t, whatever the way the user came to t (played, stepped back, jumped): the steps
+  // not followed yet are followed now, in order; between two steps it is aligned at t from the
+  // surface of the step before.
+  Internals& in = *this;
+  if (in.restart)
+  {
+    in.followed.clear();
+    in.restart = false;
+  }
+  in.exchange_ms = in.step_ms = 0;
+  const std::vector<double>& times = in.steps.times();
+  const std::size_t k = in.steps.step_at_or_before(t);
+  std::size_t first = 0;
+  if (auto after = in.followed.upper_bound(k); after != in.followed.begin())
+    first = std::prev(after)->first + 1;
+  std::size_t computed = 0;
+  in.followed_in_update = 0;
+  for (std::size_t i = first; i <= k; ++i)
+  {
+    in.set_positions(i == 0 ? in.initial : in.followed.at(i - 1).positions);
+    Followed step = in.align_at(f, times[i]);
+    computed += step.iterations;
+    if (f->GetAbortExecute())
+    {
+      abort_handled(f);
+      vtkWarningWithObjectMacro(f, << "Flow-Aligned Surface: cancelled while following the flow to time step " << i
+                      << "; the output shows the surface of time " << (i == 0 ? times[0] : times[i - 1])
+                      << ", and the next update goes on from there");
+      const Shown shown{ step.iterations, false, step.max_rotation_angle };
+      in.field.set_time(i == 0 ? times[0] : times[i - 1]);
+      show(f, i == 0 ? in.initial : in.followed.at(i - 1).positions, shown, computed, pieces, outputVector);
+      return;
+    }
+    in.followed[i] = std::move(step);
+    ++in.followed_in_update;
+    f->UpdateProgress(double(i + 1 - first) / double(k + 2 - first));
+  }
+  Followed shown = in.followed.at(k);
+  if (t > times[k])
+  {
+    in.set_positions(shown.positions);
+    shown = in.align_at(f, t);
+    computed += shown.iterations;
+  }
+  in.field.set_time(t);
+  show(f, shown.positions, Shown{ shown.iterations, shown.converged, shown.max_rotation_angle }, computed, pieces,
+       outputVector);
 }
 
 void vtkFlowAlignedSurface::PrintSelf(ostream& os, vtkIndent indent)

@@ -12,11 +12,23 @@ class vtkDoubleArray;
 /// Input: any data set with a 3-component point or cell array (the velocity, chosen with
 /// `SetInputArrayToProcess(0, ...)`).  Output: the surface after the requested iteration.
 ///
-/// The iterations are the output's time steps 0, 1, ..., NumberOfIterations, so that ParaView's
-/// time controls play the deformation; every computed iteration is kept.  A new pose (Center or
-/// Normal) restarts the iterations from the patch at that pose with the factorization already
-/// computed (a rigid move changes nothing the factorization depends on); only a new patch
-/// (shape, size, faces) or new parameters factor again.
+/// A steady input (no time steps): the iterations are the output's time steps 0, 1, ...,
+/// NumberOfIterations, so that ParaView's time controls play the deformation; every computed
+/// iteration is kept.  A new pose (Center or Normal) restarts the iterations from the patch at
+/// that pose with the factorization already computed (a rigid move changes nothing the
+/// factorization depends on); only a new patch (shape, size, faces) or new parameters factor
+/// again.
+///
+/// A temporal input (a .pvd, an OpenFOAM case with several times): the output has the data's
+/// time steps, so that the time controls play the data, and the surface follows the flow.  It
+/// is aligned at the first step (up to NumberOfIterations iterations, or until it converges),
+/// then re-aligned at each later step from the surface of the step before (a warm start with
+/// the same factorization); between two steps, at the requested time from the surface of the
+/// step before, in the flow interpolated linearly in time.  The surface at a time therefore does
+/// not depend on how the user came to it: a jump follows the steps in between (the pipeline
+/// reads them one after the other), and the steps followed are kept until the input or a
+/// property changes.  Field data `time`, `iteration` (the iterations made at that time) and
+/// `time_steps_followed_in_update` tell what was done.
 ///
 /// Output arrays: point data `velocity`, `velocity_sampled`; cell data `normalized_flux`
 /// (|n.v|/|v| per face, NaN where the field has no sample); field data `normalized_flux` (absent
@@ -114,6 +126,7 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double Center[3];

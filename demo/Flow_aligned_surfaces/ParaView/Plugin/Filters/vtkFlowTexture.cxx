@@ -58,6 +58,7 @@ FAS::Texture_image make_texture(vtkFlowTexture* filter)
 
 struct vtkFlowTexture::Internals {
   Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
+  Temporal_flow_input steps;        // the time steps of input 0
   Kept_outputs kept;
 };
 
@@ -97,8 +98,9 @@ int vtkFlowTexture::FillOutputPortInformation(int port, vtkInformation* info)
 }
 
 int vtkFlowTexture::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  this->Internal->steps.read_time_steps(inputVector[0]->GetInformationObject(0));
   // The texture is one whole image.
   const int extent[6] = { 0, this->TextureWidth - 1, 0, this->TextureHeight - 1, 0, 0 };
   vtkInformation* info = outputVector->GetInformationObject(1);
@@ -106,15 +108,27 @@ int vtkFlowTexture::RequestInformation(
   return 1;
 }
 
+int vtkFlowTexture::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
+  request_steps_around_requested_time(this->Internal->steps, inputVector, outputVector);
+  return 1;
+}
+
 int vtkFlowTexture::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   Internals& in = *this->Internal;
+  // Every rank: the flow at the requested time (a temporal input: once its steps have come).
+  const std::optional<Distributed_input> update =
+    update_at_requested_time(in.steps, in.field, request, inputVector, outputVector, selected_velocity(this));
+  if (!update)
+    return 1; // the pipeline runs this filter again with the next time step
+  const Distributed_input& pieces = *update;
   // Every rank: the surface's pieces go to rank 0, and every rank samples its piece of the
   // flow for rank 0 (one process: the input's own field).
   const vtkSmartPointer<vtkPolyData> input_surface = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
-  const Distributed_input pieces =
-    in.field.update(inputVector[0]->GetInformationObject(0), selected_velocity(this));
   // The texture does not depend on the flow: every rank gives the part of it that it is asked
   // for (ParaView asks each rank for a piece of an image output).
   const auto texture_piece = [this, outputVector] {

@@ -72,6 +72,7 @@ double time_across_the_data(const Field& field, const std::vector<Polyline>& cur
 
 struct vtkStreamSurfaceFromCurve::Internals {
   Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
+  Temporal_flow_input steps;        // the time steps of input 0
   Kept_outputs kept; // the outputs of the last successful run
 };
 
@@ -105,17 +106,36 @@ int vtkStreamSurfaceFromCurve::FillInputPortInformation(int port, vtkInformation
   return fill_surface_filter_input_port(port, info);
 }
 
+int vtkStreamSurfaceFromCurve::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  this->Internal->steps.read_time_steps(inputVector[0]->GetInformationObject(0));
+  return 1;
+}
+
+int vtkStreamSurfaceFromCurve::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
+  request_steps_around_requested_time(this->Internal->steps, inputVector, outputVector);
+  return 1;
+}
+
 int vtkStreamSurfaceFromCurve::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   Internals& in = *this->Internal;
+  // Every rank: the flow at the requested time (a temporal input: once its steps have come).
+  const std::optional<Distributed_input> update =
+    update_at_requested_time(in.steps, in.field, request, inputVector, outputVector, selected_velocity(this));
+  if (!update)
+    return 1; // the pipeline runs this filter again with the next time step
+  const Distributed_input& pieces = *update;
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   // Every rank: the seed curves' pieces go to rank 0, and every rank samples its piece of the
   // flow for rank 0 (one process: the input's own field).  The particles' positions depend on
   // the samples before them: on several ranks every sample is an exchange of its own.
   const vtkSmartPointer<vtkPolyData> seeds = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
-  const Distributed_input pieces =
-    in.field.update(inputVector[0]->GetInformationObject(0), selected_velocity(this));
   if (!in.field.is_root())
   {
     serve_rank_0(in.field, outputVector);

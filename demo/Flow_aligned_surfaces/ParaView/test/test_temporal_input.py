@@ -1,0 +1,129 @@
+"""The filters on a temporal input in pvbatch (on one process, and on 2 MPI ranks): a swirl whose
+axis drifts, v = (-y, x - 0.2 t, 0.3), written as a .pvd of 5 steps t = 0, 0.25, ..., 1 by
+paraview_reference unsteady_field, read by ParaView's PVD reader.
+
+- The outputs have the data's time steps (the time controls play the data).
+- The flow is sampled at the requested time, interpolated linearly between the steps: the
+  surface's `velocity` array is v at that time (exact here, the swirl being linear in space and
+  time, up to the files' float32).
+- Flow-Aligned Surface follows the flow: the surface at time t is the library's surface aligned at
+  the first step and re-aligned at each later step up to t (paraview_reference follow), to 1e-9
+  of its size; it lies on the cylinder of radius 1 - 0.2 t about the axis of time t; playing the
+  steps and jumping straight to a time give the same surface, bit for bit; a step followed once
+  is not followed again; one factorization throughout.
+- Stream Surface From Curve integrates the flow of the requested time: every vertex keeps the
+  distance of its seed point to the axis of that time.
+"""
+from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
+
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fas_plugin_test as t
+
+setup = t.Setup(globals())
+pvd = setup.path("swirl.pvd")
+if not os.path.exists(pvd):
+    setup.run_reference("unsteady_field", pvd)
+data = PVDReader(FileName=pvd)
+times = list(data.TimestepValues)
+if times != [0.0, 0.25, 0.5, 0.75, 1.0]:
+    raise AssertionError("the swirl's time steps are %s" % times)
+PATCH = [1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.6, 2000]
+ITERATIONS = 100
+
+
+def axis_x(time):
+    return 0.2 * time
+
+
+def follows_the_flow():
+    s = FlowAlignedSurface(Input=data)
+    s.Velocity = ["POINTS", "velocity"]
+    s.Center, s.Normal, s.Size, s.NumberOfFaces = PATCH[0:3], PATCH[3:6], PATCH[6], PATCH[7]
+    s.Alignment = "Tangential (stream surface)"
+    s.NumberOfIterations = ITERATIONS
+    return s
+
+
+def expect_velocity_at(out, time, what):
+    """The output's point array `velocity` is the swirl at `time`."""
+    velocity = out.GetPointData().GetArray("velocity")
+    worst = 0.0
+    for i in range(out.GetNumberOfPoints()):
+        x, y, z = out.GetPoint(i)
+        exact = (-y, x - axis_x(time), 0.3)
+        worst = max(worst, max(abs(velocity.GetComponent(i, c) - exact[c]) for c in range(3)))
+    if not worst <= 1e-5:
+        raise AssertionError("%s: the velocity differs from the flow at t = %g by %g" % (what, time, worst))
+
+
+def largest_distance_from_cylinder(out, time, radius):
+    return max(abs(math.hypot(out.GetPoint(i)[0] - axis_x(time), out.GetPoint(i)[1]) - radius)
+               for i in range(out.GetNumberOfPoints()))
+
+
+def points_of(out):
+    return [out.GetPoint(i) for i in range(out.GetNumberOfPoints())]
+
+
+# 1. Played step by step: each update follows one step more.
+played = follows_the_flow()
+played.UpdatePipeline(times[0])
+if list(played.TimestepValues) != times:
+    raise AssertionError("Flow-Aligned Surface's time steps are %s, not the data's" % list(played.TimestepValues))
+for time in times:
+    out = t.fetch(played, time)
+    t.expect_spread_over_ranks(out, "played to t = %g" % time)
+    if t.field_value(out, "time") != time or t.field_value(out, "time_steps_followed_in_update") != 1:
+        raise AssertionError("played to t = %g: time %g, %g steps followed" % (
+            time, t.field_value(out, "time"), t.field_value(out, "time_steps_followed_in_update")))
+    expect_velocity_at(out, time, "played to t = %g" % time)
+    d = largest_distance_from_cylinder(out, time, 1 - axis_x(time))
+    if not d <= 2e-2:
+        raise AssertionError("played to t = %g: a vertex is %g off the cylinder about the axis" % (time, d))
+at_the_end = points_of(out)
+
+# 2. Between two steps, and against the library.
+for time in [0.6, 1.0]:
+    out = t.fetch(played, time)
+    expect_velocity_at(out, time, "t = %g" % time)
+    reference = setup.path("followed_%g.vtp" % time)
+    setup.run_reference("follow", pvd, reference, *PATCH, "planar", "tangential", ITERATIONS, time)
+    t.expect_same_surface(out, t.read_polydata(reference), "followed to t = %g" % time)
+if t.field_value(out, "number_of_factorizations") != 1:
+    raise AssertionError("%g factorizations" % t.field_value(out, "number_of_factorizations"))
+
+# 3. Jumping straight to the end follows every step in one update and gives the same surface;
+# back to an earlier time, nothing is followed again.
+jumped = follows_the_flow()
+out = t.fetch(jumped, times[-1])
+if t.field_value(out, "time_steps_followed_in_update") != len(times):
+    raise AssertionError("the jump followed %g steps" % t.field_value(out, "time_steps_followed_in_update"))
+if points_of(out) != at_the_end:
+    raise AssertionError("jumping to t = 1 gives another surface than playing to it")
+out = t.fetch(jumped, times[1])
+if t.field_value(out, "time_steps_followed_in_update") != 0:
+    raise AssertionError("going back followed %g steps" % t.field_value(out, "time_steps_followed_in_update"))
+print("the surface at a time does not depend on how it was reached")
+
+# 4. Stream Surface From Curve at t = 0.5: the helicoids about the axis of that time.
+line = Line(Point1=[0.4, 0.0, 0.0], Point2=[0.9, 0.0, 0.0], Resolution=10)
+stream = StreamSurfaceFromCurve(Input=data, Seeds=line)
+stream.Velocity = ["POINTS", "velocity"]
+stream.MaxTime = 2.0
+out = t.fetch(stream, 0.5)
+if list(stream.TimestepValues) != times:
+    raise AssertionError("Stream Surface From Curve's time steps are %s" % list(stream.TimestepValues))
+u = out.GetPointData().GetArray("u")
+worst = 0.0
+for i in range(out.GetNumberOfPoints()):
+    seed_radius = 0.4 + u.GetValue(i) - axis_x(0.5)
+    p = out.GetPoint(i)
+    worst = max(worst, abs(math.hypot(p[0] - axis_x(0.5), p[1]) - seed_radius))
+if out.GetNumberOfCells() == 0 or not worst <= 1e-3:
+    raise AssertionError("stream surface at t = 0.5: %d faces, a vertex %g off its seed's cylinder" % (
+        out.GetNumberOfCells(), worst))
+print("stream surface at t = 0.5: radii kept within %.2g on %d vertices" % (worst, out.GetNumberOfPoints()))
