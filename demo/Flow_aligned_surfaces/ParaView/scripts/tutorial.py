@@ -3,10 +3,11 @@ two `# [name]` lines is the Python beside the GUI step of that name in the manua
 these very lines.  The test paraview_tutorial_gui runs this file in the ParaView GUI (--script)
 and takes its screenshots between the blocks, so that what the manual shows is what was run.
 
-    pvpython tutorial.py PLUGIN CYLINDER_grid.vtk [CASE.foam]
+    pvpython tutorial.py PLUGIN CYLINDER_grid.vtk [CASE.foam [CYLINDER_UNSTEADY_grid.pvd]]
 
 (PLUGIN: FlowAlignedSurfaces.so, lib/paraview-5.11/plugins/FlowAlignedSurfaces/ of the build tree;
-CASE.foam: an OpenFOAM case with U; without it the OpenFOAM part is left out.)  The texture is
+CASE.foam: an OpenFOAM case with U, "-" for none; without it the OpenFOAM part is left out, and
+without the .pvd the unsteady part.)  The texture is
 written into the current folder.  In the GUI's Python shell (View > Python Shell) the blocks can
 be pasted one by one after setting `cylinder_file` and `case_file`."""
 from paraview.simple import *
@@ -17,11 +18,12 @@ import sys
 # Set by the GUI test: a function called after each block with the block's name.
 step = globals().get("step", lambda name: None)
 if "cylinder_file" not in globals():  # run as a script, not by the GUI test
-    if len(sys.argv) not in (3, 4):
-        raise SystemExit("usage: pvpython tutorial.py PLUGIN CYLINDER_grid.vtk [CASE.foam]")
+    if len(sys.argv) not in (3, 4, 5):
+        raise SystemExit("usage: pvpython tutorial.py PLUGIN CYLINDER_grid.vtk [CASE.foam [SERIES.pvd]]")
     LoadPlugin(sys.argv[1], remote=False, ns=globals())
     cylinder_file = sys.argv[2]
-    case_file = sys.argv[3] if len(sys.argv) == 4 else None
+    case_file = sys.argv[3] if len(sys.argv) >= 4 and sys.argv[3] != "-" else None
+    unsteady_file = sys.argv[4] if len(sys.argv) == 5 else None
     texture_file = os.path.abspath("flow_texture.png")
 
 # [open]
@@ -164,3 +166,36 @@ if case_file:
     Render(view)
     # [openfoam_stream]
     step("openfoam_stream")
+
+if globals().get("unsteady_file"):
+    # [unsteady_open]
+    # The eye icons: the pipelines above hidden.  View > Time Inspector: their times unticked
+    # (the steady Flow-Aligned Surfaces have the iterations as time steps of their own).
+    for source in GetSources().values():
+        for port in range(source.GetNumberOfOutputPorts()):
+            Hide(OutputPort(source, port), view)
+    GetTimeKeeper().SuppressedTimeSources = list(GetSources().values())
+    series = PVDReader(FileName=unsteady_file)  # File > Open > CYLINDER_UNSTEADY_grid.pvd, Apply
+    Show(series, view)  # the outline
+    obstacle = Contour(Input=series, ContourBy=["POINTS", "inside"], Isosurfaces=[0.5])
+    ColorBy(Show(obstacle, view), None)
+    Show(AnnotateTime(), view)  # Sources > Annotate Time: the data's time in the view
+    scene = GetAnimationScene()
+    scene.UpdateAnimationUsingDataTimeSteps()  # the time controls: the data's 34 steps
+    view.CameraPosition = [0.75, 0.95, 0.75]  # the mouse: the channel seen from above, behind
+    view.CameraFocalPoint = [0.55, 0.25, 0.2]
+    view.CameraViewUp = [0, 0, 1]
+    Render(view)
+    # [unsteady_open]
+    step("unsteady_open")
+
+    # [unsteady_surface]
+    followed = FlowAlignedSurface(Input=series)  # the defaults, as on the steady cylinder
+    followed_shown = Show(followed, view)
+    ColorBy(followed_shown, ("CELLS", "normalized_flux"))
+    followed_shown.SetScalarBarVisibility(view, True)
+    GetColorTransferFunction("normalized_flux").RescaleTransferFunction(0.0, 1.0)
+    Hide3DWidgets(proxy=followed)
+    scene.Play()  # the data's time: the surface follows the flow from step to step
+    # [unsteady_surface]
+    step("unsteady_surface")

@@ -6,7 +6,7 @@ file's folder: the GUI runs a --script without __file__) in the environment.
 One GUI session (a start costs seconds) runs ../scripts/tutorial.py, the code the manual shows
 beside each step, and after each of its blocks grabs the whole main window (pipeline browser,
 properties panel, render view: gui_window.py) as FAS_TUTORIAL_OUTPUT/fas_tutorial_<step>.png,
-which scripts/make-figures.sh copies into the manual.  Checked after each step: the screenshot is
+which scripts/make-figures.sh copies into the manual.  FAS_TUTORIAL_UNSTEADY_DATA (CYLINDER_UNSTEADY_grid.pvd) adds the unsteady part.  Checked after each step: the screenshot is
 a picture (many colours, and not the previous step's), and the pipeline gives what the manual
 says the step gives.  The GUI has no exit status of its own for a script: this one ends the
 process with os._exit(0) when every check passed, os._exit(1) with the reason on stderr
@@ -38,6 +38,7 @@ try:
     run = {"__name__": "tutorial", "__file__": tutorial,
            "cylinder_file": os.environ["FAS_TUTORIAL_DATA"],
            "case_file": openfoam_case.write_case(os.path.join(output, "case")),
+           "unsteady_file": os.environ.get("FAS_TUTORIAL_UNSTEADY_DATA"),
            "texture_file": os.path.join(output, "flow_texture.png")}
     previous = [None]
     started = [time.time()]
@@ -96,6 +97,15 @@ try:
             return "%d blocks" % servermanager.Fetch(g["case"]).GetNumberOfBlocks()
         if name == "openfoam_surface":
             return check_aligned(g["foam_surface"], "OpenFOAM")
+        if name == "unsteady_open":
+            steps = g["series"].TimestepValues
+            expect(len(steps) == 34, "%d time steps" % len(steps))
+            return "%d time steps" % len(steps)
+        if name == "unsteady_surface":
+            last = g["series"].TimestepValues[-1]
+            expect(g["scene"].AnimationTime == last, "the scene is at %g, not %g" % (g["scene"].AnimationTime, last))
+            expect(field(g["followed"], "time") == last, "the surface is of time %g" % field(g["followed"], "time"))
+            return check_aligned(g["followed"], "followed to the last step")
         raise AssertionError("no check for step " + name)
 
     def step(name):
@@ -117,7 +127,7 @@ try:
     with open(tutorial) as f:
         exec(compile(f.read(), tutorial, "exec"), run)
     expected = ["open", "apply", "drag", "play", "grow", "seed", "stream", "texture",
-                "openfoam_open", "openfoam_surface", "openfoam_stream"]
+                "openfoam_open", "openfoam_surface", "openfoam_stream", "unsteady_open", "unsteady_surface"]
     missing = [n for n in expected if not os.path.exists(os.path.join(output, "fas_tutorial_%s.png" % n))]
     expect(not missing, "steps without a screenshot: %s" % missing)
     say("tutorial: all %d steps checked" % len(expected))
