@@ -127,3 +127,34 @@ if out.GetNumberOfCells() == 0 or not worst <= 1e-3:
     raise AssertionError("stream surface at t = 0.5: %d faces, a vertex %g off its seed's cylinder" % (
         out.GetNumberOfCells(), worst))
 print("stream surface at t = 0.5: radii kept within %.2g on %d vertices" % (worst, out.GetNumberOfPoints()))
+
+# 5. Path surfaces: the seed line released at t0 = 0.25 and integrated up to the view's time;
+# every vertex is where the exact path line of its seed point is after its time t (the swirl's
+# path lines: x = A cos s + B sin s + 0.2 s, y = A sin s - B cos s - 0.2, z = z0 + 0.3 (s - t0)).
+def path_line_point(seed, t0, tau):
+    X, Y = seed[0] - 0.2 * t0, seed[1] + 0.2
+    A, B = X * math.cos(t0) + Y * math.sin(t0), X * math.sin(t0) - Y * math.cos(t0)
+    s = t0 + tau
+    return (A * math.cos(s) + B * math.sin(s) + 0.2 * s, A * math.sin(s) - B * math.cos(s) - 0.2, seed[2] + 0.3 * tau)
+
+
+path = StreamSurfaceFromCurve(Input=data, Seeds=line)
+path.Velocity = ["POINTS", "velocity"]
+path.SurfaceType = "Path Surface"
+path.StartTime = 0.25
+out = t.fetch(path, 0.25)
+if out.GetNumberOfCells() != 0:
+    raise AssertionError("a path surface at its start time has %d faces" % out.GetNumberOfCells())
+for view_time, duration in [(0.6, 0.35), (1.0, 0.75)]:
+    out = t.fetch(path, view_time)
+    if out.GetNumberOfCells() == 0 or t.field_value(out, "start_time") != 0.25:
+        raise AssertionError("path surface at %g: %d faces" % (view_time, out.GetNumberOfCells()))
+    u, tau = out.GetPointData().GetArray("u"), out.GetPointData().GetArray("t")
+    worst, longest = 0.0, 0.0
+    for i in range(out.GetNumberOfPoints()):
+        exact = path_line_point((0.4 + u.GetValue(i), 0.0, 0.0), 0.25, tau.GetValue(i))
+        worst = max(worst, math.dist(out.GetPoint(i), exact))
+        longest = max(longest, tau.GetValue(i))
+    if not worst <= 1e-5 or abs(longest - duration) > 1e-9:
+        raise AssertionError("path surface at %g: a vertex %g off its path line, t up to %g" % (view_time, worst, longest))
+    print("path surface at %g: %d vertices on their path lines within %.2g" % (view_time, out.GetNumberOfPoints(), worst))

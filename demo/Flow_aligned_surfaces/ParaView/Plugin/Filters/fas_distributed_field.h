@@ -185,7 +185,7 @@ public:
     State& s = *m_state;
     if (!distributed())
       return;
-    std::vector<Sample> samples = exchange(points);
+    std::vector<Sample> samples = exchange(points, s.time);
     s.samples.clear();
     s.samples.reserve(points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -220,7 +220,7 @@ public:
 private:
   // Rank 0: the samples at `points`, from every rank (collective: the other ranks are in
   // `serve()`).  Throws std::runtime_error when a rank failed to sample its piece.
-  std::vector<Sample> exchange(const std::vector<Point>& points) const
+  std::vector<Sample> exchange(const std::vector<Point>& points, double time) const
   {
     State& s = *m_state;
     const int ranks = s.controller->GetNumberOfProcesses();
@@ -228,7 +228,7 @@ private:
     s.controller->Broadcast(header, 2, 0);
     // The time, then the points.
     std::vector<double> coordinates(1 + 3 * points.size());
-    coordinates[0] = s.time;
+    coordinates[0] = time;
     for (std::size_t i = 0; i < points.size(); ++i)
       for (int d = 0; d < 3; ++d)
         coordinates[1 + 3 * i + std::size_t(d)] = points[i][d];
@@ -308,7 +308,21 @@ public:
       return found->second;
     if (std::this_thread::get_id() != s.owner)
       throw std::logic_error("the field was asked in a parallel loop for a point that was not probed from the ranks");
-    return exchange({ p }).front();
+    return exchange({ p }, s.time).front();
+  }
+
+  /// The velocity at `p` at time `t` (within the times of the steps of the update), for an
+  /// algorithm that samples the flow at times of its own (a path surface): the input's own field
+  /// on one process; on rank 0 of several, a sample exchanged for `p` and `t` alone (the
+  /// thread that called `update()` only).
+  Sample at(const Point& p, double t) const
+  {
+    State& s = *m_state;
+    if (!distributed())
+      return s.local ? s.local->unsteady_field()(p, t) : Sample();
+    if (std::this_thread::get_id() != s.owner)
+      throw std::logic_error("the field was asked for a time in a parallel loop");
+    return exchange({ p }, t).front();
   }
 
   /// Ranks whose piece supplied at least one sample in the last exchange.
@@ -645,19 +659,37 @@ inline void request_steps_around_requested_time(Temporal_flow_input& steps, vtkI
   steps.request_next(inputVector[0]->GetInformationObject(0), steps.steps_around(t));
 }
 
-/// RequestData of a filter that samples the flow at the requested time (every rank, collective
-/// when distributed): none while the pipeline is still bringing steps (the filter returns and is
-/// run again); then `field.update()` with the steps around the requested time, at that time.
-inline std::optional<Distributed_input> update_at_requested_time(Temporal_flow_input& steps,
+/// The view of a `Distributed_velocity_field` as an unsteady field (`UnsteadyFlowField_3`):
+/// `field.at(p, t)`.
+struct Unsteady_view {
+  const Distributed_velocity_field& field;
+  Distributed_velocity_field::Sample operator()(const Point& p, double t) const { return field.at(p, t); }
+};
+
+/// RequestData of a filter that samples the flow (every rank, collective when distributed): none
+/// while the pipeline is still bringing the steps `needed` (the filter returns and is run again);
+/// then `field.update()` with these steps, at the requested time.
+inline std::optional<Distributed_input> update_with_steps(Temporal_flow_input& steps,
   Distributed_velocity_field& field, vtkInformation* request, vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector, const Velocity_selection& selection)
+  vtkInformationVector* outputVector, const Velocity_selection& selection, const std::vector<std::size_t>& needed)
 {
   if (!steps.collect(request, inputVector[0]->GetInformationObject(0)))
     return std::nullopt;
   if (!steps.temporal())
     return field.update(steps.steps({}), 0., selection);
-  const double t = steps.requested_time(outputVector->GetInformationObject(0));
-  return field.update(steps.steps(steps.steps_around(t)), t, selection);
+  return field.update(steps.steps(needed), steps.requested_time(outputVector->GetInformationObject(0)), selection);
+}
+
+/// The same with the steps around the requested time (a filter that samples the flow at that
+/// time only).
+inline std::optional<Distributed_input> update_at_requested_time(Temporal_flow_input& steps,
+  Distributed_velocity_field& field, vtkInformation* request, vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector, const Velocity_selection& selection)
+{
+  std::vector<std::size_t> needed;
+  if (steps.temporal())
+    needed = steps.steps_around(steps.requested_time(outputVector->GetInformationObject(0)));
+  return update_with_steps(steps, field, request, inputVector, outputVector, selection, needed);
 }
 
 } // namespace fas_paraview

@@ -87,6 +87,17 @@ public:
     return { i, i + 1 };
   }
 
+  /// The indices of the steps from the last one at or before `from` to the first one at or
+  /// after `to` (`from` <= `to`): the steps that the flow over [from, to] is interpolated from.
+  std::vector<std::size_t> steps_between(double from, double to) const
+  {
+    std::vector<std::size_t> steps;
+    const std::size_t last = steps_around(to).back();
+    for (std::size_t i = step_at_or_before(from); i <= last; ++i)
+      steps.push_back(i);
+    return steps;
+  }
+
   /// RequestUpdateExtent: `needed` are the indices of the steps the update needs (nothing for a
   /// steady input); asks the input for the next one not held yet.  The first pass of an update
   /// (or a pass whose `needed` changed) starts the passes anew.

@@ -10,6 +10,8 @@
 #include <vtkInformationVector.h>
 #include <vtkMath.h>
 #include <vtkObjectFactory.h>
+#include <vtkIdTypeArray.h>
+#include <vtkPointData.h>
 #include <vtkStringArray.h>
 
 #include <algorithm>
@@ -68,12 +70,188 @@ double time_across_the_data(const Field& field, const std::vector<Polyline>& cur
   return sampled > 0 && speed > 0 ? extent / (speed / double(sampled)) : 0.;
 }
 
+
+// The limits of the surfaces: the properties, or the defaults that depend on the data.
+struct Surface_limits {
+  double max_time = 0, max_length = 0, time_line_step = 0;
+};
+
+// The surfaces of the seed curves in one mesh, with their seed parameter u and time-line
+// parameter t per vertex, and what the integration of each curve reported.
+struct Surfaces {
+  Mesh tm;
+  Mesh::Property_map<Mesh::Vertex_index, double> u, t;
+  std::vector<std::size_t> curve_of_vertex;
+  std::vector<FAS::Stream_surface_report> reports;
+  bool cancelled = false;
+  double start_time = 0; // of path surfaces
+
+  Surfaces()
+    : u(tm.add_property_map<Mesh::Vertex_index, double>("v:u", 0.).first)
+    , t(tm.add_property_map<Mesh::Vertex_index, double>("v:t", 0.).first)
+  {
+  }
+  Surfaces(const Surfaces&) = delete;
+  Surfaces& operator=(const Surfaces&) = delete;
+};
+
+// The surfaces of `curves` in `field` with the properties of `f` (stream surfaces of a
+// FlowField_3; path surfaces of an UnsteadyFlowField_3, from the start time that `with_start`
+// adds to the named parameters).  Progress per time line of each seed curve; Abort
+// (AbortExecute) stops after the time line in progress, keeping the surfaces integrated so far.
+template <class Field, class WithStart>
+void integrate_curves(vtkStreamSurfaceFromCurve* f, const Field& field, const std::vector<Polyline>& curves,
+                      const Surface_limits& limits, const WithStart& with_start, Surfaces& out)
+{
+  const bool limited = f->GetArcLengthTimeLines() ? limits.max_length > 0 : limits.max_time > 0;
+  const std::size_t max_time_lines = f->GetMaxNumberOfTimeLines() > 0
+    ? std::size_t(f->GetMaxNumberOfTimeLines())
+    : (limited ? std::numeric_limits<std::size_t>::max() : std::size_t(100));
+  const int d = f->GetIntegrationDirection();
+  const FAS::Integration_direction direction = d == vtkStreamSurfaceFromCurve::BACKWARD
+    ? FAS::Integration_direction::BACKWARD
+    : (d == vtkStreamSurfaceFromCurve::BOTH ? FAS::Integration_direction::BOTH : FAS::Integration_direction::FORWARD);
+  std::size_t current_curve = 0;
+  const auto progress = [&](double fraction) {
+    f->UpdateProgress((double(current_curve) + fraction) / double(curves.size()));
+    return !f->GetAbortExecute();
+  };
+  const auto base = with_start(FAS::parameters::integration_direction(direction,
+    FAS::parameters::arc_length_time_lines(f->GetArcLengthTimeLines(),
+      FAS::parameters::max_number_of_time_lines(max_time_lines,
+        FAS::parameters::max_number_of_vertices(std::size_t(f->GetMaxNumberOfVertices()),
+          FAS::parameters::tear_angle(f->GetTearAngle(),
+            FAS::parameters::relative_tolerance(f->GetRelativeTolerance(),
+              FAS::parameters::absolute_tolerance(f->GetAbsoluteTolerance(),
+                FAS::parameters::max_number_of_steps(std::size_t(f->GetMaxNumberOfSteps()),
+                  FAS::parameters::seed_parameter_map(
+                    out.u, FAS::parameters::integration_time_map(out.t,
+                      CGAL::parameters::callback(std::function<bool(double)>(progress)))))))))))));
+  for (std::size_t c = 0; c < curves.size() && !out.cancelled; ++c)
+  {
+    current_curve = c;
+    // The library tells a given parameter from an absent one at compile time (an absent front
+    // spacing, time-line step or limit takes a default that depends on the seed or on the other
+    // parameters), so the optional ones are passed only when set.
+    const auto integrate = [&](const auto& np) {
+      out.reports.push_back(FAS::integrate_stream_surface(field, curves[c], out.tm, np));
+    };
+    const auto with_max_length = [&](const auto& np) {
+      if (limits.max_length > 0)
+        integrate(FAS::parameters::max_length(limits.max_length, np));
+      else
+        integrate(np);
+    };
+    const auto with_max_time = [&](const auto& np) {
+      if (limits.max_time > 0)
+        with_max_length(FAS::parameters::max_time(limits.max_time, np));
+      else
+        with_max_length(np);
+    };
+    const auto with_step = [&](const auto& np) {
+      if (limits.time_line_step > 0)
+        with_max_time(FAS::parameters::time_line_step(limits.time_line_step, np));
+      else
+        with_max_time(np);
+    };
+    try
+    {
+      if (f->GetFrontSpacing() > 0)
+        with_step(FAS::parameters::front_spacing(f->GetFrontSpacing(), base));
+      else
+        with_step(base);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      throw std::invalid_argument("seed curve " + std::to_string(c) + " of " + std::to_string(curves.size()) +
+                                  ": " + e.what());
+    }
+    out.curve_of_vertex.resize(out.tm.number_of_vertices(), c);
+    out.cancelled = out.reports.back().stopped;
+  }
+}
+
+// The surfaces as polygonal data: point data u, t, IntegrationTime, seed_curve and SeedIds; per
+// seed curve the report's values as field data.  A seed curve without a surface is said in a
+// warning of `f`; none with a surface (while some were integrated) is an error.
+vtkSmartPointer<vtkPolyData> surfaces_output(vtkStreamSurfaceFromCurve* f, const Surfaces& s,
+                                             const Distributed_input& pieces)
+{
+  std::string empty;
+  for (std::size_t c = 0; c < s.reports.size(); ++c)
+    if (surface_is_empty(s.reports[c]))
+      empty += (empty.empty() ? "" : "; ") + std::string("curve ") + std::to_string(c) + ": " +
+        FAS::to_string(s.reports[c].termination) + " (" + s.reports[c].message + ")";
+  if (s.tm.number_of_faces() == 0 && !s.reports.empty())
+    throw std::invalid_argument("no seed curve gives a surface (" + empty +
+      "); the seed curves must lie in the data set (bounds " + bounds_text(pieces.bounds.data()) +
+      ") where the flow is not zero");
+  if (!empty.empty())
+    vtkWarningWithObjectMacro(f, << "Stream Surface From Curve: some seed curves give no surface: " << empty);
+
+  vtkSmartPointer<vtkPolyData> result = to_polydata(s.tm);
+  const vtkIdType n = vtkIdType(s.tm.number_of_vertices());
+  auto u = make_array("u", 1, n);
+  auto t = make_array("t", 1, n);
+  auto integration_time = make_array("IntegrationTime", 1, n);
+  auto seed_curve = make_array("seed_curve", 1, n);
+  auto seed_ids = vtkSmartPointer<vtkIdTypeArray>::New();
+  seed_ids->SetName("SeedIds");
+  seed_ids->SetNumberOfTuples(n);
+  for (Mesh::Vertex_index v : s.tm.vertices())
+  {
+    const vtkIdType i = vtkIdType(v.idx());
+    u->SetValue(i, s.u[v]);
+    t->SetValue(i, s.t[v]);
+    integration_time->SetValue(i, s.t[v]);
+    seed_curve->SetValue(i, double(s.curve_of_vertex[std::size_t(v.idx())]));
+    seed_ids->SetValue(i, vtkIdType(s.curve_of_vertex[std::size_t(v.idx())]));
+  }
+  for (vtkDataArray* a : { static_cast<vtkDataArray*>(u), static_cast<vtkDataArray*>(t),
+                           static_cast<vtkDataArray*>(integration_time), static_cast<vtkDataArray*>(seed_curve),
+                           static_cast<vtkDataArray*>(seed_ids) })
+    result->GetPointData()->AddArray(a);
+  result->GetPointData()->SetActiveScalars("u");
+  if (s.reports.empty())
+    return result;
+
+  const auto per_curve = [&](const char* name, auto value) {
+    std::vector<decltype(value(s.reports.front()))> values;
+    for (const FAS::Stream_surface_report& r : s.reports)
+      values.push_back(value(r));
+    add_per_curve(result, name, values);
+  };
+  using R = FAS::Stream_surface_report;
+  per_curve("termination", [](const R& r) { return std::string(FAS::to_string(r.termination)); });
+  per_curve("termination_message", [](const R& r) { return r.message; });
+  if (f->GetIntegrationDirection() == vtkStreamSurfaceFromCurve::BOTH)
+  {
+    per_curve("backward_termination",
+      [](const R& r) { return std::string(r.backward ? FAS::to_string(r.backward->termination) : ""); });
+    per_curve("backward_termination_message", [](const R& r) { return r.backward ? r.backward->message : std::string(); });
+  }
+  per_curve("number_of_time_lines", [](const R& r) { return double(r.number_of_time_lines); });
+  per_curve("final_parameter", [](const R& r) { return r.final_parameter; });
+  per_curve("seed_length", [](const R& r) { return r.seed_length; });
+  per_curve("front_spacing", [](const R& r) { return r.front_spacing; });
+  per_curve("time_line_step", [](const R& r) { return r.time_line_step; });
+  per_curve("number_of_tears", [](const R& r) { return double(r.number_of_tears); });
+  per_curve("number_of_lost_particles", [](const R& r) { return double(r.number_of_lost_particles); });
+  return result;
+}
+
 } // namespace
 
 struct vtkStreamSurfaceFromCurve::Internals {
   Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
   Temporal_flow_input steps;        // the time steps of input 0
   Kept_outputs kept; // the outputs of the last successful run
+
+  std::vector<std::size_t> needed_steps(vtkStreamSurfaceFromCurve* f, vtkInformationVector* outputVector) const;
+  void integrate_stream_surfaces(vtkStreamSurfaceFromCurve* f, const std::vector<Polyline>& curves,
+                                 const Distributed_input& pieces, Surfaces& surfaces) const;
+  void integrate_path_surfaces(vtkStreamSurfaceFromCurve* f, const std::vector<Polyline>& curves,
+                               vtkInformationVector* outputVector, Surfaces& surfaces) const;
 };
 
 vtkStreamSurfaceFromCurve::vtkStreamSurfaceFromCurve()
@@ -89,6 +267,8 @@ vtkStreamSurfaceFromCurve::vtkStreamSurfaceFromCurve()
   , RelativeTolerance(1e-10)
   , AbsoluteTolerance(1e-12)
   , MaxNumberOfSteps(100000)
+  , SurfaceType(STREAM_SURFACE)
+  , StartTime(0)
   , Internal(new Internals)
 {
   this->SetNumberOfInputPorts(2);
@@ -117,17 +297,33 @@ int vtkStreamSurfaceFromCurve::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  request_steps_around_requested_time(this->Internal->steps, inputVector, outputVector);
+  Internals& in = *this->Internal;
+  if (in.steps.temporal())
+    in.steps.request_next(inputVector[0]->GetInformationObject(0), in.needed_steps(this, outputVector));
   return 1;
+}
+
+std::vector<std::size_t> vtkStreamSurfaceFromCurve::Internals::needed_steps(
+  vtkStreamSurfaceFromCurve* f, vtkInformationVector* outputVector) const
+{
+  // None for a steady input; a stream surface: the flow at the view's time; a path surface:
+  // from Start Time to it.
+  if (!steps.temporal())
+    return {};
+  const double t = steps.requested_time(outputVector->GetInformationObject(0));
+  const double start = std::clamp(f->StartTime, steps.times().front(), steps.times().back());
+  if (f->SurfaceType == PATH_SURFACE && t > start)
+    return steps.steps_between(start, t);
+  return steps.steps_around(t);
 }
 
 int vtkStreamSurfaceFromCurve::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   Internals& in = *this->Internal;
-  // Every rank: the flow at the requested time (a temporal input: once its steps have come).
-  const std::optional<Distributed_input> update =
-    update_at_requested_time(in.steps, in.field, request, inputVector, outputVector, selected_velocity(this));
+  // Every rank: the flow of the steps the surface needs (a temporal input: once they have come).
+  const std::optional<Distributed_input> update = update_with_steps(in.steps, in.field, request, inputVector,
+    outputVector, selected_velocity(this), in.needed_steps(this, outputVector));
   if (!update)
     return 1; // the pipeline runs this filter again with the next time step
   const Distributed_input& pieces = *update;
@@ -146,168 +342,26 @@ int vtkStreamSurfaceFromCurve::RequestData(
     Finish_probes finish_probes(in.field);
     this->CheckProperties();
     pieces.require_samples();
-    const Distributed_velocity_field& field = in.field;
     const std::vector<Polyline> curves = polylines_from_polydata(seeds);
     if (curves.empty())
       throw std::invalid_argument(
         "the seed input (port 1) has no line or polyline of two points or more; give it seed "
         "curves (Parametrize And Seed's, a Line source, a contour)");
-
-    // No length given: the surface reaches as far as the data's largest extent (a time at the
-    // seeds' mean speed, or that arc length), in 200 time lines unless a step is given.
-    double max_time = this->MaxTime, max_length = this->MaxLength, time_line_step = this->TimeLineStep;
-    if (max_time <= 0 && max_length <= 0)
-    {
-      const double* b = pieces.bounds.data();
-      if (this->ArcLengthTimeLines)
-        max_length = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
-      else
-      {
-        field.probe_points_of([&] { time_across_the_data(field, curves, b); });
-        max_time = time_across_the_data(field, curves, b);
-      }
-      if (time_line_step <= 0)
-        time_line_step = (this->ArcLengthTimeLines ? max_length : max_time) / 200;
-    }
-    const bool limited = this->ArcLengthTimeLines ? max_length > 0 : max_time > 0;
-    const std::size_t max_time_lines = this->MaxNumberOfTimeLines > 0
-      ? std::size_t(this->MaxNumberOfTimeLines)
-      : (limited ? std::numeric_limits<std::size_t>::max() : std::size_t(100));
-    const FAS::Integration_direction direction = this->IntegrationDirection == BACKWARD
-      ? FAS::Integration_direction::BACKWARD
-      : (this->IntegrationDirection == BOTH ? FAS::Integration_direction::BOTH
-                                            : FAS::Integration_direction::FORWARD);
-
-    // Progress per time line of each seed curve; Abort (AbortExecute) stops after the time line
-    // in progress, keeping the surfaces integrated so far.
-    std::size_t current_curve = 0;
-    const auto progress = [&](double fraction) {
-      this->UpdateProgress((double(current_curve) + fraction) / double(curves.size()));
-      return !this->GetAbortExecute();
-    };
-    Mesh tm;
-    auto u_map = tm.add_property_map<Mesh::Vertex_index, double>("v:u", 0.).first;
-    auto t_map = tm.add_property_map<Mesh::Vertex_index, double>("v:t", 0.).first;
-    std::vector<std::size_t> curve_of_vertex;
-    std::vector<FAS::Stream_surface_report> reports;
-    const auto base = FAS::parameters::integration_direction(direction,
-      FAS::parameters::arc_length_time_lines(this->ArcLengthTimeLines,
-        FAS::parameters::max_number_of_time_lines(max_time_lines,
-          FAS::parameters::max_number_of_vertices(std::size_t(this->MaxNumberOfVertices),
-            FAS::parameters::tear_angle(this->TearAngle,
-              FAS::parameters::relative_tolerance(this->RelativeTolerance,
-                FAS::parameters::absolute_tolerance(this->AbsoluteTolerance,
-                  FAS::parameters::max_number_of_steps(std::size_t(this->MaxNumberOfSteps),
-                    FAS::parameters::seed_parameter_map(
-                      u_map, FAS::parameters::integration_time_map(t_map,
-                        CGAL::parameters::callback(std::function<bool(double)>(progress))))))))))));
-
-    bool cancelled = false;
-    for (std::size_t c = 0; c < curves.size() && !cancelled; ++c)
-    {
-      current_curve = c;
-      // The library tells a given parameter from an absent one at compile time (an absent
-      // front spacing, time-line step or limit takes a default that depends on the seed or on
-      // the other parameters), so the optional ones are passed only when set.
-      const auto integrate = [&](const auto& np) {
-        reports.push_back(FAS::integrate_stream_surface(field, curves[c], tm, np));
-      };
-      const auto with_max_length = [&](const auto& np) {
-        if (max_length > 0)
-          integrate(FAS::parameters::max_length(max_length, np));
-        else
-          integrate(np);
-      };
-      const auto with_max_time = [&](const auto& np) {
-        if (max_time > 0)
-          with_max_length(FAS::parameters::max_time(max_time, np));
-        else
-          with_max_length(np);
-      };
-      const auto with_step = [&](const auto& np) {
-        if (time_line_step > 0)
-          with_max_time(FAS::parameters::time_line_step(time_line_step, np));
-        else
-          with_max_time(np);
-      };
-      try
-      {
-        if (this->FrontSpacing > 0)
-          with_step(FAS::parameters::front_spacing(this->FrontSpacing, base));
-        else
-          with_step(base);
-      }
-      catch (const std::invalid_argument& e)
-      {
-        throw std::invalid_argument("seed curve " + std::to_string(c) + " of " +
-          std::to_string(curves.size()) + ": " + e.what());
-      }
-      curve_of_vertex.resize(tm.number_of_vertices(), c);
-      cancelled = reports.back().stopped;
-    }
-    if (cancelled)
+    Surfaces surfaces;
+    if (this->SurfaceType == PATH_SURFACE)
+      in.integrate_path_surfaces(this, curves, outputVector, surfaces);
+    else
+      in.integrate_stream_surfaces(this, curves, pieces, surfaces);
+    if (surfaces.cancelled)
     {
       abort_handled(this);
-      vtkWarningMacro(<< "Stream Surface From Curve: cancelled during seed curve " << reports.size() - 1 << " of "
+      vtkWarningMacro(<< "Stream Surface From Curve: cancelled during seed curve " << surfaces.reports.size() - 1 << " of "
                       << curves.size() << "; the output holds what was integrated until then");
     }
-
-    std::string empty;
-    for (std::size_t c = 0; c < reports.size(); ++c)
-      if (surface_is_empty(reports[c]))
-        empty += (empty.empty() ? "" : "; ") + std::string("curve ") + std::to_string(c) + ": " +
-          FAS::to_string(reports[c].termination) + " (" + reports[c].message + ")";
-    if (tm.number_of_faces() == 0)
-      throw std::invalid_argument("no seed curve gives a surface (" + empty +
-        "); the seed curves must lie in the data set (bounds " + bounds_text(pieces.bounds.data()) +
-        ") where the flow is not zero");
-    if (!empty.empty())
-      vtkWarningMacro(<< "Stream Surface From Curve: some seed curves give no surface: " << empty);
-
-    vtkSmartPointer<vtkPolyData> result = to_polydata(tm);
-    const vtkIdType n = vtkIdType(tm.number_of_vertices());
-    auto u = make_array("u", 1, n);
-    auto t = make_array("t", 1, n);
-    auto integration_time = make_array("IntegrationTime", 1, n);
-    auto seed_curve = make_array("seed_curve", 1, n);
-    for (Mesh::Vertex_index v : tm.vertices())
-    {
-      const vtkIdType i = vtkIdType(v.idx());
-      u->SetValue(i, u_map[v]);
-      t->SetValue(i, t_map[v]);
-      integration_time->SetValue(i, t_map[v]);
-      seed_curve->SetValue(i, double(curve_of_vertex[std::size_t(v.idx())]));
-    }
-    for (vtkDoubleArray* a : { u.Get(), t.Get(), integration_time.Get(), seed_curve.Get() })
-      result->GetPointData()->AddArray(a);
-    result->GetPointData()->SetActiveScalars("u");
+    vtkSmartPointer<vtkPolyData> result = surfaces_output(this, surfaces, pieces);
     add_distribution_values(result, pieces, in.field);
-
-    const auto per_curve = [&](const char* name, auto value) {
-      std::vector<decltype(value(reports.front()))> values;
-      for (const FAS::Stream_surface_report& r : reports)
-        values.push_back(value(r));
-      add_per_curve(result, name, values);
-    };
-    using R = FAS::Stream_surface_report;
-    per_curve("termination", [](const R& r) { return std::string(FAS::to_string(r.termination)); });
-    per_curve("termination_message", [](const R& r) { return r.message; });
-    if (direction == FAS::Integration_direction::BOTH)
-    {
-      per_curve("backward_termination", [](const R& r) {
-        return std::string(r.backward ? FAS::to_string(r.backward->termination) : "");
-      });
-      per_curve("backward_termination_message",
-        [](const R& r) { return r.backward ? r.backward->message : std::string(); });
-    }
-    per_curve("number_of_time_lines", [](const R& r) { return double(r.number_of_time_lines); });
-    per_curve("final_parameter", [](const R& r) { return r.final_parameter; });
-    per_curve("seed_length", [](const R& r) { return r.seed_length; });
-    per_curve("front_spacing", [](const R& r) { return r.front_spacing; });
-    per_curve("time_line_step", [](const R& r) { return r.time_line_step; });
-    per_curve("number_of_tears", [](const R& r) { return double(r.number_of_tears); });
-    per_curve("number_of_lost_particles", [](const R& r) { return double(r.number_of_lost_particles); });
-
+    if (this->SurfaceType == PATH_SURFACE)
+      add_field_value(result, "start_time", surfaces.start_time);
     output->ShallowCopy(result);
     in.kept.keep(outputVector);
     return 1;
@@ -318,6 +372,53 @@ int vtkStreamSurfaceFromCurve::RequestData(
     vtkErrorMacro(<< "Stream Surface From Curve: " << e.what() << (kept ? "; the previous output is kept" : ""));
     return 1;
   }
+}
+
+void vtkStreamSurfaceFromCurve::Internals::integrate_stream_surfaces(vtkStreamSurfaceFromCurve* f,
+  const std::vector<Polyline>& curves, const Distributed_input& pieces, Surfaces& surfaces) const
+{
+  // No length given: the surface reaches as far as the data's largest extent (a time at the
+  // seeds' mean speed, or that arc length), in 200 time lines unless a step is given.
+  Surface_limits limits{ f->MaxTime, f->MaxLength, f->TimeLineStep };
+  if (limits.max_time <= 0 && limits.max_length <= 0)
+  {
+    const double* b = pieces.bounds.data();
+    if (f->ArcLengthTimeLines)
+      limits.max_length = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
+    else
+    {
+      field.probe_points_of([&] { time_across_the_data(field, curves, b); });
+      limits.max_time = time_across_the_data(field, curves, b);
+    }
+    if (limits.time_line_step <= 0)
+      limits.time_line_step = (f->ArcLengthTimeLines ? limits.max_length : limits.max_time) / 200;
+  }
+  const auto no_start_time = [](const auto& np) { return np; };
+  integrate_curves(f, field, curves, limits, no_start_time, surfaces);
+}
+
+void vtkStreamSurfaceFromCurve::Internals::integrate_path_surfaces(vtkStreamSurfaceFromCurve* f,
+  const std::vector<Polyline>& curves, vtkInformationVector* outputVector, Surfaces& surfaces) const
+{
+  // Released at Start Time, integrated forward in time up to the view's time (at most Max Time).
+  if (!steps.temporal())
+    throw std::invalid_argument("Surface Type is Path Surface, but the Input has no time steps (a steady flow: "
+                                "choose Stream Surface)");
+  require_property(f->IntegrationDirection == FORWARD, "Integration Direction", f->IntegrationDirection,
+                   "Forward for a path surface (released at Start Time, integrated to the view's time)");
+  require_property(!f->ArcLengthTimeLines, "Arc Length Time Lines", 1., "off for a path surface");
+  const double start = std::clamp(f->StartTime, steps.times().front(), steps.times().back());
+  const double t = steps.requested_time(outputVector->GetInformationObject(0));
+  surfaces.start_time = start;
+  Surface_limits limits{ t - start, 0., f->TimeLineStep };
+  if (f->MaxTime > 0)
+    limits.max_time = std::min(limits.max_time, f->MaxTime);
+  if (limits.max_time <= 0)
+    return; // the view is at Start Time or before it: nothing integrated yet
+  if (limits.time_line_step <= 0)
+    limits.time_line_step = limits.max_time / 200;
+  const auto from_start = [start](const auto& np) { return FAS::parameters::start_time(start, np); };
+  integrate_curves(f, Unsteady_view{ field }, curves, limits, from_start, surfaces);
 }
 
 void vtkStreamSurfaceFromCurve::CheckProperties()
@@ -351,4 +452,6 @@ void vtkStreamSurfaceFromCurve::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RelativeTolerance: " << this->RelativeTolerance << "\n";
   os << indent << "AbsoluteTolerance: " << this->AbsoluteTolerance << "\n";
   os << indent << "MaxNumberOfSteps: " << this->MaxNumberOfSteps << "\n";
+  os << indent << "SurfaceType: " << this->SurfaceType << "\n";
+  os << indent << "StartTime: " << this->StartTime << "\n";
 }

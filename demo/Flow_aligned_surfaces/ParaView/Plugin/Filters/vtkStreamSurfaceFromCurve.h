@@ -13,7 +13,7 @@
 /// are the seed curves.  Output: the stream surfaces as triangles, one per seed curve, with
 /// point data `u` (the seed parameter: arc length along the seed curve), `t` and
 /// `IntegrationTime` (the time-line parameter tau: integration time, or arc length with
-/// ArcLengthTimeLines; negative on the backward half of a BOTH surface), `seed_curve` (the
+/// ArcLengthTimeLines; negative on the backward half of a BOTH surface), `seed_curve` and `SeedIds` (the
 /// index of the seed curve); field data with one tuple per seed curve: `termination` and
 /// `termination_message` (why the integration stopped; with BOTH, of the forward half, and
 /// `backward_termination`, `backward_termination_message` of the backward half),
@@ -80,6 +80,22 @@ public:
   vtkSetMacro(MaxNumberOfSteps, int);
   vtkGetMacro(MaxNumberOfSteps, int);
 
+  enum SurfaceTypes
+  {
+    STREAM_SURFACE = 0,
+    PATH_SURFACE = 1
+  };
+  /// STREAM_SURFACE: in the flow at the view's time (a temporal input: interpolated between the
+  /// two steps around it).  PATH_SURFACE (a temporal input): the seed curve released at
+  /// StartTime and integrated forward through the input's time steps up to the view's time (at
+  /// most MaxTime after StartTime), so that playing the time grows the surface.
+  vtkSetClampMacro(SurfaceType, int, STREAM_SURFACE, PATH_SURFACE);
+  vtkGetMacro(SurfaceType, int);
+  /// The release time of a path surface, within the input's time range (a time before the
+  /// first step releases at the first step).
+  vtkSetMacro(StartTime, double);
+  vtkGetMacro(StartTime, double);
+
 protected:
   vtkStreamSurfaceFromCurve();
   ~vtkStreamSurfaceFromCurve() override;
@@ -101,6 +117,8 @@ protected:
   double RelativeTolerance;
   double AbsoluteTolerance;
   int MaxNumberOfSteps;
+  int SurfaceType;
+  double StartTime;
 
 private:
   // Every property in its range, or std::invalid_argument naming it as the panel does.
