@@ -114,6 +114,7 @@ line = Line(Point1=[0.4, 0.0, 0.0], Point2=[0.9, 0.0, 0.0], Resolution=10)
 stream = StreamSurfaceFromCurve(Input=data, Seeds=line)
 stream.Velocity = ["POINTS", "velocity"]
 stream.MaxTime = 2.0
+stream.TimeLineStep = 0.1  # 20 time lines: on 2 ranks every particle's sample is an exchange
 out = t.fetch(stream, 0.5)
 if list(stream.TimestepValues) != times:
     raise AssertionError("Stream Surface From Curve's time steps are %s" % list(stream.TimestepValues))
@@ -142,6 +143,7 @@ path = StreamSurfaceFromCurve(Input=data, Seeds=line)
 path.Velocity = ["POINTS", "velocity"]
 path.SurfaceType = "Path Surface"
 path.StartTime = 0.25
+path.TimeLineStep = 0.05
 out = t.fetch(path, 0.25)
 if out.GetNumberOfCells() != 0:
     raise AssertionError("a path surface at its start time has %d faces" % out.GetNumberOfCells())
