@@ -363,6 +363,22 @@ TEST(IntegrateStreamSurface, PathSurfaceInAFlowLinearInTime)
   }
 }
 
+TEST(IntegrateStreamSurface, PathSurfaceEndingWhereTheFieldEndsLosesNoParticle)
+{
+  // The same flow integrated to t = 2 exactly (max_time 1.5): the end of the surface, not an
+  // exit, so no particle is lost on the way, however long the integrator's steps would be.
+  const Vector_3 U0(1, 0, 0), U1(1, 2, 0);
+  const FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>> flow(
+      {0., 2.}, {FAS::Uniform_flow<K>(U0), FAS::Uniform_flow<K>(U1)});
+  const Polyline seed = {Point_3(0, 0, 0), Point_3(0, 0, 1)};
+  const Surface s(flow, seed,
+                  FAS::parameters::front_spacing(
+                      0.1, FAS::parameters::start_time(0.5, FAS::parameters::max_time(1.5))));
+  EXPECT_EQ(s.report.termination, FAS::Stream_surface_termination::MAX_INTEGRATION_TIME);
+  EXPECT_EQ(s.report.number_of_lost_particles, 0u);
+  EXPECT_EQ(s.report.final_parameter, 1.5);
+}
+
 TEST(IntegrateStreamSurface, BackwardIntegrationReversesTheFlow)
 {
   const Vector_3 U(1, 0, 0);

@@ -833,6 +833,10 @@ Settings read_stream_surface_settings(const FlowField& field, const Seed_curve& 
                     lines.direction == Integration_direction::BACKWARD ? -1 : 1,
                     lines.tolerances};
   settings.skip_thin_strips = default_step;
+  // No particle steps past the surface's end: a path surface that ends where its unsteady field
+  // ends (the last step of a time series) would otherwise lose the particles whose steps sample
+  // the field after it.
+  settings.tolerances.max_parameter = max_parameter;
   settings.callback = progress_callback(np);
   return settings;
 }

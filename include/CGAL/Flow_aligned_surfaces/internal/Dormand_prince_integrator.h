@@ -39,6 +39,9 @@ struct Integration_tolerances {
   double absolute = 1e-10; ///< absolute local error tolerance (a length)
   double initial_step = 0; ///< first trial step in τ; 0: automatic (Hairer's starting step)
   double max_step = std::numeric_limits<double>::infinity(); ///< largest step in τ
+  /// the τ no step goes beyond (the end of the integration): a step is shortened to end there,
+  /// so that no stage samples the field after it (an unsteady field may end there)
+  double max_parameter = std::numeric_limits<double>::infinity();
   double min_step = 1e-14;                                   ///< smallest step in τ before `STEP_UNDERFLOW`
   /// the distance (along the path) within which the exit point is located when the line
   /// leaves the domain; 0: `absolute + relative |x|` at the current point
@@ -120,7 +123,8 @@ public:
           return Step_result::ACCEPTED;
         }
       }
-      const double h = bisecting ? 0.5 * (inside + outside) : std::min(m_h, m_tol.max_step);
+      const double left = m_tol.max_parameter - m_tau;
+      const double h = bisecting ? 0.5 * (inside + outside) : std::min({m_h, m_tol.max_step, left});
       if (!bisecting && (h < m_tol.min_step || m_tau + h == m_tau))
         return Step_result::STEP_UNDERFLOW;
       Trial trial;
@@ -305,7 +309,7 @@ private:
     m_x_prev = m_x;
     m_tau_prev = m_tau;
     m_x = t.x;
-    m_tau += t.h;
+    m_tau = t.h == m_tol.max_parameter - m_tau ? m_tol.max_parameter : m_tau + t.h; // lands on the end exactly
     m_k1 = t.k[6];
     ++m_number_of_accepted;
   }
