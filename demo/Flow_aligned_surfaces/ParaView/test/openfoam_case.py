@@ -1,7 +1,8 @@
 """A small OpenFOAM case written without OpenFOAM, for the tests of data as ParaView gives it: an
 n x n x n hexahedral mesh of the unit cube (constant/polyMesh, ASCII), three boundary patches
-(inlet x = 0, outlet x = 1, walls), and the time directory 1 with the cell velocity U of a swirling
-channel flow v(x) = (1, -w (z - 1/2), w (y - 1/2)), given at the cell centres: its stream
+(inlet x = 0, outlet x = 1, walls), and the time directory 1 (or several, one swirl w each) with
+the cell velocity U of a swirling channel flow v(x) = (1, -w (z - 1/2), w (y - 1/2)), given at
+the cell centres: its stream
 surfaces are helicoids around the axis y = z = 1/2, and what a filter samples can be told apart
 between the cell values (constant per cell) and the point values ParaView's reader interpolates
 from them."""
@@ -35,8 +36,9 @@ def _vector(v):
     return "(%.17g %.17g %.17g)" % v
 
 
-def write_case(folder, n=12, swirl=2.0):
-    """Writes the case into `folder`; returns the path of its `case.foam` for OpenFOAMReader."""
+def write_case(folder, n=12, swirl=2.0, swirls=None):
+    """Writes the case into `folder` (the time directory 1 with `swirl`, or one time directory per
+    item {time: swirl} of `swirls`); returns the path of its `case.foam` for OpenFOAMReader."""
     def point(i, j, k):
         return i + (n + 1) * (j + (n + 1) * k)
 
@@ -90,13 +92,27 @@ def write_case(folder, n=12, swirl=2.0):
            ["%s\n{\n    type %s;\n    nFaces %d;\n    startFace %d;\n}" %
             (name, "wall" if name == "walls" else "patch", count, start) for name, start, count, _ in patches])
 
+    for time, w in sorted((swirls or {1: swirl}).items()):
+        _write_velocity(folder, str(time), n, cells, patches, w)
+    os.makedirs(os.path.join(folder, "system"), exist_ok=True)
+    with open(os.path.join(folder, "system", "controlDict"), "w") as f:
+        f.write(HEADER % ("dictionary", "system", "controlDict"))
+        f.write("application simpleFoam;\nstartFrom latestTime;\nstartTime 0;\nstopAt endTime;\nendTime 1;\n"
+                "deltaT 1;\nwriteControl timeStep;\nwriteInterval 1;\nwriteFormat ascii;\n")
+    case = os.path.join(folder, "case.foam")
+    open(case, "w").close()
+    return case
+
+
+def _write_velocity(folder, time_name, n, cells, patches, swirl):
+    """The time directory `time_name` with the cell velocity U of `swirl`."""
     def centre_velocity(i, j, k):
         return velocity((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n, swirl)
 
-    time = os.path.join(folder, "1")
+    time = os.path.join(folder, time_name)
     os.makedirs(time, exist_ok=True)
     with open(os.path.join(time, "U"), "w") as f:
-        f.write(HEADER % ("volVectorField", "1", "U"))
+        f.write(HEADER % ("volVectorField", time_name, "U"))
         f.write("dimensions [0 1 -1 0 0 0 0];\n\ninternalField nonuniform List<vector>\n%d\n(\n" % len(cells))
         f.write("\n".join(_vector(centre_velocity(*c)) for c in cells))
         f.write("\n);\n\nboundaryField\n{\n")
@@ -106,11 +122,3 @@ def write_case(folder, n=12, swirl=2.0):
             f.write("\n".join(_vector(centre_velocity(*c)) for c in owners))
             f.write("\n);\n    }\n")
         f.write("}\n")
-    os.makedirs(os.path.join(folder, "system"), exist_ok=True)
-    with open(os.path.join(folder, "system", "controlDict"), "w") as f:
-        f.write(HEADER % ("dictionary", "system", "controlDict"))
-        f.write("application simpleFoam;\nstartFrom latestTime;\nstartTime 0;\nstopAt endTime;\nendTime 1;\n"
-                "deltaT 1;\nwriteControl timeStep;\nwriteInterval 1;\nwriteFormat ascii;\n")
-    case = os.path.join(folder, "case.foam")
-    open(case, "w").close()
-    return case
