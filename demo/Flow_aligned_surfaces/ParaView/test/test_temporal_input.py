@@ -160,3 +160,22 @@ for view_time, duration in [(0.6, 0.35), (1.0, 0.75)]:
     if not worst <= 1e-5 or abs(longest - duration) > 1e-9:
         raise AssertionError("path surface at %g: a vertex %g off its path line, t up to %g" % (view_time, worst, longest))
     print("path surface at %g: %d vertices on their path lines within %.2g" % (view_time, out.GetNumberOfPoints(), worst))
+
+# 6. Flow Texture on the path surface at t = 1: with Path Surface on it follows the path lines
+# (the flow at start_time + t of each point), so that its mask (the angle between the flow it
+# measures against and the gradient of r) is smaller than in the flow of the view's time alone.
+def mean_mask(path_surface_on):
+    texture = FlowTexture(Input=data, Surface=path)
+    texture.Velocity = ["POINTS", "velocity"]
+    texture.PathSurface = path_surface_on
+    texture.UpdatePipeline(1.0)
+    out = servermanager.Fetch(texture, idx=0)
+    mask = out.GetCellData().GetArray("texture_mask")
+    return sum(mask.GetValue(i) for i in range(mask.GetNumberOfTuples())) / mask.GetNumberOfTuples()
+
+
+along_paths, at_one_time = mean_mask(1), mean_mask(0)
+print("Flow Texture on the path surface: mean mask %.3g along the path lines, %.3g in the flow of t = 1" % (
+    along_paths, at_one_time))
+if not along_paths < 0.9 * at_one_time:
+    raise AssertionError("Flow Texture with Path Surface on does not follow the path lines better than the flow of t = 1")

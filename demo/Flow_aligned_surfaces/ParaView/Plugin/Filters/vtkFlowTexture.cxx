@@ -3,6 +3,7 @@
 #include "fas_distributed_field.h"
 #include "fas_paraview_surface_input.h"
 
+#include <CGAL/Flow_aligned_surfaces/Path_surface_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/flow_texture.h>
 #include <CGAL/Flow_aligned_surfaces/parametrize.h>
 
@@ -54,11 +55,39 @@ FAS::Texture_image make_texture(vtkFlowTexture* filter)
     : FAS::make_noise_texture(width, height, filter->GetFilterLength(), std::uint32_t(filter->GetNoiseSeed()));
 }
 
+
+// The time at which a path surface of Stream Surface From Curve passed each of its points:
+// start_time (field data) + t (point data).  \throws std::invalid_argument naming what is missing.
+std::vector<double> path_surface_times(vtkPolyData* surface, const Temporal_flow_input& steps)
+{
+  if (!steps.temporal())
+    throw std::invalid_argument("Path Surface is on, but the Input has no time steps (a steady flow: turn it off)");
+  vtkDataArray* start = surface != nullptr ? surface->GetFieldData()->GetArray("start_time") : nullptr;
+  vtkDataArray* t = surface != nullptr ? surface->GetPointData()->GetArray("t") : nullptr;
+  if (start == nullptr || t == nullptr || t->GetNumberOfTuples() != surface->GetNumberOfPoints())
+    throw std::invalid_argument("Path Surface is on, but the Surface input (port 1) has no field data start_time "
+                                "and point array t: give it the output of Stream Surface From Curve with Surface "
+                                "Type Path Surface");
+  std::vector<double> times(std::size_t(t->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < t->GetNumberOfTuples(); ++i)
+    times[std::size_t(i)] = start->GetComponent(0, 0) + t->GetComponent(i, 0);
+  return times;
+}
+
 } // namespace
 
 struct vtkFlowTexture::Internals {
   Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
   Temporal_flow_input steps;        // the time steps of input 0
+
+  // The flow at the view's time; along a path surface, from the first step to it.
+  std::vector<std::size_t> needed_steps(vtkFlowTexture* f, vtkInformationVector* outputVector) const
+  {
+    if (!steps.temporal())
+      return {};
+    const double t = steps.requested_time(outputVector->GetInformationObject(0));
+    return f->GetPathSurface() ? steps.steps_between(steps.times().front(), t) : steps.steps_around(t);
+  }
   Kept_outputs kept;
 };
 
@@ -73,6 +102,7 @@ vtkFlowTexture::vtkFlowTexture()
   , NoiseSeed(0)
   , ArrowsAlong(4)
   , ArrowsAcross(4)
+  , PathSurface(false)
   , Internal(new Internals)
 {
   this->SetNumberOfInputPorts(2);
@@ -112,7 +142,9 @@ int vtkFlowTexture::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  request_steps_around_requested_time(this->Internal->steps, inputVector, outputVector);
+  Internals& in = *this->Internal;
+  if (in.steps.temporal())
+    in.steps.request_next(inputVector[0]->GetInformationObject(0), in.needed_steps(this, outputVector));
   return 1;
 }
 
@@ -121,8 +153,8 @@ int vtkFlowTexture::RequestData(
 {
   Internals& in = *this->Internal;
   // Every rank: the flow at the requested time (a temporal input: once its steps have come).
-  const std::optional<Distributed_input> update =
-    update_at_requested_time(in.steps, in.field, request, inputVector, outputVector, selected_velocity(this));
+  const std::optional<Distributed_input> update = update_with_steps(in.steps, in.field, request, inputVector,
+    outputVector, selected_velocity(this), in.needed_steps(this, outputVector));
   if (!update)
     return 1; // the pipeline runs this filter again with the next time step
   const Distributed_input& pieces = *update;
@@ -171,13 +203,24 @@ int vtkFlowTexture::RequestData(
     Mesh tm = surface_mesh(input_surface);
     // The parameter r along the flow and the mask b(gamma) (on several ranks their samples are
     // exchanged first, in one go).
+    const std::vector<double> path_times = this->PathSurface ? path_surface_times(input_surface, in.steps) : std::vector<double>();
     const auto parametrize_and_mask = [&](Mesh& m) {
       auto r = m.add_property_map<Vertex, double>("v:r", 0.).first;
       auto s = m.add_property_map<Vertex, double>("v:s", 0.).first;
       auto mask = m.add_property_map<Face, double>("f:mask", 1.).first;
-      FAS::parametrize_tangential(m, in.field, r, s, FAS::parameters::normalized(false));
-      FAS::compute_flow_texture_mask(
-        m, in.field, r, mask, FAS::parameters::min_relative_speed(this->MinRelativeSpeed));
+      const auto in_flow = [&](const auto& field) {
+        FAS::parametrize_tangential(m, field, r, s, FAS::parameters::normalized(false));
+        FAS::compute_flow_texture_mask(m, field, r, mask, FAS::parameters::min_relative_speed(this->MinRelativeSpeed));
+      };
+      if (this->PathSurface)
+      {
+        auto time = m.add_property_map<Vertex, double>("v:time", 0.).first;
+        for (Vertex v : m.vertices())
+          time[v] = path_times[v.idx()];
+        in_flow(FAS::Path_surface_flow_field_3<Unsteady_view, Mesh, decltype(time)>(Unsteady_view{ in.field }, m, time));
+      }
+      else
+        in_flow(in.field);
       return std::make_tuple(r, s, mask);
     };
     in.field.probe_points_of([&] {
@@ -232,4 +275,5 @@ void vtkFlowTexture::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NoiseSeed: " << this->NoiseSeed << "\n";
   os << indent << "ArrowsAlong: " << this->ArrowsAlong << "\n";
   os << indent << "ArrowsAcross: " << this->ArrowsAcross << "\n";
+  os << indent << "PathSurface: " << this->PathSurface << "\n";
 }

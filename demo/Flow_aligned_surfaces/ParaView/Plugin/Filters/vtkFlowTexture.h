@@ -65,6 +65,13 @@ public:
   vtkGetMacro(ArrowsAlong, int);
   vtkSetMacro(ArrowsAcross, int);
   vtkGetMacro(ArrowsAcross, int);
+  /// Whether the surface is a path surface of vtkStreamSurfaceFromCurve (point array `t`, field
+  /// data `start_time`) on a temporal input: the texture then follows its path lines, the flow at
+  /// the time start_time + t at which the surface passed each point (Path_surface_flow_field_3),
+  /// and the filter asks for the input's steps from the first one to the view's time.
+  vtkSetMacro(PathSurface, bool);
+  vtkGetMacro(PathSurface, bool);
+  vtkBooleanMacro(PathSurface, bool);
 
 protected:
   vtkFlowTexture();
@@ -86,6 +93,7 @@ protected:
   int NoiseSeed;
   int ArrowsAlong;
   int ArrowsAcross;
+  bool PathSurface;
 
 private:
   vtkFlowTexture(const vtkFlowTexture&) = delete;
