@@ -179,3 +179,14 @@ print("Flow Texture on the path surface: mean mask %.3g along the path lines, %.
     along_paths, at_one_time))
 if not along_paths < 0.9 * at_one_time:
     raise AssertionError("Flow Texture with Path Surface on does not follow the path lines better than the flow of t = 1")
+
+# At the release time the path surface has no face yet: Flow Texture gives an empty surface and
+# says nothing is wrong.
+texture = FlowTexture(Input=data, Surface=path)
+texture.Velocity = ["POINTS", "velocity"]
+texture.PathSurface = 1
+with t.Messages() as messages:
+    texture.UpdatePipeline(0.25)
+out = servermanager.Fetch(texture, idx=0)
+if out.GetNumberOfCells() != 0 or "Flow Texture" in messages.text():
+    raise AssertionError("Flow Texture at the release time: %d faces, messages %r" % (out.GetNumberOfCells(), messages.text()))

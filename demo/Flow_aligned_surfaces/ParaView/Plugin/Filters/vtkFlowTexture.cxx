@@ -200,6 +200,14 @@ int vtkFlowTexture::RequestData(
     require_property(this->ArrowsAcross >= 1 && this->ArrowsAcross <= 4096, "Arrows Across", this->ArrowsAcross,
                      "from 1 to 4,096");
     pieces.require_samples();
+    if (this->PathSurface && input_surface != nullptr && input_surface->GetNumberOfCells() == 0)
+    {
+      // A path surface at its release time has no face yet: nothing to texture, nothing wrong.
+      vtkPolyData::GetData(outputVector, 0)->ShallowCopy(input_surface);
+      vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture_piece());
+      in.kept.keep(outputVector);
+      return 1;
+    }
     Mesh tm = surface_mesh(input_surface);
     // The parameter r along the flow and the mask b(gamma) (on several ranks their samples are
     // exchanged first, in one go).
