@@ -183,6 +183,12 @@ struct vtkFlowAlignedSurface::Internals {
   void follow_the_flow(vtkFlowAlignedSurface* f, double t, const Distributed_input& pieces,
                        vtkInformationVector* outputVector);
   Followed align_at(vtkFlowAlignedSurface* f, double t);
+  // The first step up to step k that was not followed yet (k + 1: none).
+  std::size_t first_step_to_follow(std::size_t k) const
+  {
+    const auto after = followed.upper_bound(k);
+    return after == followed.begin() ? 0 : std::prev(after)->first + 1;
+  }
   FAS::Iteration_report one_iteration();
 
   int factorizations() const
@@ -602,11 +608,8 @@ std::vector<std::size_t> vtkFlowAlignedSurface::Internals::needed_steps(vtkInfor
   // The steps not followed yet up to the requested time, and the steps around it.
   const double t = steps.requested_time(output_information);
   const std::size_t k = steps.step_at_or_before(t);
-  std::size_t first = 0;
-  if (auto after = followed.upper_bound(k); after != followed.begin())
-    first = std::prev(after)->first + 1;
   std::vector<std::size_t> needed;
-  for (std::size_t i = first; i <= k; ++i)
+  for (std::size_t i = first_step_to_follow(k); i <= k; ++i)
     needed.push_back(i);
   for (std::size_t i : steps.steps_around(t))
     needed.push_back(i);
@@ -647,9 +650,7 @@ void vtkFlowAlignedSurface::Internals::follow_the_flow(vtkFlowAlignedSurface* f,
   in.exchange_ms = in.step_ms = 0;
   const std::vector<double>& times = in.steps.times();
   const std::size_t k = in.steps.step_at_or_before(t);
-  std::size_t first = 0;
-  if (auto after = in.followed.upper_bound(k); after != in.followed.begin())
-    first = std::prev(after)->first + 1;
+  const std::size_t first = in.first_step_to_follow(k);
   std::size_t computed = 0;
   in.followed_in_update = 0;
   for (std::size_t i = first; i <= k; ++i)
