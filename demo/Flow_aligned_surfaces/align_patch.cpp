@@ -15,7 +15,13 @@
 // seed curve, integrated forward and backward as one mesh (VTP with u, t, SeedIds), and on the
 // orthogonal surface seed points seed stream lines (VTP with velocity, IntegrationTime, SeedIds).
 //
-// Usage: align_patch [--flow NAME | --field FILE [--array NAME]]
+// In a time series (--field SERIES.pvd) the patches are aligned to the flow at --time, and their
+// seeds give path surfaces and path lines over --duration instead (time_series.h): the path
+// surfaces also as they grow over the data's times (a .pvd), coloured in their picture by the
+// deviation of the flow from its time mean, the tangential one with its texture along its path
+// lines (the paper's Figure 8, path-surface half).
+//
+// Usage: align_patch [--flow NAME | --field FILE [--array NAME] [--time T] [--duration D]]
 //                    [--alignment tangential|orthogonal|both] [--faces N] [--center X,Y,Z]
 //                    [--normal X,Y,Z] [--size S] [--output DIR] [--overwrite] [--quiet]
 // (`align_patch --help` lists the options with their defaults.)
@@ -28,13 +34,15 @@
 
 #include "command_line.h"
 #include "demo_support.h"
-#include "distinct_stream_surfaces.h"
 #include "feature_placement.h"
 #include "grow_across_flow.h"
-#include "iteration_collection.h"
+#include "growing_path_surfaces.h"
 #include "paraview_script.h"
 #include "scene_assembly.h"
+#include "seeded_surfaces.h"
 #include "stream_lines_with_arrays.h"
+#include "surface_collection.h"
+#include "time_series.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
@@ -48,6 +56,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -71,6 +80,8 @@ struct Scene {
   double size;
   std::optional<CGAL::Bbox_3> domain = std::nullopt; // the data's box (analytic flows: none)
   std::string field_file = {};                       // the data file, absolute (analytic flows: none)
+  // A time series: `flow` is its flow at the run's time, and the seeds give path surfaces.
+  std::optional<Unsteady_run> unsteady = std::nullopt;
 };
 
 // A built-in flow with a tangential and an orthogonal placement of the patch in it.
@@ -121,24 +132,21 @@ struct Placement {
   std::optional<double> size;
 };
 
-// A scene in a flow read from a file: the patch at the given place or in the middle of the data.
-std::optional<Scene> make_data_scene(const std::string& file, const std::string& array,
+// A scene in the flow of data (`box` its domain, read from `file`): the patch at the given place
+// or near the flow's main feature.
+std::optional<Scene> make_data_scene(const Flow& flow, const CGAL::Bbox_3& box, const std::string& file,
                                      const Placement& placement)
 {
-  const std::optional<FAS::Sampled_flow_field_3<Kernel>> field = read_data_field(file, array);
-  if (!field)
-    return std::nullopt;
-  const CGAL::Bbox_3 box = field->bbox();
   const double size =
       placement.size
           ? *placement.size
           : 0.25 * (std::min)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
   const std::optional<Point> given_center =
-      placement.center ? std::optional<Point>(Point((*placement.center)[0], (*placement.center)[1],
-                                                    (*placement.center)[2]))
+      placement.center ? std::optional<Point>(
+                             Point((*placement.center)[0], (*placement.center)[1], (*placement.center)[2]))
                        : std::nullopt;
   if (given_center) {
-    const auto v = (*field)(*given_center);
+    const auto v = flow(*given_center);
     if (!v || v->squared_length() == 0) {
       std::cerr << "error: --center: the flow of " << file << " is not defined (or zero) at " << *given_center
                 << "; place the patch in the fluid with --center X,Y,Z\n";
@@ -146,12 +154,12 @@ std::optional<Scene> make_data_scene(const std::string& file, const std::string&
     }
   }
   // Without --normal: near the main feature (or at --center), tilted 30 degrees off the flow.
-  const auto placed = place_near_feature<Point, Vector>(*field, box, size, CGAL_PI / 6, given_center);
+  const auto placed = place_near_feature<Point, Vector>(flow, box, size, CGAL_PI / 6, given_center);
   if (!placed) {
     std::cerr << "error: --field: " << file << " has no flow (no finite non-zero velocity) anywhere\n";
     return std::nullopt;
   }
-  Scene scene{Flow(*field),
+  Scene scene{flow,
               placed->tangential_center,
               placed->orthogonal_center,
               placed->tangential_normal,
@@ -167,6 +175,77 @@ std::optional<Scene> make_data_scene(const std::string& file, const std::string&
               << triple_text(scene.tangential_center) << " --normal " << triple_text(scene.tangential_normal)
               << ", orthogonal at --center " << triple_text(scene.orthogonal_center) << " --normal "
               << triple_text(scene.orthogonal_normal) << "\n";
+  return scene;
+}
+
+// --time and --duration, for a time series; nothing where the default is taken.
+struct Times {
+  std::optional<double> time, duration;
+};
+
+// The times of a run in the series `series` read from `file`: the patches aligned at `times.time`
+// (default: the first step), path surfaces over `times.duration` (default: to the last step, and
+// no further); prints why not and returns nothing when the series or the times do not allow one.
+std::optional<Unsteady_run> unsteady_run(const std::string& file, Time_series series, const Times& times)
+{
+  const double start = series.start_time(), end = series.end_time();
+  const auto text = [](double t) {
+    std::ostringstream os;
+    os.precision(10);
+    os << t;
+    return os.str();
+  };
+  if (series.times.size() < 2) {
+    std::cerr
+        << "error: --field: " << file << " has one time step (t = " << text(start)
+        << "); path surfaces need at least two: give a series of several steps, or the step's file itself "
+           "for a steady run\n";
+    return std::nullopt;
+  }
+  const double time = times.time.value_or(start);
+  if (!(time >= start && time < end)) {
+    std::cerr << "error: --time: " << text(time) << " is outside the time steps of " << file << " (from "
+              << text(start) << " to " << text(end) << "; the path surfaces need time after it)\n";
+    return std::nullopt;
+  }
+  double duration = times.duration.value_or(end - time);
+  if (time + duration > end) {
+    std::cerr << "warning: --duration: " << text(duration) << " from t = " << text(time)
+              << " reaches past the last time step of " << file << " (t = " << text(end)
+              << "); the path surfaces end there, after " << text(end - time) << "\n";
+    duration = end - time;
+  }
+  return Unsteady_run{std::move(series), time, duration};
+}
+
+// Whether `file` is a time series (a ParaView collection, .pvd).
+bool is_time_series(const std::string& file)
+{
+  std::string extension = std::filesystem::path(file).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return extension == ".pvd";
+}
+
+// The scene of a data file: a steady field, or a time series whose flow at the run's time aligns
+// the patches (unsteady_run()).
+std::optional<Scene> read_data_scene(const std::string& file, const std::string& array,
+                                     const Placement& placement, const Times& times)
+{
+  if (!is_time_series(file)) {
+    const std::optional<FAS::Sampled_flow_field_3<Kernel>> field = read_data_field(file, array);
+    return field ? make_data_scene(Flow(*field), field->bbox(), file, placement) : std::nullopt;
+  }
+  std::optional<Time_series> series = read_time_series(file, array);
+  std::optional<Unsteady_run> run = series ? unsteady_run(file, std::move(*series), times) : std::nullopt;
+  if (!run)
+    return std::nullopt;
+  std::cout << "time series of " << run->series.times.size() << " steps from t = " << run->series.start_time()
+            << " to " << run->series.end_time() << ": the patches aligned to the flow at t = " << run->time
+            << ", path surfaces and path lines from there over " << run->duration << "\n";
+  std::optional<Scene> scene = make_data_scene(run->series.at(run->time), run->series.box, file, placement);
+  if (scene)
+    scene->unsteady = std::move(*run);
   return scene;
 }
 
@@ -210,157 +289,229 @@ Scene_surface textured_surface(const Mesh& tm, Flow_texture_of_mesh texture)
   return textured;
 }
 
-// The stream surfaces coloured by their time-line parameter |t| (Figure 3's time lines: the mean
-// of |t| over each face), with their seed curves.
-Stage stream_surfaces_stage(const std::string& name, const Mesh& surfaces, const Scene_lines& seed_curves)
+// The mean over each face of `tm` of the vertex values `value` (by vertex index), and the
+// largest finite mean (1 when none is positive: a colour range).
+std::pair<std::vector<double>, double> face_means(const Mesh& tm, const std::vector<double>& value)
 {
-  const auto t = surfaces.property_map<Mesh::Vertex_index, double>("v:t").first;
-  std::vector<double> by_time;
+  std::vector<double> means;
   double largest = 0;
-  for (Mesh::Face_index f : surfaces.faces()) {
+  for (Mesh::Face_index f : tm.faces()) {
     double mean = 0;
-    for (Mesh::Vertex_index v : vertices_around_face(surfaces.halfedge(f), surfaces))
-      mean += std::abs(t[v]) / 3;
-    by_time.push_back(mean);
-    largest = std::max(largest, mean);
+    for (Mesh::Vertex_index v : vertices_around_face(tm.halfedge(f), tm))
+      mean += value[v.idx()] / 3;
+    means.push_back(mean);
+    if (std::isfinite(mean))
+      largest = std::max(largest, mean);
   }
-  return Stage{name + "_stream_surfaces.png",
-               Scene_view{{to_scene_surface(surfaces, std::move(by_time), {0.8, 0.8, 0.8})},
+  return {std::move(means), largest > 0 ? largest : 1};
+}
+
+// The stream surfaces coloured by their time-line parameter |t| (Figure 3's time lines: the mean
+// of |t| over each face), or path surfaces by the deviation |v - <v>| of the flow they saw from
+// the time mean (where the flow is unsteady), with their seed curves.
+Stage seeded_surfaces_stage(const std::string& name, const Seeded_surfaces& seeded,
+                            const Scene_lines& seed_curves)
+{
+  const Mesh& surfaces = seeded.mesh();
+  std::vector<double> shown = seeded.deviation;
+  if (!seeded.path_surfaces) {
+    const auto t = surfaces.property_map<Mesh::Vertex_index, double>("v:t").first;
+    for (Mesh::Vertex_index v : surfaces.vertices())
+      shown.push_back(std::abs(t[v]));
+  }
+  auto [by_face, largest] = face_means(surfaces, shown);
+  return Stage{name + "_" + seeded.kind() + ".png",
+               Scene_view{{to_scene_surface(surfaces, std::move(by_face), {0.8, 0.8, 0.8})},
                           {seed_curves},
-                          "stream surfaces"},
-               "|t| (arc length from the seed curve)",
-               {0, largest > 0 ? largest : 1}};
+                          seeded.path_surfaces ? "path surfaces" : "stream surfaces"},
+               seeded.path_surfaces ? "|v - <v>| (deviation from the time mean)"
+                                    : "|t| (arc length from the seed curve)",
+               {0, largest}};
+}
+
+// Seed curves of an aligned surface: iso-contours of its parametrization's r at 3 evenly spaced
+// values, each with its value.
+struct Seed_curves {
+  std::vector<Polyline> curves;
+  std::vector<double> curve_values, point_values; // r of each curve and of each of its points
+};
+
+Seed_curves take_seed_curves(Mesh& tm, const FAS::Flow_aligned_deformation<Mesh, Flow>& deformation)
+{
+  auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
+  auto s = tm.add_property_map<Mesh::Vertex_index, double>("v:s", 0).first;
+  if (deformation.alignment() == FAS::Alignment::TANGENTIAL)
+    deformation.parametrize_tangential(r, s);
+  else
+    deformation.parametrize_orthogonal(r, s);
+  Seed_curves seeds;
+  for (double value : FAS::evenly_spaced_iso_values(tm, r, 3)) {
+    const std::size_t before = seeds.curves.size();
+    FAS::extract_iso_contours(tm, r, std::vector<double>{value}, std::back_inserter(seeds.curves));
+    for (std::size_t i = before; i < seeds.curves.size(); ++i) {
+      seeds.curve_values.push_back(value);
+      seeds.point_values.insert(seeds.point_values.end(), seeds.curves[i].size(), value);
+    }
+  }
+  tm.remove_property_map(r);
+  tm.remove_property_map(s);
+  return seeds;
+}
+
+// The paper's Figure 8 on a tangential surface's seeded surfaces: the LIC-like texture of their
+// own tangential parametrization in the flow they saw (3 repeats of the texture along the flow),
+// masked where grad r leaves it; nothing (and why) when it cannot be made.
+std::optional<Flow_texture_of_mesh> seeded_texture(const std::string& name, const Seeded_surfaces& seeded)
+{
+  try {
+    return flow_texture_of_mesh(seeded.mesh(), seeded.flow, -3);
+  } catch (const std::exception& e) {
+    std::cerr << name << ": the " << seeded.kind() << " get no texture: " << e.what() << "\n";
+    return std::nullopt;
+  }
+}
+
+// Writes the seeded surfaces (NAME_stream_surfaces.vtp or NAME_path_surfaces.vtp, and path
+// surfaces as they grow: NAME_path_surfaces.pvd) with their point data, their flux per face and,
+// given a `texture`, its TCoords and texture_mask (the texture image beside them as
+// `texture_file`, for ParaView).  False with the reason in `error` when a file cannot be written.
+bool write_seeded_surfaces(const std::string& name, const Seeded_surfaces& seeded,
+                           const std::optional<Flow_texture_of_mesh>& texture,
+                           const std::vector<double>& face_flux, const Scene& scene,
+                           const std::filesystem::path& out, std::string& texture_file, std::string& error)
+{
+  std::vector<FAS::IO::Data_array> point_data = seeded.point_data(), cell_data;
+  if (!face_flux.empty())
+    cell_data.push_back({"normalized_flux", 1, face_flux});
+  if (texture) {
+    FAS::IO::Data_array tcoords{"TCoords", 2, {}};
+    for (const auto& uv : texture->texture_coordinates)
+      tcoords.values.insert(tcoords.values.end(), {uv[0], uv[1]});
+    tcoords.texture_coordinates = true;
+    point_data.push_back(std::move(tcoords));
+    cell_data.push_back({"texture_mask", 1, texture->face_mask});
+    // Without libpng the VTP keeps its coordinates; ParaView then shows no texture.
+    std::string png_error;
+    texture_file = name + "_" + seeded.kind() + "_texture.png";
+    if (!FAS::IO::write_PNG((out / texture_file).string(), texture->texture, &png_error)) {
+      std::cerr << name << ": " << png_error << "\n";
+      texture_file.clear();
+    }
+  }
+  const Mesh& surfaces = seeded.mesh();
+  if (!write_mesh_VTP((out / (name + "_" + seeded.kind() + ".vtp")).string(), surfaces, point_data, cell_data,
+                      Active_scalars{seeded.path_surfaces ? "time" : "t", ""}, &error))
+    return false;
+  if (!scene.unsteady)
+    return true;
+  const auto time = surfaces.property_map<Mesh::Vertex_index, double>("v:time").first;
+  std::vector<double> vertex_time;
+  for (Mesh::Vertex_index v : surfaces.vertices())
+    vertex_time.push_back(time[v]);
+  const Unsteady_run& run = *scene.unsteady;
+  return write_growing_path_surfaces(out, name, surfaces, vertex_time, point_data, cell_data,
+                                     run.series.times, run.time, run.time + run.duration, error);
+}
+
+// The flux of the seeded surfaces in the flow they saw, per face and in all, a check of the
+// integration; a surface whose front tore and met itself at a vertex (non-manifold there) has
+// none, and the rest is written all the same.
+std::pair<std::vector<double>, std::optional<FAS::Normalized_flux>> seeded_flux(const std::string& name,
+                                                                                const Seeded_surfaces& seeded)
+{
+  if (seeded.mesh().is_empty())
+    return {};
+  try {
+    return {face_fluxes(seeded.mesh(), seeded.flow), FAS::normalized_flux(seeded.mesh(), seeded.flow)};
+  } catch (const std::exception& e) {
+    std::cerr << name << ": the " << seeded.kind() << "' flux is not measured: " << e.what() << "\n";
+    return {};
+  }
+}
+
+// Seed points on an orthogonal surface seed stream lines (Figure 5), or in an unsteady flow path
+// lines from the run's time over its duration: added to `view`, as a stage and NAME_stream_lines.vtp
+// (NAME_path_lines.vtp).  Returns the number of lines, or nothing (the reason in `error`).
+std::optional<std::size_t> seed_lines(const std::string& name, const Mesh& tm, const Scene& scene,
+                                      const std::filesystem::path& out, Scene_view& view,
+                                      std::vector<Stage>& stages, std::string& error)
+{
+  std::vector<Point> seed_points;
+  FAS::sample_seed_points(tm, scene.size / 6, std::back_inserter(seed_points));
+  const Stream_lines<Point> lines = scene.unsteady
+                                        ? integrate_path_lines(scene.unsteady->series.flow, seed_points,
+                                                               scene.unsteady->time, scene.unsteady->duration)
+                                        : integrate_stream_lines(scene.flow, seed_points, 2 * scene.size);
+  const std::string kind = scene.unsteady ? "path_lines" : "stream_lines";
+  view.lines.push_back(to_scene_lines(lines.lines, {0.6, 0.05, 0.05}, 2));
+  stages.push_back(
+      {name + "_" + kind + ".png",
+       flux_view(tm, scene.flow, scene.unsteady ? "path lines" : "stream lines", {view.lines.back()})});
+  if (!write_polylines_VTP((out / (name + "_" + kind + ".vtp")).string(), lines.lines, lines.point_data(),
+                           lines.cell_data(), Active_scalars{"IntegrationTime", ""}, &error))
+    return std::nullopt;
+  return lines.lines.size();
 }
 
 // The seeding workflow on the aligned surface `tm` of `deformation`: seed curves from its
-// parametrization (iso-contours of r, each with its value), one stream surface per distinct seed
-// curve (distinct_stream_surfaces.h: forward and backward in one mesh, arc-length time lines up
-// to twice the patch size), and stream lines from seed points on an orthogonal surface; all
-// written as VTP, added to `view` (the scene picture's) and to `stages` (a stage picture each).
-// A tangential surface's stream surfaces carry their LIC-like texture (`textured_view`, and the
-// texture image written as `texture_file`, empty when not written).
-// Returns false when a file cannot be written.
+// parametrization (iso-contours of r, each with its value), one stream surface (unsteady flows:
+// path surface) per distinct seed curve (seeded_surfaces.h), and on an orthogonal surface stream
+// (path) lines from seed points; all written as VTP, added to `view` (the scene picture's) and to
+// `stages` (a stage picture each).  A tangential surface's seeded surfaces carry their LIC-like
+// texture (`textured_view`, and the texture image written as `texture_file`, empty when not
+// written).  Returns false when a file cannot be written.
 bool seed_and_integrate(const std::string& name, Mesh& tm,
                         const FAS::Flow_aligned_deformation<Mesh, Flow>& deformation, const Scene& scene,
                         const std::filesystem::path& out, Scene_view& view, std::vector<Stage>& stages,
                         std::optional<Scene_view>& textured_view, std::string& texture_file)
 {
   const bool tangential = deformation.alignment() == FAS::Alignment::TANGENTIAL;
-  auto r = tm.add_property_map<Mesh::Vertex_index, double>("v:r", 0).first;
-  auto s = tm.add_property_map<Mesh::Vertex_index, double>("v:s", 0).first;
-  if (tangential)
-    deformation.parametrize_tangential(r, s);
-  else
-    deformation.parametrize_orthogonal(r, s);
-  std::vector<Polyline> seed_curves;
-  std::vector<double> curve_values, point_values; // r of each curve and of each of its points
-  for (double value : FAS::evenly_spaced_iso_values(tm, r, 3)) {
-    const std::size_t before = seed_curves.size();
-    FAS::extract_iso_contours(tm, r, std::vector<double>{value}, std::back_inserter(seed_curves));
-    for (std::size_t i = before; i < seed_curves.size(); ++i) {
-      curve_values.push_back(value);
-      point_values.insert(point_values.end(), seed_curves[i].size(), value);
-    }
-  }
-
-  const auto integrated = integrate_distinct_stream_surfaces<Mesh>(scene.flow, seed_curves, scene.size / 30,
-                                                                   2 * scene.size);
-  for (const std::string& reason : integrated.skipped_reasons)
+  const Seed_curves seeds = take_seed_curves(tm, deformation);
+  const Seeded_surfaces seeded(scene.flow, scene.unsteady, seeds.curves, scene.size / 30, 2 * scene.size);
+  for (const std::string& reason : seeded.integrated.skipped_reasons)
     std::cerr << name << ": " << reason << "\n";
-  const Mesh& surfaces = integrated.mesh;
-  const auto u = surfaces.property_map<Mesh::Vertex_index, double>("v:u").first;
-  const auto t = surfaces.property_map<Mesh::Vertex_index, double>("v:t").first;
-  const auto seed_id = surfaces.property_map<Mesh::Vertex_index, double>("v:seed").first;
-  std::vector<double> us, ts, ids;
-  for (Mesh::Vertex_index v : surfaces.vertices()) {
-    us.push_back(u[v]);
-    ts.push_back(t[v]);
-    ids.push_back(seed_id[v]);
-  }
+  const Mesh& surfaces = seeded.mesh();
   std::string error;
-  bool ok = write_polylines_VTP((out / (name + "_seed_curves.vtp")).string(), seed_curves,
-                                {{"r", 1, point_values}}, {{"r", 1, curve_values}}, Active_scalars{"r", "r"},
-                                &error);
-  // The flux of the stream surfaces, a check of the integration; a surface whose front tore and
-  // met itself at a vertex (non-manifold there) has none, and the rest is written all the same.
-  std::optional<FAS::Normalized_flux> surfaces_flux;
-  std::vector<FAS::IO::Data_array> surfaces_cell_data;
-  if (!surfaces.is_empty()) {
-    try {
-      surfaces_cell_data.push_back({"normalized_flux", 1, face_fluxes(surfaces, scene.flow)});
-      surfaces_flux = FAS::normalized_flux(surfaces, scene.flow);
-    } catch (const std::exception& e) {
-      std::cerr << name << ": the stream surfaces' flux is not measured: " << e.what() << "\n";
-      surfaces_cell_data.clear();
-    }
-  }
-  // The paper's Figure 8 on the tangential surface's stream surface: the LIC-like texture of its
-  // own tangential parametrization (3 repeats of the texture along the flow), masked where grad r
-  // leaves it; in its VTP (TCoords, texture_mask) with the texture beside it for ParaView, and in
-  // the scene picture.
-  std::optional<Flow_texture_of_mesh> texture;
-  if (tangential && !surfaces.is_empty()) {
-    try {
-      texture = flow_texture_of_mesh(surfaces, scene.flow, -3);
-    } catch (const std::exception& e) {
-      std::cerr << name << ": the stream surfaces get no texture: " << e.what() << "\n";
-    }
-  }
-  if (ok && !surfaces.is_empty()) {
-    std::vector<FAS::IO::Data_array> arrays{
-        {"velocity", 3, vertex_velocities(surfaces, scene.flow)}, {"u", 1, us}, {"t", 1, ts}, {"SeedIds", 1, ids}};
-    if (texture) {
-      FAS::IO::Data_array tcoords{"TCoords", 2, {}};
-      for (const auto& uv : texture->texture_coordinates)
-        tcoords.values.insert(tcoords.values.end(), {uv[0], uv[1]});
-      tcoords.texture_coordinates = true;
-      arrays.push_back(std::move(tcoords));
-      surfaces_cell_data.push_back({"texture_mask", 1, texture->face_mask});
-      // Without libpng the VTP keeps its coordinates; ParaView then shows no texture.
-      std::string png_error;
-      texture_file = name + "_stream_surfaces_texture.png";
-      if (!FAS::IO::write_PNG((out / texture_file).string(), texture->texture, &png_error)) {
-        std::cerr << name << ": " << png_error << "\n";
-        texture_file.clear();
-      }
-    }
-    ok = write_mesh_VTP((out / (name + "_stream_surfaces.vtp")).string(), surfaces, arrays, surfaces_cell_data,
-                        Active_scalars{"t", ""}, &error);
-  }
-  std::size_t number_of_lines = 0;
-  if (ok && !tangential) { // seed points on the orthogonal surface seed stream lines (Figure 5)
-    std::vector<Point> seed_points;
-    FAS::sample_seed_points(tm, scene.size / 6, std::back_inserter(seed_points));
-    const Stream_lines<Point> lines = integrate_stream_lines(scene.flow, seed_points, 2 * scene.size);
-    number_of_lines = lines.lines.size();
-    view.lines.push_back(to_scene_lines(lines.lines, {0.6, 0.05, 0.05}, 2));
-    stages.push_back(
-        {name + "_stream_lines.png", flux_view(tm, scene.flow, "stream lines", {view.lines.back()})});
-    ok = write_polylines_VTP((out / (name + "_stream_lines.vtp")).string(), lines.lines, lines.point_data(),
-                             lines.cell_data(), Active_scalars{"IntegrationTime", ""}, &error);
-  }
-  if (!ok) {
+  if (!write_polylines_VTP((out / (name + "_seed_curves.vtp")).string(), seeds.curves,
+                           {{"r", 1, seeds.point_values}}, {{"r", 1, seeds.curve_values}},
+                           Active_scalars{"r", "r"}, &error)) {
     std::cerr << "error: " << error << "\n";
     return false;
   }
-  const Scene_lines seed_lines = to_scene_lines(seed_curves, {0.02, 0.02, 0.02}, 4);
-  view.lines.push_back(seed_lines);
-  stages.push_back({name + "_seed_curves.png",
-                    flux_view(tm, scene.flow, "seed curves (iso-contours of r)", {seed_lines})});
-  if (!surfaces.is_empty()) { // the stream surfaces, translucent, beyond the aligned patch
-    view.surfaces.push_back(to_scene_surface(surfaces, {}, {0.98, 0.8, 0.3}, 0.6));
-    stages.push_back(stream_surfaces_stage(name, surfaces, seed_lines));
+  const auto [face_flux, surfaces_flux] = seeded_flux(name, seeded);
+  std::optional<Flow_texture_of_mesh> texture;
+  if (tangential && !surfaces.is_empty())
+    texture = seeded_texture(name, seeded);
+  if (!surfaces.is_empty() &&
+      !write_seeded_surfaces(name, seeded, texture, face_flux, scene, out, texture_file, error)) {
+    std::cerr << "error: " << error << "\n";
+    return false;
   }
+  std::optional<std::size_t> number_of_lines = 0;
+  if (!tangential && !(number_of_lines = seed_lines(name, tm, scene, out, view, stages, error))) {
+    std::cerr << "error: " << error << "\n";
+    return false;
+  }
+  const Scene_lines seed_curve_lines = to_scene_lines(seeds.curves, {0.02, 0.02, 0.02}, 4);
+  view.lines.push_back(seed_curve_lines);
+  stages.push_back({name + "_seed_curves.png",
+                    flux_view(tm, scene.flow, "seed curves (iso-contours of r)", {seed_curve_lines})});
+  if (!surfaces.is_empty()) { // the seeded surfaces, translucent, beyond the aligned patch
+    view.surfaces.push_back(to_scene_surface(surfaces, {}, {0.98, 0.8, 0.3}, 0.6));
+    stages.push_back(seeded_surfaces_stage(name, seeded, seed_curve_lines));
+  }
+  const std::string what = seeded.path_surfaces ? "path surface" : "stream surface";
   if (texture)
     textured_view =
-        Scene_view{{textured_surface(surfaces, std::move(*texture))}, {}, "stream surface, LIC-like texture"};
-  std::cout << name << ": " << seed_curves.size() << " seed curves, " << integrated.number_of_surfaces()
-            << " distinct stream surfaces of " << surfaces.number_of_faces() << " triangles (flux "
+        Scene_view{{textured_surface(surfaces, std::move(*texture))}, {}, what + ", LIC-like texture"};
+  std::cout << name << ": " << seeds.curves.size() << " seed curves, "
+            << seeded.integrated.number_of_surfaces() << " distinct " << what << "s of "
+            << surfaces.number_of_faces() << " triangles (flux "
             << (surfaces_flux ? *surfaces_flux : FAS::Normalized_flux()) << ")"
-            << (tangential ? std::string() : ", " + std::to_string(number_of_lines) + " stream lines")
+            << (tangential ? std::string()
+                           : ", " + std::to_string(*number_of_lines) +
+                                 (scene.unsteady ? " path" : " stream") + " lines")
             << "\n";
-  tm.remove_property_map(r);
-  tm.remove_property_map(s);
   return true;
 }
 
@@ -391,8 +542,8 @@ void warn_unsampled(const std::string& name, const std::vector<FAS::Iteration_re
 // seed curves, stream surfaces and stream lines (`aligned`, right), both coloured by the
 // normalized flux, with the obstacle and the outline of the domain (analytic flows: of the
 // scene), seen by the oblique camera.
-Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view aligned, const std::string& kind,
-                            std::optional<Scene_view> textured)
+Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view aligned,
+                            const std::string& kind, std::optional<Scene_view> textured)
 {
   CGAL::Bbox_3 focus = CGAL::bbox_3(initial.points().begin(), initial.points().end());
   for (const Scene_view* view : {&aligned})
@@ -427,7 +578,8 @@ Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view 
   // The domain's outline where the view shows it: a domain much larger than the scene (a
   // channel around its obstacle) would draw edges across the whole picture, so it is cut at a
   // margin around the scene (its walls near the scene stay where they are).
-  const CGAL::Bbox_3 outline_box = scene.domain ? box_intersection(*scene.domain, expanded(focus, 0.15)) : focus;
+  const CGAL::Bbox_3 outline_box =
+      scene.domain ? box_intersection(*scene.domain, expanded(focus, 0.15)) : focus;
   const Scene_lines outline = box_outline(outline_box);
   Scene_picture picture;
   picture.outline_bounds = {outline_box.xmin(), outline_box.xmax(), outline_box.ymin(),
@@ -446,10 +598,11 @@ Scene_picture scene_picture(const Scene& scene, const Mesh& initial, Scene_view 
   // render_scene_PNG.h) rather than on the edge of the region searched for it above.  Just
   // inside a data box: on its faces the flow may not be sampled, which would draw them.
   if (!obstacle.defined.empty())
-    obstacle = sample_flow_domain<Point>(scene.flow, scene.domain ? expanded(outline_box, -0.005) : outline_box, 100);
+    obstacle = sample_flow_domain<Point>(scene.flow,
+                                         scene.domain ? expanded(outline_box, -0.005) : outline_box, 100);
   picture.obstacle = std::move(obstacle);
-  picture.camera =
-    oblique_camera(focus, double(picture.width) / double(picture.views.size()) / double(picture.height), side);
+  picture.camera = oblique_camera(
+      focus, double(picture.width) / double(picture.views.size()) / double(picture.height), side);
   return picture;
 }
 
@@ -513,7 +666,7 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     return std::nullopt;
   const Mesh initial = tm;
   // The iterations as time steps of a ParaView collection, from the initial patch on.
-  Iteration_collection collection(out, name);
+  Surface_collection collection(out, name);
   collection.add(tm, scene.flow);
 
   std::vector<FAS::Iteration_report> iterations;
@@ -542,8 +695,8 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     if (!growth.stopped_because.empty())
       std::cerr << name << ": not grown further across the flow: " << growth.stopped_because << "\n";
     std::cout << name << ": grown across the flow in " << growth.number_of_steps << " steps by "
-              << growth.number_of_new_faces << " faces, realigned in " << growth.alignment.number_of_iterations
-              << " iterations\n";
+              << growth.number_of_new_faces << " faces, realigned in "
+              << growth.alignment.number_of_iterations << " iterations\n";
     if (growth.number_of_steps > 0) {
       summary.report.number_of_iterations += growth.alignment.number_of_iterations;
       summary.report.converged = growth.alignment.converged;
@@ -588,8 +741,8 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
     // flux value (no face sampled) is an empty field, not 0.
     os << "iteration,normalized_flux,sampled_area_fraction,max_rotation_angle,max_vertex_step,folds,"
           "outside_samples,invalid_samples,zero_samples,gtransf_ms,solve_ms,converged\n";
-    os << 0 << ',' << csv_field(summary.initial_flux.value) << ',' << summary.initial_flux.sampled_area_fraction
-       << ",,,,,,,,,\n";
+    os << 0 << ',' << csv_field(summary.initial_flux.value) << ','
+       << summary.initial_flux.sampled_area_fraction << ",,,,,,,,,\n";
     for (std::size_t k = 0; k < iterations.size(); ++k) {
       const FAS::Iteration_report& r = iterations[k];
       os << r.iteration << ',' << csv_field(flux_after[k].value) << ',' << flux_after[k].sampled_area_fraction
@@ -599,14 +752,18 @@ std::optional<Run_summary> align(const std::string& flow_name, const Scene& scen
          << (r.converged ? 1 : 0) << '\n';
     }
   }
-  summary.paraview = Paraview_run{name,         picture.camera, has_stream_surfaces, has_stream_lines,
-                                  has_obstacle, texture_file,   scene.field_file,    picture.outline_bounds};
+  summary.paraview =
+      Paraview_run{name,         picture.camera,   has_stream_surfaces,    has_stream_lines, has_obstacle,
+                   texture_file, scene.field_file, picture.outline_bounds, std::nullopt};
+  if (scene.unsteady)
+    summary.paraview.path_times = {scene.unsteady->time, scene.unsteady->time + scene.unsteady->duration};
   warn_unsampled(name, iterations, summary.report.normalized_flux);
   if (!summary.report.converged)
-    std::cerr << "warning: " << name << " surface: not converged after " << summary.report.number_of_iterations
-              << " iterations (flux " << summary.report.normalized_flux
-              << "): it may still be moving or folding.  Try a smaller patch (--size), a finer one (--faces), "
-                 "or another place (--center, --normal).\n";
+    std::cerr
+        << "warning: " << name << " surface: not converged after " << summary.report.number_of_iterations
+        << " iterations (flux " << summary.report.normalized_flux
+        << "): it may still be moving or folding.  Try a smaller patch (--size), a finer one (--faces), "
+           "or another place (--center, --normal).\n";
   std::cout << flow_name << ", " << name << ": " << summary.faces << " faces, flux " << summary.initial_flux
             << " -> " << summary.report.normalized_flux << " in " << summary.report.number_of_iterations
             << " iterations (" << (summary.report.converged ? "converged" : "not converged") << ")\n";
@@ -630,6 +787,14 @@ bool write_summary(const std::filesystem::path& path, const nlohmann::ordered_js
   summary["version"] = package_version();
   summary["inputs"] = inputs;
   summary["flow"] = flow_name;
+  if (scene.unsteady) {
+    const Unsteady_run& run = *scene.unsteady;
+    summary["time_series"] = nlohmann::ordered_json{{"steps", run.series.times.size()},
+                                                    {"start_time", run.series.start_time()},
+                                                    {"end_time", run.series.end_time()},
+                                                    {"time", run.time},
+                                                    {"duration", run.duration}};
+  }
   summary["runs"] = nlohmann::json::array();
   for (const Run_summary& r : runs) {
     const bool tangential = r.alignment == "tangential";
@@ -667,11 +832,14 @@ int main(int argc, char** argv)
   std::string flow_name, field_file, array, alignment = "both";
   Face_count faces{5000};
   Placement placement;
+  Times times;
   Output_options output;
   // --center, --normal and --size are optional: without them the flow's own placement is taken.
   const auto set_center = [&](const Triple& t) { placement.center = t.value; };
   const auto set_normal = [&](const Triple& t) { placement.normal = t.value; };
   const auto set_size = [&](const Positive_number& x) { placement.size = x.value; };
+  const auto set_time = [&](double t) { times.time = t; };
+  const auto set_duration = [&](const Positive_number& x) { times.duration = x.value; };
   const std::string flow_help =
       std::string("a built-in analytic flow: ") + built_in_flow_names() + " (default: cylinder)";
   po::options_description options = option_group("Options (lengths and positions in the flow's units)");
@@ -679,9 +847,17 @@ int main(int argc, char** argv)
   options.add_options()("field", po::value(&field_file)->value_name("FILE"),
                         "a velocity field read from a data file instead of --flow: legacy VTK, VTK XML "
                         "(.vti, .vtu, .vts), AmiraMesh (.am), NRRD (.nrrd, .nhdr), with an optional mask "
-                        "array 'inside'");
+                        "array 'inside'; or a time series, a ParaView collection (.pvd) of VTK XML files: "
+                        "the patches aligned at --time, path surfaces and path lines over --duration");
   options.add_options()("array", po::value(&array)->value_name("NAME"),
                         "the velocity array of --field (default: the file's first vector array)");
+  options.add_options()(
+      "time", po::value<double>()->value_name("T")->notifier(set_time),
+      "with a time series: the time of the flow the patches are aligned to, and the release "
+      "time of the path surfaces (default: the first time step)");
+  options.add_options()("duration", po::value<Positive_number>()->value_name("D")->notifier(set_duration),
+                        "with a time series: how long the path surfaces and path lines are integrated "
+                        "(default: up to the last time step)");
   options.add_options()(
       "alignment", po::value(&alignment)->default_value(alignment)->value_name("MODE"),
       "tangential (a stream surface), orthogonal (a seeding surface) or both (one of each)");
@@ -708,13 +884,24 @@ int main(int argc, char** argv)
       "alignment, *_scene.png, and one picture per stage in the scene's context: *_initial.png,\n"
       "*_aligned.png, *_seed_curves.png, *_stream_surfaces.png, orthogonal_stream_lines.png,\n"
       "tangential_textured.png), open_in_paraview.py (every output in ParaView, as the pictures show it)\n"
-      "and summary.json (the inputs, the package's version, the results, every file written).  Progress\n"
+      "and summary.json (the inputs, the package's version, the results, every file written).  With a\n"
+      "time series (--field SERIES.pvd): the flow at --time aligns the patches, and their seeds give path\n"
+      "surfaces (*_path_surfaces.vtp, and as they grow over time: *_path_surfaces.pvd) and path lines\n"
+      "(orthogonal_path_lines.vtp) over --duration instead of stream surfaces and lines.  Progress\n"
       "lines (iteration, flux, elapsed time) go to standard output.  Exit status: 0 on success, 1 when\n"
       "the run fails or the output folder is refused (nothing is written then), 2 for a bad command line."};
   if (const std::optional<int> status = parse_command_line(argc, argv, help, options))
     return *status;
   if (!flow_name.empty() && !field_file.empty()) {
     std::cerr << "error: --flow and --field exclude each other: give one flow\n";
+    return 2;
+  }
+  if ((times.time || times.duration) && !is_time_series(field_file)) {
+    std::cerr << "error: --time and --duration are for a time series: give one with --field SERIES.pvd\n";
+    return 2;
+  }
+  if (times.time && !std::isfinite(*times.time)) {
+    std::cerr << "error: --time: expected a finite time, got " << *times.time << "\n";
     return 2;
   }
   if (!array.empty() && field_file.empty()) {
@@ -736,6 +923,8 @@ int main(int argc, char** argv)
       {"center", given(placement.center)},
       {"normal", given(placement.normal)},
       {"size", given(placement.size)},
+      {"time", given(times.time)},
+      {"duration", given(times.duration)},
       {"faces", faces.value},
       {"alignment", alignment}};
   if (flow_name.empty())
@@ -746,11 +935,11 @@ int main(int argc, char** argv)
     // Said before any reading: a user who gives a case folder (OpenFOAM's) needs the file's name.
     std::cerr << "error: --field: " << field_file
               << " is a directory; give a velocity file (legacy VTK .vtk, VTK XML .vti/.vtr/.vts/.vtu, "
-                 "AmiraMesh .am or NRRD .nrrd/.nhdr)\n";
+                 "AmiraMesh .am or NRRD .nrrd/.nhdr) or a time series (.pvd)\n";
     return 1;
   }
   if (!field_file.empty()) {
-    scene = make_data_scene(field_file, array, placement);
+    scene = read_data_scene(field_file, array, placement, times);
     if (!scene)
       return 1;
     flow_name = std::filesystem::path(field_file).filename().string();

@@ -89,6 +89,18 @@ inline std::optional<Flow> make_built_in_flow(const std::string& name)
   return std::nullopt;
 }
 
+/// Calls `read(np)` with the demo's options of the readers: the reason of a failure in `error`,
+/// large binary arrays decoded on all cores, and the velocity array `array` (empty: the file's
+/// first vector array).
+template <class Read>
+bool read_with_demo_options(const Read& read, const std::string& array, std::string& error)
+{
+  const auto parallel = FAS::parameters::use_parallelism(true);
+  return array.empty()
+             ? read(FAS::parameters::error_message(&error, parallel))
+             : read(FAS::parameters::error_message(&error, FAS::parameters::array_name(array, parallel)));
+}
+
 /// The flow of a data file (any format `IO::read_flow_field()` reads), the velocity array named
 /// `array` (empty: the first vector array); prints the reason and returns nothing on failure.
 inline std::optional<FAS::Sampled_flow_field_3<Kernel>> read_data_field(const std::string& file,
@@ -96,20 +108,15 @@ inline std::optional<FAS::Sampled_flow_field_3<Kernel>> read_data_field(const st
 {
   FAS::Sampled_flow_field_3<Kernel> field;
   std::string error;
-  // The applications decode large binary arrays on all cores.
-  const auto parallel = FAS::parameters::use_parallelism(true);
-  const bool read =
-      array.empty() ? FAS::IO::read_flow_field(file, field, FAS::parameters::error_message(&error, parallel))
-                    : FAS::IO::read_flow_field(file, field,
-                                               FAS::parameters::error_message(
-                                                   &error, FAS::parameters::array_name(array, parallel)));
-  if (!read) {
+  if (!read_with_demo_options([&](const auto& np) { return FAS::IO::read_flow_field(file, field, np); },
+                              array, error)) {
     std::cerr << "error: " << error << "\n";
     return std::nullopt;
   }
   return field;
 }
 
+/// The normalized flux of each face of `tm` in `flow`, by face index.
 inline std::vector<double> face_fluxes(const Mesh& tm, const Flow& flow)
 {
   std::vector<double> values(tm.number_of_faces());
@@ -118,6 +125,8 @@ inline std::vector<double> face_fluxes(const Mesh& tm, const Flow& flow)
   return values;
 }
 
+/// The velocity of `flow` at each vertex of `tm`, 3 values per vertex by vertex index (0 where
+/// the flow is not defined).
 inline std::vector<double> vertex_velocities(const Mesh& tm, const Flow& flow)
 {
   std::vector<double> values;

@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// One stream surface per distinct seed curve.  Seed curves taken on a flow-tangential surface (the
-// iso-contours of its tangential parametrization) all lie on the same stream surface, up to the
+// One stream surface (or path surface) per distinct seed curve.  Seed curves taken on a flow-
+// tangential surface (the iso-contours of its tangential parametrization) all lie on the same
+// stream surface, up to the
 // surface's alignment error (the paper, Section 5: "Stream surfaces seeded from curves in
 // approximately flow-tangential surfaces coincide locally"); integrating each would give the same
 // surface several times, drawn on top of itself.  So the curves are integrated in order, and a
@@ -13,7 +14,8 @@
 // (distance to its triangles, by an AABB tree).  The tolerance is half the front spacing h by
 // default: the integrated surface resolves nothing finer, while distinct curves on a flow-
 // orthogonal surface (iso-contours of r a fraction of the patch apart) lie far outside it.
-// Forward and backward halves are one mesh (Integration_direction::BOTH), arc-length time lines.
+// Stream surfaces: forward and backward halves as one mesh (Integration_direction::BOTH),
+// arc-length time lines.  Path surfaces (unsteady flows): forward from their release time.
 
 #ifndef FAS_DEMO_DISTINCT_STREAM_SURFACES_H
 #define FAS_DEMO_DISTINCT_STREAM_SURFACES_H
@@ -72,35 +74,24 @@ double fraction_of_points_near(const Mesh& tm, const std::vector<typename Mesh::
   return double(near) / double(curve.size());
 }
 
-/// Integrates the stream surface of every seed curve of `seeds` that does not lie on a surface
-/// integrated before it (see the file's comment), forward and backward as one mesh, with front
-/// spacing `spacing` and arc-length time lines up to `max_length` each way; `tolerance` <= 0:
-/// half the spacing.  Every vertex carries its seed parameter u, its signed time-line parameter
-/// t (< 0 on the backward half) and the index of its seed curve.
-template <class Mesh, class Flow, class Polyline>
-Distinct_stream_surfaces<Mesh> integrate_distinct_stream_surfaces(const Flow& flow,
-                                                                  const std::vector<Polyline>& seeds,
-                                                                  double spacing, double max_length,
-                                                                  double tolerance = 0)
+/// Integrates the surface of every seed curve of `seeds` that does not lie on a surface
+/// integrated before it (see the file's comment) by `integrate_stream_surface(field, curve, mesh,
+/// parameters(u, t))`: `parameters` gives the named parameters for the vertex maps u and t.
+/// `tolerance` is the distance of a curve to a surface below which it lies on it.
+template <class Mesh, class Field, class Polyline, class Parameters>
+Distinct_stream_surfaces<Mesh> integrate_distinct_surfaces(const Field& field,
+                                                           const std::vector<Polyline>& seeds,
+                                                           double tolerance, const Parameters& parameters)
 {
   namespace FAS = CGAL::Flow_aligned_surfaces;
   using Face = typename Mesh::Face_index;
   using Vertex = typename Mesh::Vertex_index;
-  if (!(tolerance > 0))
-    tolerance = spacing / 2;
   Distinct_stream_surfaces<Mesh> result;
   Mesh& mesh = result.mesh;
   auto u = mesh.template add_property_map<Vertex, double>("v:u", 0).first;
   auto t = mesh.template add_property_map<Vertex, double>("v:t", 0).first;
   auto seed_id = mesh.template add_property_map<Vertex, double>("v:seed", -1).first;
-  const auto np = FAS::parameters::front_spacing(
-      spacing,
-      FAS::parameters::arc_length_time_lines(
-          true, FAS::parameters::max_length(
-                    max_length, FAS::parameters::integration_direction(
-                                    FAS::Integration_direction::BOTH,
-                                    FAS::parameters::seed_parameter_map(
-                                        u, FAS::parameters::integration_time_map(t))))));
+  const auto np = parameters(u, t);
   std::vector<std::vector<Face>> faces_of; // per seed curve (empty unless integrated)
   for (std::size_t i = 0; i < seeds.size(); ++i) {
     result.surface_of.emplace_back();
@@ -114,7 +105,7 @@ Distinct_stream_surfaces<Mesh> integrate_distinct_stream_surfaces(const Flow& fl
       continue;
     const std::size_t first_vertex = mesh.number_of_vertices(), first_face = mesh.number_of_faces();
     try {
-      FAS::integrate_stream_surface(flow, seeds[i], mesh, np);
+      FAS::integrate_stream_surface(field, seeds[i], mesh, np);
     } catch (const std::exception& e) { // a degenerate contour: skip it, say why
       result.skipped_reasons.push_back("seed curve " + std::to_string(i) + " skipped: " + e.what());
       continue;
@@ -126,6 +117,57 @@ Distinct_stream_surfaces<Mesh> integrate_distinct_stream_surfaces(const Flow& fl
       faces_of[i].push_back(Face(typename Mesh::size_type(f)));
     result.surface_of[i] = i;
   }
+  return result;
+}
+
+/// The stream surfaces of the distinct seed curves of `seeds` in the steady `flow`, forward and
+/// backward as one mesh, with front spacing `spacing` and arc-length time lines up to
+/// `max_length` each way; `tolerance` <= 0: half the spacing.  Every vertex carries its seed
+/// parameter u, its signed time-line parameter t (< 0 on the backward half) and the index of its
+/// seed curve.
+template <class Mesh, class Flow, class Polyline>
+Distinct_stream_surfaces<Mesh>
+integrate_distinct_stream_surfaces(const Flow& flow, const std::vector<Polyline>& seeds, double spacing,
+                                   double max_length, double tolerance = 0)
+{
+  namespace FAS = CGAL::Flow_aligned_surfaces;
+  return integrate_distinct_surfaces<Mesh>(
+      flow, seeds, tolerance > 0 ? tolerance : spacing / 2, [&](auto u, auto t) {
+        return FAS::parameters::front_spacing(
+            spacing, FAS::parameters::arc_length_time_lines(
+                         true, FAS::parameters::max_length(
+                                   max_length, FAS::parameters::integration_direction(
+                                                   FAS::Integration_direction::BOTH,
+                                                   FAS::parameters::seed_parameter_map(
+                                                       u, FAS::parameters::integration_time_map(t))))));
+      });
+}
+
+/// The path surfaces of the distinct seed curves of `seeds` in the unsteady `flow` (called with
+/// `(p, t)`), released at `start_time` and integrated forward for `duration`, with front spacing
+/// `spacing`; a curve is on a surface when most of it is within half the spacing (the seed curves
+/// of a surface tangential to the flow at the start time lie on one path surface near their
+/// start).  Every vertex carries u, t (the time since the release) and the index of its seed
+/// curve as the stream surfaces do, and its time `start_time` + t ("v:time").
+template <class Mesh, class UnsteadyFlow, class Polyline>
+Distinct_stream_surfaces<Mesh>
+integrate_distinct_path_surfaces(const UnsteadyFlow& flow, const std::vector<Polyline>& seeds, double spacing,
+                                 double start_time, double duration)
+{
+  namespace FAS = CGAL::Flow_aligned_surfaces;
+  Distinct_stream_surfaces<Mesh> result =
+      integrate_distinct_surfaces<Mesh>(flow, seeds, spacing / 2, [&](auto u, auto t) {
+        return FAS::parameters::front_spacing(
+            spacing, FAS::parameters::start_time(
+                         start_time, FAS::parameters::max_time(
+                                         duration, FAS::parameters::seed_parameter_map(
+                                                       u, FAS::parameters::integration_time_map(t)))));
+      });
+  using Vertex = typename Mesh::Vertex_index;
+  const auto t = result.mesh.template property_map<Vertex, double>("v:t").first;
+  auto time = result.mesh.template add_property_map<Vertex, double>("v:time", start_time).first;
+  for (Vertex v : result.mesh.vertices())
+    time[v] = start_time + t[v];
   return result;
 }
 

@@ -3,7 +3,9 @@
 //
 // The pvpython script the main job writes beside its outputs, open_in_paraview.py: it opens
 // every output (the initial and aligned surfaces, the seed curves, stream surfaces and stream
-// lines, the obstacle, and the collection of the iterations, NAME_iterations.pvd) in one render view per
+// lines, the obstacle, and the collection of the iterations, NAME_iterations.pvd; in a time
+// series the path surfaces as they grow, NAME_path_surfaces.pvd, and the path lines, with the
+// time controls on the data's time at the end of the path surfaces) in one render view per
 // alignment, with the colouring and the camera of the scene pictures (render_scene_PNG.h):
 // surfaces by `normalized_flux` blue to red over [0, 1] with a colour bar, seed curves black,
 // stream surfaces translucent yellow, stream lines dark red, the obstacle grey, the domain's
@@ -24,6 +26,7 @@
 #include <array>
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -45,6 +48,10 @@ struct Paraview_run {
   /// of `outline_bounds` (xmin, xmax, ymin, ymax, zmin, zmax; the scene pictures' outline).
   std::string field_file;
   std::array<double, 6> outline_bounds{0, 0, 0, 0, 0, 0};
+  /// In a time series (`field_file` a .pvd): the release time of the path surfaces and path lines
+  /// (NAME_path_surfaces.vtp, NAME_path_lines.vtp instead of the stream surfaces and lines) and
+  /// their end.  The view opens at the end, where NAME_path_surfaces.pvd shows them whole.
+  std::optional<std::array<double, 2>> path_times;
 };
 
 namespace detail {
@@ -103,7 +110,9 @@ runs = [
        << ", 'obstacle': " << (r.obstacle ? "True" : "False")
        << ", 'texture': " << detail::python_string(r.texture)
        << ", 'field_file': " << detail::python_string(r.field_file)
-       << ", 'outline_bounds': " << detail::python_list(r.outline_bounds) << "},\n";
+       << ", 'outline_bounds': " << detail::python_list(r.outline_bounds)
+       << ", 'path_times': " << (r.path_times ? detail::python_list(*r.path_times) : std::string("None"))
+       << "},\n";
   py << R"(]
 screenshot = sys.argv[sys.argv.index('--screenshot') + 1] if '--screenshot' in sys.argv else None
 
@@ -199,14 +208,22 @@ for run in runs:
     ColorBy(curves, None)
     curves.AmbientColor = curves.DiffuseColor = [0.02, 0.02, 0.02]
     curves.LineWidth = 4.0
+    unsteady = run['path_times'] is not None
     surfaces_source = None
     if run['stream_surfaces']:
-        surfaces_source, surfaces = open_vtp(name + '_stream_surfaces', view)
+        # In a time series the path surfaces as they grow are shown (with the data's time), the
+        # whole surfaces' file hidden.
+        surfaces_source, surfaces = open_vtp(name + ('_path_surfaces' if unsteady else '_stream_surfaces'), view,
+                                             visible=not unsteady)
+        if unsteady:
+            growing = PVDReader(registrationName=name + '_path_surfaces_over_time',
+                                FileName=os.path.join(here, name + '_path_surfaces.pvd'))
+            surfaces = Show(growing, view)
         ColorBy(surfaces, None)
         surfaces.AmbientColor = surfaces.DiffuseColor = [0.98, 0.8, 0.3]
         surfaces.Opacity = 0.6
     if run['stream_lines']:
-        _, lines = open_vtp(name + '_stream_lines', view)
+        _, lines = open_vtp(name + ('_path_lines' if unsteady else '_stream_lines'), view)
         ColorBy(lines, None)
         lines.AmbientColor = lines.DiffuseColor = [0.6, 0.05, 0.05]
         lines.LineWidth = 2.0
@@ -214,6 +231,12 @@ for run in runs:
                            FileName=os.path.join(here, name + '_iterations.pvd'))
     colour_by_flux(Show(iterations, view), view)
     Hide(iterations, view)
+    if unsteady:  # the time controls play the data's time, not the iterations'
+        keeper = GetTimeKeeper()
+        keeper.SuppressedTimeSources = list(keeper.SuppressedTimeSources) + [iterations]
+        animation = GetAnimationScene()
+        animation.UpdateAnimationUsingDataTimeSteps()
+        animation.AnimationTime = run['path_times'][1]
 
     bar = GetScalarBar(flux, view)
     bar.Title = 'normalized_flux'

@@ -15,9 +15,15 @@
 #   in a view of their own (a picture with many colours);
 # - the script draws the domain's outline: with a data file (argv[3], given to --field), an
 #   Outline of the file whose bounds are the file's own as ParaView reads it; else a box around
-#   every surface the job wrote.
+#   every surface the job wrote;
+# - with a time series (a .pvd, the run at its second step): path surfaces instead of stream
+#   surfaces (their texture checked as above against the velocity they saw), whose
+#   NAME_path_surfaces.pvd lists the data's times after the release, then the end, each step
+#   with no vertex of a later time; the script leaves ParaView's time at the end of the path
+#   surfaces, a time of the data's, and the iterations out of the time controls.
 # Raises on failure (pvbatch then exits non-zero).
 import csv
+import json
 import os
 import shutil
 import subprocess
@@ -31,7 +37,13 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 align_patch, out = sys.argv[1], sys.argv[2]
 field = os.path.abspath(sys.argv[3]) if len(sys.argv) > 3 else None
 shutil.rmtree(out, ignore_errors=True)
-subprocess.run([align_patch, '--faces', '400', '--output', out] + (['--field', field] if field else []), check=True)
+unsteady = field is not None and field.endswith('.pvd')
+data_times = []
+if unsteady:
+    data_times = [float(e.get('timestep')) for e in ET.parse(field).getroot().find('Collection').findall('DataSet')]
+subprocess.run([align_patch, '--faces', '400', '--output', out] + (['--field', field] if field else [])
+               + (['--time', repr(data_times[1])] if unsteady else []), check=True)
+seeded = 'path_surfaces' if unsteady else 'stream_surfaces'
 
 
 def check(condition, message):
@@ -81,15 +93,15 @@ def read_vtp(path):
 # The texture coordinates of the tangential stream surfaces: u is the time-like coordinate of the
 # tangential parametrization, so on each face the mask keeps (mask 0: grad r along the surface
 # follows the flow) its gradient is parallel to the velocity projected on the face.
-surfaces = read_vtp(os.path.join(out, 'tangential_stream_surfaces.vtp'))
+surfaces = read_vtp(os.path.join(out, 'tangential_%s.vtp' % seeded))
 tcoords = surfaces.GetPointData().GetTCoords()
 check(tcoords is not None and tcoords.GetName() == 'TCoords' and tcoords.GetNumberOfComponents() == 2
       and tcoords.GetNumberOfTuples() == surfaces.GetNumberOfPoints(),
-      'tangential_stream_surfaces.vtp: TCoords is not the active texture coordinates, 2 per point')
+      'tangential_%s.vtp: TCoords is not the active texture coordinates, 2 per point' % seeded)
 mask = surfaces.GetCellData().GetArray('texture_mask')
 check(mask is not None and mask.GetNumberOfTuples() == surfaces.GetNumberOfCells()
       and all(0 <= mask.GetValue(i) <= 1 for i in range(mask.GetNumberOfTuples())),
-      'tangential_stream_surfaces.vtp: texture_mask is not one value in [0, 1] per face')
+      'tangential_%s.vtp: texture_mask is not one value in [0, 1] per face' % seeded)
 velocity = surfaces.GetPointData().GetArray('velocity')
 
 
@@ -130,11 +142,31 @@ for c in range(surfaces.GetNumberOfCells()):
     area = area2 ** 0.5 / 2
     weighted_cos += area * abs(dot(grad, v)) / lengths
     kept_area += area
-check(kept_area > 0, 'tangential_stream_surfaces.vtp: the mask keeps no face')
+check(kept_area > 0, 'tangential_%s.vtp: the mask keeps no face' % seeded)
 check(weighted_cos / kept_area > 0.95,
       'the texture coordinate u of the stream surfaces does not follow the flow: mean |cos| %g'
       % (weighted_cos / kept_area))
 print('TCoords: u follows the flow (mean |cos| %.4f on the kept faces)' % (weighted_cos / kept_area))
+
+# The path surfaces as they grow: the data's times after the release, then the end.
+if unsteady:
+    with open(os.path.join(out, 'summary.json')) as f:
+        run = json.load(f)['time_series']
+    end = run['time'] + run['duration']
+    for name in ('tangential', 'orthogonal'):
+        pvd = os.path.join(out, name + '_path_surfaces.pvd')
+        entries = ET.parse(pvd).getroot().find('Collection').findall('DataSet')
+        times = [float(e.get('timestep')) for e in entries]
+        expected = [t for t in data_times if run['time'] < t < end] + [end]
+        check(len(times) == len(expected) and all(abs(a - b) <= 1e-9 for a, b in zip(times, expected)),
+              '%s lists the times %s, expected %s' % (pvd, times, expected))
+        for e in entries:
+            step = read_vtp(os.path.join(out, e.get('file')))
+            vertex_time = step.GetPointData().GetArray('time')
+            latest = vertex_time.GetRange()[1] if step.GetNumberOfPoints() else -1e300
+            check(latest <= float(e.get('timestep')) + 1e-9,
+                  '%s at %s has a vertex of time %s' % (pvd, e.get('timestep'), latest))
+    print('path surfaces over time: %d and %d steps' % (len(times), len(expected)))
 
 # The script, as a user runs it.
 sys.argv = [os.path.join(out, 'open_in_paraview.py'), '--screenshot', os.path.join(out, 'paraview')]
@@ -143,6 +175,12 @@ exec(compile(open(sys.argv[0]).read(), sys.argv[0], 'exec'), {'__file__': sys.ar
 outputs = [f[:-4] for f in os.listdir(out) if f.endswith('.vtp') or f.endswith('.pvd')]
 for output in outputs:
     check(FindSource(output) is not None, 'open_in_paraview.py did not open ' + output)
+if unsteady:
+    animation_time = GetAnimationScene().AnimationTime
+    check(abs(animation_time - end) <= 1e-9, 'the script leaves the time at %s, not %s' % (animation_time, end))
+    suppressed = list(GetTimeKeeper().SuppressedTimeSources)
+    for name in ('tangential', 'orthogonal'):
+        check(FindSource(name + '_iterations') in suppressed, name + '_iterations drive the time controls')
 lut = GetColorTransferFunction('normalized_flux')
 points = lut.RGBPoints
 check(abs(points[0]) < 1e-12 and abs(points[-4] - 1) < 1e-12, 'normalized_flux is coloured over %s' % points[::4])

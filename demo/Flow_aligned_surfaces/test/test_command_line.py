@@ -20,6 +20,13 @@
                                  the first and last with the initial and final flux
   field_directory ALIGN_PATCH    a folder given as --field is called a folder (not an empty
                                  file), exit 1, nothing written
+  time_series ALIGN_PATCH        a time series (.pvd) of the flow (1, 2t, 0): a run at --time
+                                 with a --duration past the last step is warned about and ends
+                                 there (summary.json), writes path surfaces over time (their .pvd
+                                 lists the data's times after --time, then the end) and path lines
+                                 instead of stream surfaces and lines; refused with the file or
+                                 time named, nothing written: a series of one step, a --time
+                                 outside the steps, --time or --duration without a series
   scripts SCRIPTS_DIR            every user script with --help: exit 0, its usage, nothing run
                                  (cmake, apt-get, dpkg-query are fakes that log), nothing written;
                                  run-main-job.sh never takes an option for the output folder
@@ -162,7 +169,8 @@ def check_summary(align_patch, version):
         if summary.get("version") != version:
             fail(f"version {summary.get('version')!r}, expected {version!r}")
         expected_inputs = {"flow": "cylinder", "field": None, "array": None, "center": None,
-                           "normal": [1, 0.4, 0.2], "size": 1, "faces": 200, "alignment": "both"}
+                           "normal": [1, 0.4, 0.2], "size": 1, "time": None, "duration": None, "faces": 200,
+                           "alignment": "both"}
         if summary.get("inputs") != expected_inputs:
             fail(f"inputs {summary.get('inputs')}, expected {expected_inputs}")
         runs = summary.get("runs", [])
@@ -217,6 +225,66 @@ def check_field_directory(align_patch):
             fail(f"--field FOLDER is not called a directory:\n{err}")
         if sorted(os.listdir(work)) != ["case"]:
             fail(f"--field FOLDER wrote {sorted(os.listdir(work))}")
+
+
+def write_series(folder, times):
+    """A .pvd of ASCII ImageData steps over [0, 1]^3 of the flow (1, 2t, 0) at `times`."""
+    entries = ""
+    for k, t in enumerate(times):
+        values = " ".join(f"1 {2 * t} 0" for _ in range(5 ** 3))
+        with open(os.path.join(folder, f"step_{k}.vti"), "w") as f:
+            f.write('<?xml version="1.0"?>\n<VTKFile type="ImageData" version="0.1">\n'
+                    '<ImageData WholeExtent="0 4 0 4 0 4" Origin="0 0 0" Spacing="0.25 0.25 0.25">\n'
+                    '<Piece Extent="0 4 0 4 0 4"><PointData><DataArray type="Float32" Name="velocity" '
+                    f'NumberOfComponents="3" format="ascii">{values}</DataArray></PointData></Piece>\n'
+                    '</ImageData>\n</VTKFile>\n')
+        entries += f'<DataSet timestep="{t}" group="" part="0" file="step_{k}.vti"/>\n'
+    path = os.path.join(folder, "series.pvd")
+    with open(path, "w") as f:
+        f.write(f'<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n<Collection>\n{entries}'
+                '</Collection>\n</VTKFile>\n')
+    return path
+
+
+def check_time_series(align_patch):
+    with tempfile.TemporaryDirectory() as work:
+        series = write_series(work, [0, 0.5, 1])
+        os.mkdir(os.path.join(work, "one"))
+        single = write_series(os.path.join(work, "one"), [0.5])
+        refused = [([single], 1, [single, "has one time step", "at least two"]),
+                   ([series, "--time", "1.5"], 1, ["--time: 1.5 is outside the time steps of " + series, "from 0 to 1"]),
+                   ([series, "--time", "1"], 1, ["--time: 1 is outside"]),
+                   ([os.path.join(work, "one", "step_0.vti"), "--time", "0"], 2, ["--time and --duration are for a time series"]),
+                   ([series, "--duration", "-1"], 2, ["--duration"])]
+        for args, expected, texts in refused:
+            before = sorted(os.listdir(work))
+            status, out, err = run([align_patch, "--faces", "200", "--output", "out", "--quiet", "--field"] + args, work)
+            if status != expected or any(t not in err for t in texts):
+                fail(f"--field {' '.join(args)}: exit {status} (expected {expected}), the message lacks {texts}:\n{err}")
+            if sorted(os.listdir(work)) != before:
+                fail(f"--field {' '.join(args)} wrote {sorted(set(os.listdir(work)) - set(before))}")
+        status, out, err = run([align_patch, "--field", series, "--time", "0.25", "--duration", "5", "--faces", "200",
+                                "--output", "out"], work)
+        if status != 0:
+            fail(f"the run on a time series failed ({status}):\n{out}{err}")
+        if "warning: --duration: 5 from t = 0.25 reaches past the last time step of " + series not in err:
+            fail(f"a --duration past the last step is not warned about:\n{err}")
+        with open(os.path.join(work, "out", "summary.json")) as f:
+            summary = json.load(f)
+        expected = {"steps": 3, "start_time": 0, "end_time": 1, "time": 0.25, "duration": 0.75}
+        if summary.get("time_series") != expected or summary["inputs"]["time"] != 0.25:
+            fail(f"summary.json: time_series {summary.get('time_series')}, inputs {summary['inputs']}; expected {expected}")
+        files = summary["files"]
+        for name in ("tangential_path_surfaces.vtp", "tangential_path_surfaces.pvd", "orthogonal_path_surfaces.vtp",
+                     "orthogonal_path_lines.vtp"):
+            if name not in files:
+                fail(f"the run on a time series did not write {name}: {files}")
+        if any("stream_surfaces" in f or "stream_lines" in f for f in files):
+            fail(f"the run on a time series wrote stream surfaces or lines: {files}")
+        entries = ET.parse(os.path.join(work, "out", "tangential_path_surfaces.pvd")).getroot()
+        times = [float(e.get("timestep")) for e in entries.find("Collection").findall("DataSet")]
+        if times != [0.5, 1.0]:
+            fail(f"tangential_path_surfaces.pvd lists the times {times}, expected [0.5, 1.0]")
 
 
 def fake_tools(work):
@@ -302,6 +370,8 @@ def main():
         check_progress(args[0])
     elif check == "field_directory":
         check_field_directory(args[0])
+    elif check == "time_series":
+        check_time_series(args[0])
     elif check == "summary":
         check_summary(args[0], args[1])
     elif check == "scripts":

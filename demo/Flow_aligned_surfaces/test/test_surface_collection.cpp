@@ -1,10 +1,10 @@
-// The main job's collection of iterations (iteration_collection.h), without ParaView: the .pvd
+// The main job's collection of iterations (surface_collection.h), without ParaView: the .pvd
 // lists exactly the files written, in order, with the time steps 0, 1, 2, ..., every one of them
 // exists and holds the surface of its step, and a file of an earlier run in the folder is gone.
 
 #include "test_files.h"
 
-#include "iteration_collection.h"
+#include "surface_collection.h"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ TEST(IterationCollection, PvdListsExactlyTheFilesWritten)
   write_bytes((out / "run_iterations" / "run_0007.vtp").string(), "stale"); // an earlier, longer run
 
   const Flow flow = FAS::Cylinder_potential_flow<Kernel>(1.0, 1.0);
-  Iteration_collection collection(out, "run");
+  Surface_collection collection(out, "run");
   Mesh tm;
   FAS::make_planar_patch(tm, Point(-2, 1, 0), Vector(0, 1, 0), 1.0, 1.0, 50);
   for (int step = 0; step < 3; ++step) {
@@ -61,7 +61,7 @@ TEST(IterationCollection, UnwritableFolderIsReported)
   std::filesystem::remove_all(out);
   std::filesystem::create_directories(out);
   write_bytes((out / "x").string(), "a file where the output folder should be");
-  Iteration_collection collection(out / "x", "run");
+  Surface_collection collection(out / "x", "run");
   const Flow flow = FAS::Cylinder_potential_flow<Kernel>(1.0, 1.0);
   Mesh tm;
   FAS::make_planar_patch(tm, Point(-2, 1, 0), Vector(0, 1, 0), 1.0, 1.0, 20);
