@@ -5,7 +5,8 @@
 # (doc/Flow_aligned_surfaces/fig/): the LIC-like and arrow textures of a stream surface (the
 # paper's Figure 8) and the stream surface with its seed curves, from
 # demo/Flow_aligned_surfaces/flow_texture_demo.cpp, and the seeding workflow (Figures 4 and 5) from
-# the main job, demo/Flow_aligned_surfaces/align_patch.cpp, rendered
+# the main job, demo/Flow_aligned_surfaces/align_patch.cpp (also on the unsteady cylinder: path
+# surfaces), rendered
 # by VTK off screen (under a private Xvfb when there is no display).  The schematic SVG figures
 # come from doc/Flow_aligned_surfaces/fig/make_figures.py, the session plot from replay_session;
 # the ParaView screenshots from the plugin's tests (demo/Flow_aligned_surfaces/ParaView/test), the
@@ -51,6 +52,15 @@ if [ -f "$cylinder" ]; then
 else
   echo "make-figures: $cylinder not found; fas_main_job_cfd_*.png unchanged" >&2
 fi
+# The main job on the unsteady cylinder's time series: path surfaces.
+unsteady="$root/../shared/data/CYLINDER_UNSTEADY_grid.pvd"
+if [ -f "$unsteady" ]; then
+  "$build/demo/Flow_aligned_surfaces/align_patch" --field "$unsteady" --faces 3000 --output "$work/unsteady" | tee "$work/unsteady.log"
+  cp "$work/unsteady/tangential_scene.png" "$fig/fas_main_job_unsteady_tangential_scene.png"
+  cp "$work/unsteady/tangential_path_surfaces.png" "$fig/fas_main_job_unsteady_path_surfaces.png"
+else
+  echo "make-figures: $unsteady not found; fas_main_job_unsteady_*.png unchanged" >&2
+fi
 # The ParaView pictures, from the plugin's tests (the GUI with the plane widget, the example script).
 if [ -d "$build/demo/Flow_aligned_surfaces/ParaView" ]; then
   cmake --build "$build" --target FlowAlignedSurfaces paraview_reference -j"$(nproc)"
@@ -70,4 +80,5 @@ fi
 echo "make-figures: wrote $fig/fas_texture_noise.png, fas_texture_arrows.png, fas_texture_seed_curves.png,"
 echo "  fas_seeding_seed_curves.png, fas_seeding_stream_surfaces.png, fas_seeding_stream_lines.png,"
 echo "  fas_main_job_{tangential,orthogonal}_scene.png, fas_main_job_cfd_{tangential,orthogonal}_scene.png,"
+echo "  fas_main_job_unsteady_{tangential_scene,path_surfaces}.png,"
 echo "  fas_paraview_gui.png, fas_paraview_main_job.png, fas_tutorial_*.png (with ParaView)"
