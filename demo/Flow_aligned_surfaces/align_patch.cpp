@@ -218,9 +218,11 @@ std::optional<Unsteady_run> unsteady_run(const std::string& file, Time_series se
   return Unsteady_run{std::move(series), time, duration};
 }
 
-// Whether `file` is a time series (a ParaView collection, .pvd).
+// Whether `file` is a time series: a ParaView collection (.pvd), or a folder of files with times.
 bool is_time_series(const std::string& file)
 {
+  if (std::error_code ec; std::filesystem::is_directory(file, ec))
+    return true;
   std::string extension = std::filesystem::path(file).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return std::tolower(c); });
@@ -236,7 +238,10 @@ std::optional<Scene> read_data_scene(const std::string& file, const std::string&
     const std::optional<FAS::Sampled_flow_field_3<Kernel>> field = read_data_field(file, array);
     return field ? make_data_scene(Flow(*field), field->bbox(), file, placement) : std::nullopt;
   }
-  std::optional<Time_series> series = read_time_series(file, array);
+  std::error_code ec;
+  std::optional<Time_series> series = std::filesystem::is_directory(file, ec)
+                                          ? read_time_series_folder(file, array)
+                                          : read_time_series(file, array);
   std::optional<Unsteady_run> run = series ? unsteady_run(file, std::move(*series), times) : std::nullopt;
   if (!run)
     return std::nullopt;
@@ -844,11 +849,13 @@ int main(int argc, char** argv)
       std::string("a built-in analytic flow: ") + built_in_flow_names() + " (default: cylinder)";
   po::options_description options = option_group("Options (lengths and positions in the flow's units)");
   options.add_options()("flow", po::value(&flow_name)->value_name("NAME"), flow_help.c_str());
-  options.add_options()("field", po::value(&field_file)->value_name("FILE"),
-                        "a velocity field read from a data file instead of --flow: legacy VTK, VTK XML "
-                        "(.vti, .vtu, .vts), AmiraMesh (.am), NRRD (.nrrd, .nhdr), with an optional mask "
-                        "array 'inside'; or a time series, a ParaView collection (.pvd) of VTK XML files: "
-                        "the patches aligned at --time, path surfaces and path lines over --duration");
+  options.add_options()(
+      "field", po::value(&field_file)->value_name("FILE"),
+      "a velocity field read from a data file instead of --flow: legacy VTK, VTK XML "
+      "(.vti, .vtu, .vts), AmiraMesh (.am), NRRD (.nrrd, .nhdr), with an optional mask "
+      "array 'inside'; or a time series, a ParaView collection (.pvd) of VTK XML files or a "
+      "folder of VTK XML files whose names end in their time (NAME_<time>.vti): the patches "
+      "aligned at --time, path surfaces and path lines over --duration");
   options.add_options()("array", po::value(&array)->value_name("NAME"),
                         "the velocity array of --field (default: the file's first vector array)");
   options.add_options()(
@@ -931,13 +938,6 @@ int main(int argc, char** argv)
     flow_name = "cylinder";
 
   std::optional<Scene> scene;
-  if (std::error_code ec; !field_file.empty() && std::filesystem::is_directory(field_file, ec)) {
-    // Said before any reading: a user who gives a case folder (OpenFOAM's) needs the file's name.
-    std::cerr << "error: --field: " << field_file
-              << " is a directory; give a velocity file (legacy VTK .vtk, VTK XML .vti/.vtr/.vts/.vtu, "
-                 "AmiraMesh .am or NRRD .nrrd/.nhdr) or a time series (.pvd)\n";
-    return 1;
-  }
   if (!field_file.empty()) {
     scene = read_data_scene(field_file, array, placement, times);
     if (!scene)

@@ -18,15 +18,17 @@
                                  exactly the files of the folder; each NAME_flux.csv has a row per
                                  surface of NAME_iterations.pvd (0 to the iterations reported),
                                  the first and last with the initial and final flux
-  field_directory ALIGN_PATCH    a folder given as --field is called a folder (not an empty
-                                 file), exit 1, nothing written
-  time_series ALIGN_PATCH        a time series (.pvd) of the flow (1, 2t, 0): a run at --time
+  field_directory ALIGN_PATCH    a folder without VTK XML files with times given as --field is
+                                 called a folder (not an empty file), exit 1, nothing written
+  time_series ALIGN_PATCH        a time series (.pvd) of the flow (1, 2t, 0), and the same steps as
+                                 a folder of files named by their times: a run at --time
                                  with a --duration past the last step is warned about and ends
                                  there (summary.json), writes path surfaces over time (their .pvd
                                  lists the data's times after --time, then the end) and path lines
                                  instead of stream surfaces and lines; refused with the file or
                                  time named, nothing written: a series of one step, a --time
-                                 outside the steps, --time or --duration without a series
+                                 outside the steps, --time or --duration without a series, a
+                                 folder of two series
   scripts SCRIPTS_DIR            every user script with --help: exit 0, its usage, nothing run
                                  (cmake, apt-get, dpkg-query are fakes that log), nothing written;
                                  run-main-job.sh never takes an option for the output folder
@@ -35,6 +37,7 @@ Each check works in a fresh temporary folder and exits non-zero with the reason 
 import csv
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -213,32 +216,34 @@ def check_summary(align_patch, version):
 
 
 def check_field_directory(align_patch):
-    """A folder given as --field (an OpenFOAM case, say) is called a folder, the message says what
-    to give instead, the run fails (exit 1) and writes nothing."""
+    """A folder without a series given as --field (an OpenFOAM case, say) is called a folder, the
+    message says what to give instead, the run fails (exit 1) and writes nothing."""
     with tempfile.TemporaryDirectory() as work:
         case = os.path.join(work, "case")
         os.mkdir(case)
         status, out, err = run([align_patch, "--field", case, "--output", "out", "--quiet"], work)
         if status != 1:
             fail(f"--field FOLDER: exit status {status}, expected 1\n{out}{err}")
-        if f"--field: {case} is a directory; give a velocity file (" not in err or "empty" in err:
-            fail(f"--field FOLDER is not called a directory:\n{err}")
+        if f"--field: {case} is a folder without VTK XML files whose names end in their time" not in err \
+                or "a velocity file (legacy VTK .vtk" not in err or "empty" in err:
+            fail(f"--field FOLDER is not called a folder without a time series:\n{err}")
         if sorted(os.listdir(work)) != ["case"]:
             fail(f"--field FOLDER wrote {sorted(os.listdir(work))}")
 
 
-def write_series(folder, times):
-    """A .pvd of ASCII ImageData steps over [0, 1]^3 of the flow (1, 2t, 0) at `times`."""
+def write_series(folder, times, names="step_{k}.vti"):
+    """A .pvd of ASCII ImageData steps over [0, 1]^3 of the flow (1, 2t, 0) at `times`, the steps
+    named by `names` (with the step's index k and time t)."""
     entries = ""
     for k, t in enumerate(times):
         values = " ".join(f"1 {2 * t} 0" for _ in range(5 ** 3))
-        with open(os.path.join(folder, f"step_{k}.vti"), "w") as f:
+        with open(os.path.join(folder, names.format(k=k, t=t)), "w") as f:
             f.write('<?xml version="1.0"?>\n<VTKFile type="ImageData" version="0.1">\n'
                     '<ImageData WholeExtent="0 4 0 4 0 4" Origin="0 0 0" Spacing="0.25 0.25 0.25">\n'
                     '<Piece Extent="0 4 0 4 0 4"><PointData><DataArray type="Float32" Name="velocity" '
                     f'NumberOfComponents="3" format="ascii">{values}</DataArray></PointData></Piece>\n'
                     '</ImageData>\n</VTKFile>\n')
-        entries += f'<DataSet timestep="{t}" group="" part="0" file="step_{k}.vti"/>\n'
+        entries += f'<DataSet timestep="{t}" group="" part="0" file="{names.format(k=k, t=t)}"/>\n'
     path = os.path.join(folder, "series.pvd")
     with open(path, "w") as f:
         f.write(f'<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n<Collection>\n{entries}'
@@ -246,23 +251,41 @@ def write_series(folder, times):
     return path
 
 
+def check_refused(align_patch, work, refused):
+    """Each (ARGS, STATUS, TEXTS) of `refused`: align_patch --field ARGS exits with STATUS, its
+    message holds every one of TEXTS, and nothing is written."""
+    for args, expected, texts in refused:
+        before = sorted(os.listdir(work))
+        status, out, err = run([align_patch, "--faces", "200", "--output", "out", "--quiet", "--field"] + args, work)
+        if status != expected or any(t not in err for t in texts):
+            fail(f"--field {' '.join(args)}: exit {status} (expected {expected}), the message lacks {texts}:\n{err}")
+        if sorted(os.listdir(work)) != before:
+            fail(f"--field {' '.join(args)} wrote {sorted(set(os.listdir(work)) - set(before))}")
+
+
 def check_time_series(align_patch):
     with tempfile.TemporaryDirectory() as work:
         series = write_series(work, [0, 0.5, 1])
-        os.mkdir(os.path.join(work, "one"))
-        single = write_series(os.path.join(work, "one"), [0.5])
-        refused = [([single], 1, [single, "has one time step", "at least two"]),
-                   ([series, "--time", "1.5"], 1, ["--time: 1.5 is outside the time steps of " + series, "from 0 to 1"]),
-                   ([series, "--time", "1"], 1, ["--time: 1 is outside"]),
-                   ([os.path.join(work, "one", "step_0.vti"), "--time", "0"], 2, ["--time and --duration are for a time series"]),
-                   ([series, "--duration", "-1"], 2, ["--duration"])]
-        for args, expected, texts in refused:
-            before = sorted(os.listdir(work))
-            status, out, err = run([align_patch, "--faces", "200", "--output", "out", "--quiet", "--field"] + args, work)
-            if status != expected or any(t not in err for t in texts):
-                fail(f"--field {' '.join(args)}: exit {status} (expected {expected}), the message lacks {texts}:\n{err}")
-            if sorted(os.listdir(work)) != before:
-                fail(f"--field {' '.join(args)} wrote {sorted(set(os.listdir(work)) - set(before))}")
+        # The same steps as a folder of files named by their times, and a folder of two series.
+        for folder, names in (("one", "step_{k}.vti"), ("named", "u_{t}.vti"), ("mixed", "u_{t}.vti"),
+                              ("mixed", "v_{t}.vti")):
+            os.makedirs(os.path.join(work, folder), exist_ok=True)
+            pvd = write_series(os.path.join(work, folder), [0.5] if folder == "one" else [0, 0.5, 1], names)
+            if folder != "one":
+                os.remove(pvd)
+        single = os.path.join(work, "one", "series.pvd")
+        check_refused(align_patch, work, [
+            ([single], 1, [single, "has one time step", "at least two"]),
+            ([series, "--time", "1.5"], 1, ["--time: 1.5 is outside the time steps of " + series, "from 0 to 1"]),
+            ([series, "--time", "1"], 1, ["--time: 1 is outside"]),
+            ([os.path.join(work, "one", "step_0.vti"), "--time", "0"], 2, ["--time and --duration are for a time series"]),
+            ([series, "--duration", "-1"], 2, ["--duration"]),
+            ([os.path.join(work, "mixed")], 1, ["holds files of two series, u_<time>.vti and v_<time>.vti"])])
+        status, out, err = run([align_patch, "--field", os.path.join(work, "named"), "--time", "0.25", "--faces", "200",
+                                "--alignment", "tangential", "--output", "out_named"], work)
+        if status != 0 or "time series of 3 steps from t = 0 to 1" not in out:
+            fail(f"the run on a folder of files with times failed ({status}):\n{out}{err}")
+        shutil.rmtree(os.path.join(work, "out_named"))
         status, out, err = run([align_patch, "--field", series, "--time", "0.25", "--duration", "5", "--faces", "200",
                                 "--output", "out"], work)
         if status != 0:
