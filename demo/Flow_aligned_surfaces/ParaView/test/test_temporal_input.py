@@ -13,12 +13,16 @@ paraview_reference unsteady_field, read by ParaView's PVD reader.
   is not followed again; one factorization throughout.
 - Stream Surface From Curve integrates the flow of the requested time: every vertex keeps the
   distance of its seed point to the axis of that time.
+- Parametrize And Seed and Grow Boundary at a step's time give what they give on that step's
+  own file read as a steady data set, and something else at the other end of the series.
 """
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
 import math
 import os
 import sys
+
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fas_plugin_test as t
@@ -190,3 +194,56 @@ with t.Messages() as messages:
 out = servermanager.Fetch(texture, idx=0)
 if out.GetNumberOfCells() != 0 or "Flow Texture" in messages.text():
     raise AssertionError("Flow Texture at the release time: %d faces, messages %r" % (out.GetNumberOfCells(), messages.text()))
+
+
+# 7. Parametrize And Seed and Grow Boundary sample the flow of the requested time: at a step's
+# time each gives what it gives on that step's own file read as a steady data set, and at the
+# other end of the series something else.  Their surface: the one Flow-Aligned Surface followed
+# to t = 0.5, as a file.
+surface_file = setup.path("followed_surface.vtp")
+writer = vtkXMLPolyDataWriter()
+writer.SetFileName(surface_file)
+writer.SetDataModeToAscii()  # (appended data: not read by ParaView's VTK with bookworm's expat)
+writer.SetInputData(t.fetch(played, 0.5))
+writer.Write()
+surface = XMLPolyDataReader(FileName=[surface_file])
+
+
+def expect_the_steps_flow(make, values, what):
+    """`make(input)` is a filter of `surface` in the flow of `input`: on the series at t = 0.25 and
+    t = 1, `values(output)` (a list of numbers) is what it is on the step's file, and differs
+    between the two times."""
+    temporal = make(data)
+    at_steps = {}
+    for time, step_file in [(0.25, "swirl_1.vti"), (1.0, "swirl_4.vti")]:
+        at_steps[time] = values(t.fetch(temporal, time))
+        on_step = values(t.fetch(make(XMLImageDataReader(FileName=[setup.path(step_file)]))))
+        if len(on_step) != len(at_steps[time]) or max(abs(a - b) for a, b in zip(on_step, at_steps[time])) > 1e-9:
+            raise AssertionError("%s at t = %g differs from its output on %s" % (what, time, step_file))
+    early, late = at_steps[0.25], at_steps[1.0]
+    difference = max([abs(a - b) for a, b in zip(early, late)] + [float(len(early) != len(late))])
+    print("%s at t = 0.25 and t = 1: the steps' own outputs; they differ by %.3g" % (what, difference))
+    if not difference > 1e-4:  # far above the 1e-9 of the comparison with the steps
+        raise AssertionError("%s gives the same output at t = 0.25 and t = 1" % what)
+    if list(temporal.TimestepValues) != times:
+        raise AssertionError("%s's time steps are %s" % (what, list(temporal.TimestepValues)))
+
+
+def parametrize(flow):
+    p = ParametrizeAndSeed(Input=flow, Surface=surface)
+    p.Velocity = ["POINTS", "velocity"]
+    return p
+
+
+def grow(flow):
+    g = GrowBoundary(Input=flow, Surface=surface)
+    g.Velocity = ["POINTS", "velocity"]
+    g.Alignment = "Tangential (stream surface)"
+    g.GrowthMode = "Across the flow"
+    g.Distance = 0.1
+    g.NumberOfIterations = 20
+    return g
+
+
+expect_the_steps_flow(parametrize, lambda out: [v[0] for v in t.array_values(out, "r")], "Parametrize And Seed")
+expect_the_steps_flow(grow, lambda out: [x for p in points_of(out) for x in p], "Grow Boundary")
