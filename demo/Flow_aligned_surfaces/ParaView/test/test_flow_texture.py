@@ -139,4 +139,15 @@ t.expect_error_keeps_outputs(texture, range(2), before, ["Flow Texture: parametr
 # A point that belongs to no triangle (point i must stay vertex i, it cannot be dropped).
 texture.Surface = AppendGeometry(Input=[patch_file("plane_again", plane), PointSource(NumberOfPoints=1)])
 t.expect_error_keeps_outputs(texture, range(2), before, ["point 449 belongs to no triangle", "Filters > Clean"], "isolated point")
+# A fresh Flow Texture whose first update fails has no earlier output to keep: one message, its
+# own, and the texture all the same (an empty image would make the pipeline complain of its extent).
+fresh = FlowTexture(Input=texture.Input, Surface=moved)
+fresh.Velocity = ["POINTS", "velocity"]
+with t.Messages() as messages:
+    fresh.UpdatePipeline()
+text = messages.text()
+if "Flow Texture: parametrize_tangential" not in text or "extent" in text:
+    raise AssertionError("a first update that fails says: %s" % text)
+if t.fetch_port(fresh, 1).GetNumberOfPoints() != 128 * 128:
+    raise AssertionError("a first update that fails gives no texture")
 print("Flow Texture: all checks passed")

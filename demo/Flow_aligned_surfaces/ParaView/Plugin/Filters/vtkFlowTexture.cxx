@@ -266,6 +266,17 @@ int vtkFlowTexture::RequestData(
   {
     const bool kept = in.kept.restore(outputVector);
     vtkErrorMacro(<< "Flow Texture: " << e.what() << (kept ? "; the previous output is kept" : ""));
+    // Without an earlier output the texture is given all the same (it does not depend on the
+    // flow): an empty image would not have the extent the pipeline asked for, a second error.
+    if (!kept)
+      try
+      {
+        vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture_piece());
+      }
+      catch (const std::exception&)
+      {
+        // a property of the texture itself is wrong: said above
+      }
     return 1;
   }
 }
