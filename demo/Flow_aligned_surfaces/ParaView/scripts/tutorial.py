@@ -7,7 +7,7 @@ and takes its screenshots between the blocks, so that what the manual shows is w
 
 (PLUGIN: FlowAlignedSurfaces.so, lib/paraview-5.11/plugins/FlowAlignedSurfaces/ of the build tree;
 CASE.foam: an OpenFOAM case with U, "-" for none; without it the OpenFOAM part is left out, and
-without the .pvd the unsteady part.)  The texture is
+without the .pvd the unsteady part.)  The textures are
 written into the current folder.  In the GUI's Python shell (View > Python Shell) the blocks can
 be pasted one by one after setting `cylinder_file` and `case_file`."""
 from paraview.simple import *
@@ -25,6 +25,7 @@ if "cylinder_file" not in globals():  # run as a script, not by the GUI test
     case_file = sys.argv[3] if len(sys.argv) >= 4 and sys.argv[3] != "-" else None
     unsteady_file = sys.argv[4] if len(sys.argv) == 5 else None
     texture_file = os.path.abspath("flow_texture.png")
+    path_texture_file = os.path.abspath("path_surface_texture.png")
 
 # [open]
 data = LegacyVTKReader(FileNames=[cylinder_file])  # File > Open, then Apply
@@ -199,3 +200,24 @@ if globals().get("unsteady_file"):
     scene.Play()  # the data's time: the surface follows the flow from step to step
     # [unsteady_surface]
     step("unsteady_surface")
+
+    # [unsteady_path_surface]
+    line = Line(Point1=[0.55, 0.3, 0.05], Point2=[0.55, 0.3, 0.36], Resolution=30)  # Sources > Line
+    path = StreamSurfaceFromCurve(Input=series, Seeds=line)
+    path.SurfaceType = "Path Surface"
+    path.StartTime = series.TimestepValues[0]  # released at the first step, grown up to the view's time
+    path_texture = FlowTexture(Input=series, Surface=path)
+    path_texture.PathSurface = 1  # the texture follows the path lines, not the flow of one time
+    SaveData(path_texture_file, proxy=OutputPort(path_texture, 1))
+    path_textured = Show(OutputPort(path_texture, 0), view)
+    ColorBy(path_textured, None)
+    path_textured.DiffuseColor = [1, 1, 1]
+    path_textured.Texture = CreateTexture(path_texture_file)
+    Hide(followed, view)
+    scene.AnimationTime = series.TimestepValues[-1]  # the end of the period: the whole path surface
+    view.CameraPosition = [0.85, 1.9, 0.75]  # the mouse: the path surface from the side it grows on
+    view.CameraFocalPoint = [0.8, 0.3, 0.2]
+    view.CameraViewUp = [0, 0, 1]
+    Render(view)
+    # [unsteady_path_surface]
+    step("unsteady_path_surface")

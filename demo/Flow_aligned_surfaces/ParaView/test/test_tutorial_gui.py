@@ -39,7 +39,8 @@ try:
            "cylinder_file": os.environ["FAS_TUTORIAL_DATA"],
            "case_file": openfoam_case.write_case(os.path.join(output, "case")),
            "unsteady_file": os.environ.get("FAS_TUTORIAL_UNSTEADY_DATA"),
-           "texture_file": os.path.join(output, "flow_texture.png")}
+           "texture_file": os.path.join(output, "flow_texture.png"),
+           "path_texture_file": os.path.join(output, "path_surface_texture.png")}
     previous = [None]
     started = [time.time()]
 
@@ -106,6 +107,19 @@ try:
             expect(g["scene"].AnimationTime == last, "the scene is at %g, not %g" % (g["scene"].AnimationTime, last))
             expect(field(g["followed"], "time") == last, "the surface is of time %g" % field(g["followed"], "time"))
             return check_aligned(g["followed"], "followed to the last step")
+        if name == "unsteady_path_surface":
+            first, last = g["series"].TimestepValues[0], g["series"].TimestepValues[-1]
+            surface = servermanager.Fetch(g["path_texture"], idx=0)
+            start = servermanager.Fetch(g["path"]).GetFieldData().GetArray("start_time").GetValue(0)
+            expect(surface.GetNumberOfCells() >= 100 and start == first,
+                   "path surface: %d faces, released at %g" % (surface.GetNumberOfCells(), start))
+            expect(surface.GetPointData().GetTCoords() is not None, "the path surface has no texture coordinates")
+            mask = surface.GetCellData().GetArray("texture_mask")
+            kept = sum(1 for i in range(mask.GetNumberOfTuples()) if mask.GetValue(i) < 0.5) / mask.GetNumberOfTuples()
+            expect(kept >= 0.8, "the texture is masked on %.0f%% of the faces" % (100 - 100 * kept))
+            expect(g["scene"].AnimationTime == last, "the scene is at %g, not %g" % (g["scene"].AnimationTime, last))
+            return "%d faces from t = %g to %g, texture kept on %.0f%% of them" % (
+                surface.GetNumberOfCells(), first, last, 100 * kept)
         raise AssertionError("no check for step " + name)
 
     def step(name):
@@ -127,7 +141,8 @@ try:
     with open(tutorial) as f:
         exec(compile(f.read(), tutorial, "exec"), run)
     expected = ["open", "apply", "drag", "play", "grow", "seed", "stream", "texture",
-                "openfoam_open", "openfoam_surface", "openfoam_stream", "unsteady_open", "unsteady_surface"]
+                "openfoam_open", "openfoam_surface", "openfoam_stream", "unsteady_open", "unsteady_surface",
+                "unsteady_path_surface"]
     missing = [n for n in expected if not os.path.exists(os.path.join(output, "fas_tutorial_%s.png" % n))]
     expect(not missing, "steps without a screenshot: %s" % missing)
     say("tutorial: all %d steps checked" % len(expected))
