@@ -28,7 +28,7 @@
                                  instead of stream surfaces and lines; refused with the file or
                                  time named, nothing written: a series of one step, a --time
                                  outside the steps, --time or --duration without a series, a
-                                 folder of two series
+                                 folder of two series, a step that cannot be read
   scripts SCRIPTS_DIR            every user script with --help: exit 0, its usage, nothing run
                                  (cmake, apt-get, dpkg-query are fakes that log), nothing written;
                                  run-main-job.sh never takes an option for the output folder
@@ -274,7 +274,11 @@ def check_time_series(align_patch):
             if folder != "one":
                 os.remove(pvd)
         single = os.path.join(work, "one", "series.pvd")
+        os.makedirs(os.path.join(work, "broken"))
+        broken = write_series(os.path.join(work, "broken"), [0, 0.5, 1])
+        os.remove(os.path.join(work, "broken", "step_1.vti"))
         check_refused(align_patch, work, [
+            ([broken], 1, [broken, "step 1 (timestep 0.5, file", "step_1.vti"]),
             ([single], 1, [single, "has one time step", "at least two"]),
             ([series, "--time", "1.5"], 1, ["--time: 1.5 is outside the time steps of " + series, "from 0 to 1"]),
             ([series, "--time", "1"], 1, ["--time: 1 is outside"]),
