@@ -257,23 +257,15 @@ public:
     m_max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 100u);
     m_visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Visitor());
     m_callback = internal::progress_callback(np);
-    m_eta = choose_parameter(get_parameter(np, fnp::max_rotation_angle_t()), 0.1);
-    m_epsilon = choose_parameter(get_parameter(np, fnp::convergence_angle_t()), 1e-6);
-    m_convergence_step = choose_parameter(get_parameter(np, fnp::convergence_step_t()), 1e-4);
-    m_theta_max = choose_parameter(get_parameter(np, fnp::max_dihedral_angle_t()), CGAL_PI / 2);
-    m_area_correction = choose_parameter(get_parameter(np, fnp::area_correction_t()), true);
+    set_max_rotation_angle(choose_parameter(get_parameter(np, fnp::max_rotation_angle_t()), 0.1));
+    set_convergence_angle(choose_parameter(get_parameter(np, fnp::convergence_angle_t()), 1e-6));
+    set_convergence_step(choose_parameter(get_parameter(np, fnp::convergence_step_t()), 1e-4));
+    set_max_dihedral_angle(choose_parameter(get_parameter(np, fnp::max_dihedral_angle_t()), CGAL_PI / 2));
+    set_area_correction(choose_parameter(get_parameter(np, fnp::area_correction_t()), true));
     m_relative_constraint_weight = choose_parameter(get_parameter(np, fnp::constraint_weight_t()), 1e-3);
     m_parallel = choose_parameter(get_parameter(np, fnp::use_parallelism_t()), false);
     internal::use_parallelism_in(m_solver.solver(), m_parallel);
-    check_parameter("max_rotation_angle", m_eta, m_eta > 0 && m_eta <= CGAL_PI);
-    check_parameter("convergence_angle", m_epsilon, m_epsilon >= 0);
-    check_parameter("convergence_step", m_convergence_step, m_convergence_step >= 0);
-    check_parameter("max_dihedral_angle", m_theta_max, m_theta_max > 0 && m_theta_max <= CGAL_PI);
     check_parameter("constraint_weight", m_relative_constraint_weight, m_relative_constraint_weight > 0);
-    m_cos_theta_max_margin = std::cos(m_theta_max) + 1e-9;
-    // Requested angles never exceed pi/2, so a larger eta never clamps.
-    m_cos_eta = std::cos((std::min)(m_eta, CGAL_PI / 2));
-    m_sin_eta = std::sin((std::min)(m_eta, CGAL_PI / 2));
 
     using Clock = std::chrono::steady_clock;
     const auto checking = Clock::now();
@@ -713,6 +705,7 @@ public:
   {
     m_alignment = alignment;
   }
+
   /// The flow field.
   const FlowField& field() const
   {
@@ -744,6 +737,75 @@ public:
   {
     return internal::normalized_flux(internal::read_positions(m_vertices, m_vpm), m_arrays.face_vertices,
                                      m_field, m_gt);
+  }
+  /// @}
+
+  /// \name Parameters of the Iterations
+  /// The parameters of the constructor that do not enter \f$ L + W \f$: changing them between
+  /// iterations keeps the factorization, and the next iterations use the new values (`run()`
+  /// takes its number of iterations as an argument).
+  /// \throws std::invalid_argument from a setter, naming the parameter, when the value is out of
+  ///         the range the constructor accepts; the parameter is then left as it was.
+  /// @{
+
+  /// η, the largest rotation of a face in one iteration (radians, in \f$ ]0, \pi] \f$).
+  double max_rotation_angle() const
+  {
+    return m_eta;
+  }
+  /// sets η.
+  void set_max_rotation_angle(double eta)
+  {
+    check_parameter("max_rotation_angle", eta, eta > 0 && eta <= CGAL_PI);
+    m_eta = eta;
+    // Requested angles never exceed pi/2, so a larger eta never clamps.
+    m_cos_eta = std::cos((std::min)(m_eta, CGAL_PI / 2));
+    m_sin_eta = std::sin((std::min)(m_eta, CGAL_PI / 2));
+  }
+  /// θmax, the dihedral angle above which the fold correction acts (radians, in \f$ ]0, \pi] \f$).
+  double max_dihedral_angle() const
+  {
+    return m_theta_max;
+  }
+  /// sets θmax.
+  void set_max_dihedral_angle(double theta_max)
+  {
+    check_parameter("max_dihedral_angle", theta_max, theta_max > 0 && theta_max <= CGAL_PI);
+    m_theta_max = theta_max;
+    m_cos_theta_max_margin = std::cos(m_theta_max) + 1e-9;
+  }
+  /// ε, the convergence angle (radians, at least 0).
+  double convergence_angle() const
+  {
+    return m_epsilon;
+  }
+  /// sets ε.
+  void set_convergence_angle(double epsilon)
+  {
+    check_parameter("convergence_angle", epsilon, epsilon >= 0);
+    m_epsilon = epsilon;
+  }
+  /// The convergence step: the fraction of the bounding-box diagonal below which the largest
+  /// vertex displacement of an iteration means convergence (at least 0; 0: the rule is off).
+  double convergence_step() const
+  {
+    return m_convergence_step;
+  }
+  /// sets the convergence step.
+  void set_convergence_step(double step)
+  {
+    check_parameter("convergence_step", step, step >= 0);
+    m_convergence_step = step;
+  }
+  /// Whether gradients are rescaled by \f$ \sqrt{A_j^0/A_j^k} \f$.
+  bool area_correction() const
+  {
+    return m_area_correction;
+  }
+  /// sets whether gradients are rescaled by \f$ \sqrt{A_j^0/A_j^k} \f$.
+  void set_area_correction(bool correct)
+  {
+    m_area_correction = correct;
   }
   /// @}
 

@@ -72,6 +72,25 @@ surface.UpdatePropertyInformation()
 if surface.GetPropertyValue("NumberOfFactorizations") != 1:
     raise AssertionError("the information property NumberOfFactorizations is not 1")
 
+# η, θmax and ε do not enter L + W: changing them re-runs the iterations with the same
+# factorization; a smaller η moves the surface less in 3 iterations, and η back at 0.1 gives the
+# library's surface again.
+surface.MaxRotationAngle = 0.02
+surface.MaxDihedralAngle = 1.2
+surface.ConvergenceAngle = 1e-5
+slower = t.fetch(surface, 3)
+if t.max_point_distance(slower, reference("rotated_3", center, normal, 0.8, 800, "planar", "tangential", 3)) < 1e-3:
+    raise AssertionError("a smaller Max Rotation Angle did not slow the first iterations")
+if t.field_value(slower, "number_of_factorizations") != 1:
+    raise AssertionError("changing η, θmax and ε refactored")
+surface.MaxRotationAngle = 0.1
+surface.MaxDihedralAngle = 1.5707963267948966
+surface.ConvergenceAngle = 1e-6
+t.expect_same_surface(t.fetch(surface, 25), reference("rotated", center, normal, 0.8, 800, "planar", "tangential", 25),
+                      "η, θmax and ε back at their values")
+if t.field_value(t.fetch(surface, 25), "number_of_factorizations") != 1:
+    raise AssertionError("changing η, θmax and ε back refactored")
+
 # Orthogonal alignment of a disk: a new alignment needs no factorization either; a new patch does.
 surface.Alignment = "Orthogonal (seeding surface)"
 out = t.fetch(surface, 25)

@@ -40,12 +40,7 @@ struct Patch_key {
   int shape;
   double size;
   int faces;
-  double eta, theta_max, epsilon;
-  bool operator==(const Patch_key& o) const
-  {
-    return shape == o.shape && size == o.size && faces == o.faces && eta == o.eta &&
-           theta_max == o.theta_max && epsilon == o.epsilon;
-  }
+  bool operator==(const Patch_key& o) const { return shape == o.shape && size == o.size && faces == o.faces; }
 };
 
 // The patch the properties ask for: Center, Normal, Size (or the default patch, Size 0).
@@ -430,8 +425,7 @@ void vtkFlowAlignedSurface::Internals::prepare_patch(vtkFlowAlignedSurface* f, c
   std::copy(requested_pose.begin(), requested_pose.begin() + 3, pose.center.begin());
   std::copy(requested_pose.begin() + 3, requested_pose.begin() + 6, pose.normal.begin());
   pose.size = requested_pose[6];
-  const Patch_key key{ f->PatchShape, pose.size, f->NumberOfFaces, f->MaxRotationAngle,
-    f->MaxDihedralAngle, f->ConvergenceAngle };
+  const Patch_key key{ f->PatchShape, pose.size, f->NumberOfFaces };
   const std::array<double, 6> center_normal{ pose.center[0], pose.center[1], pose.center[2], pose.normal[0],
     pose.normal[1], pose.normal[2] };
   if (!in.key || !(*in.key == key))
@@ -448,10 +442,7 @@ void vtkFlowAlignedSurface::Internals::prepare_patch(vtkFlowAlignedSurface* f, c
     f->UpdateProgress(0.01);
     in.deformation = std::make_unique<Deformation>(in.tm, in.field,
       f->Alignment == vtkFlowAlignedSurface::ORTHOGONAL ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL,
-      FAS::parameters::max_rotation_angle(f->MaxRotationAngle,
-        FAS::parameters::max_dihedral_angle(f->MaxDihedralAngle,
-          FAS::parameters::convergence_angle(
-            f->ConvergenceAngle, FAS::parameters::use_parallelism(true)))));
+      FAS::parameters::use_parallelism(true));
     in.key = key;
     in.pose = center_normal;
     in.alignment = f->Alignment;
@@ -472,6 +463,16 @@ void vtkFlowAlignedSurface::Internals::prepare_patch(vtkFlowAlignedSurface* f, c
     in.pose = center_normal;
     in.initial = in.current_positions();
     in.positions.clear();
+    in.restart = true;
+  }
+  // η, θmax and ε do not enter L + W: set anew, the iterations restart with the factorization kept.
+  Deformation& d = *in.deformation;
+  if (f->MaxRotationAngle != d.max_rotation_angle() || f->MaxDihedralAngle != d.max_dihedral_angle() ||
+    f->ConvergenceAngle != d.convergence_angle())
+  {
+    d.set_max_rotation_angle(f->MaxRotationAngle);
+    d.set_max_dihedral_angle(f->MaxDihedralAngle);
+    d.set_convergence_angle(f->ConvergenceAngle);
     in.restart = true;
   }
   if (f->Alignment != in.alignment)
