@@ -315,6 +315,22 @@ TEST(integrate_pathline, writes_the_time_of_every_step)
   EXPECT_EQ(std::count(times.begin(), times.end(), t0), 1) << "the seed, once, at t0";
 }
 
+TEST(integrate_pathline, ends_where_the_series_ends_at_max_time)
+{
+  // A time series from 6.5 to 6.833373 integrated from its start for max_time = 6.833373 - 6.5
+  // (whose sum with 6.5 rounds past the series' end): the line ends at max_time, on the last
+  // step's flow, not as a line leaving the field's time range short of it.
+  const FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>> flow(
+      {6.5, 6.833373}, {FAS::Uniform_flow<K>(Vector_3(1, 0, 0)), FAS::Uniform_flow<K>(Vector_3(1, 1, 0))});
+  const double duration = 6.833373 - 6.5;
+  std::vector<Point_3> points;
+  const auto r = FAS::integrate_pathline(flow, Point_3(0, 0, 0), 6.5, std::back_inserter(points),
+                                         FAS::parameters::max_time(duration));
+  EXPECT_EQ(r.forward.termination, Streamline_termination::MAX_TIME);
+  EXPECT_EQ(r.forward.integration_time, duration);
+  EXPECT_NEAR(points.back().x(), duration, 1e-9);
+}
+
 TEST(integrate_streamline, writes_signed_integration_times)
 {
   // A stream line's times are the signed integration times: negative on the backward half.

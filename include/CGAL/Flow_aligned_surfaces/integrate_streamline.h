@@ -496,7 +496,10 @@ Streamline_report integrate_pathline(const UnsteadyFlowField& field, const Point
                                      const NamedParameters& np = CGAL::parameters::default_values())
 {
   const std::string caller = "integrate_pathline";
-  const internal::Streamline_options o = internal::read_streamline_options(np, caller);
+  internal::Streamline_options o = internal::read_streamline_options(np, caller);
+  // No step past max_time: a line that ends where its time series ends would otherwise sample
+  // the field after it, and stop short of it as a line leaving the time range.
+  o.tolerances.max_parameter = o.max_time;
   if (!std::isfinite(t0)) {
     std::ostringstream msg;
     msg << caller << ": t0 is " << t0 << "; expected a finite time";
