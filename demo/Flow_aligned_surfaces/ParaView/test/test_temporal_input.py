@@ -15,6 +15,7 @@ paraview_reference unsteady_field, read by ParaView's PVD reader.
   distance of its seed point to the axis of that time.
 - Parametrize And Seed and Grow Boundary at a step's time give what they give on that step's
   own file read as a steady data set, and something else at the other end of the series.
+- A path surface of one time step is refused, saying why.
 """
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
@@ -247,3 +248,12 @@ def grow(flow):
 
 expect_the_steps_flow(parametrize, lambda out: [v[0] for v in t.array_values(out, "r")], "Parametrize And Seed")
 expect_the_steps_flow(grow, lambda out: [x for p in points_of(out) for x in p], "Grow Boundary")
+
+# 8. A path surface of a single time step (one step's own file) is refused, saying why.
+single = StreamSurfaceFromCurve(Input=XMLImageDataReader(FileName=[setup.path("swirl_1.vti")]), Seeds=line)
+single.Velocity = ["POINTS", "velocity"]
+single.SurfaceType = "Path Surface"
+with t.Messages() as messages:
+    single.UpdatePipeline()
+t.expect_message(messages, ["Surface Type is Path Surface, but the Input has no time steps"],
+                 "a path surface of one time step")
