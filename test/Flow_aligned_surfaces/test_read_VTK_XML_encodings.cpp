@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <optional>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -212,6 +213,51 @@ std::vector<Encoding> every_encoding()
   return r;
 }
 
+// The encodings of the sweeps over data-set kinds and pieces: every one, or under the sanitizers
+// (FAS_TEST_SANITIZED, at -O0) a sample in which every pair of values of two of the encoding's
+// properties (mode, header width, byte order, compressor) that some encoding has still occurs:
+// 13 of the 49 of a build with every compressor, picked greedily (the encoding with the most
+// pairs not yet taken, the first one on ties).  EveryEncodingOfAnImageGivesTheValuesWritten
+// keeps all of them in both builds.
+std::vector<Encoding> swept_encodings()
+{
+  std::vector<Encoding> all = every_encoding();
+#ifndef FAS_TEST_SANITIZED
+  return all;
+#else
+  using Pair = std::array<int, 4>; // property i, property j, value of i, value of j
+  auto pairs = [](const Encoding& e) {
+    const int values[4] = {int(e.mode), int(e.wide_header), int(e.big_endian), int(e.codec)};
+    std::set<Pair> r;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        r.insert(Pair{{i, j, values[i], values[j]}});
+    return r;
+  };
+  std::set<Pair> wanted, taken;
+  for (const Encoding& e : all)
+    for (const Pair& p : pairs(e))
+      wanted.insert(p);
+  std::vector<Encoding> sample;
+  while (taken != wanted) {
+    std::size_t best = 0, best_new = 0;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      std::size_t n = 0;
+      for (const Pair& p : pairs(all[i]))
+        n += taken.count(p) == 0 ? 1 : 0;
+      if (n > best_new) {
+        best = i;
+        best_new = n;
+      }
+    }
+    for (const Pair& p : pairs(all[best]))
+      taken.insert(p);
+    sample.push_back(all[best]);
+  }
+  return sample;
+#endif
+}
+
 template <class Field>
 Field read_or_fail(const std::string& file, const std::string& what)
 {
@@ -289,7 +335,7 @@ void expect_linear_field(const Field& f, const std::string& what)
 TEST(ReadVTKXMLEncodings, EveryKindOfDataSetGivesTheLinearField)
 {
   const Array v = velocity("Float64");
-  for (const Encoding& e : every_encoding()) {
+  for (const Encoding& e : swept_encodings()) {
     const std::string what = e.describe();
     write_bytes(temporary("kind.vti"), image_file(e, v));
     write_bytes(temporary("kind.vtr"), rectilinear_file(e, v));
@@ -319,7 +365,7 @@ TEST(ReadVTKXMLEncodings, PiecesOfAnUnstructuredGridAreConcatenated)
     for (int d = 0; d < 3; ++d)
       moved.values[3 * n + std::size_t(d)] = e[d];
   }
-  for (const Encoding& e : every_encoding()) {
+  for (const Encoding& e : swept_encodings()) {
     Writer w(e);
     const std::string file = temporary("pieces.vtu");
     write_bytes(file, w.file("UnstructuredGrid", "<UnstructuredGrid>\n" + unstructured_piece(w, velocity("Float64"), nullptr) +
