@@ -7,8 +7,9 @@
 PLUGIN, REFERENCE: the plugin and paraview_reference of a build (the tests' arguments).  The
 cylinder flow image (61 x 41 x 21 points, read piece-wise by the ranks) and a seed line across
 the flow whose surface passes the cylinder and crosses the plane where the pieces meet.  A
-particle's next position depends on its last sample, so on several ranks every sample is an
-exchange of its own.  Prints the median over 5 updates of the filter's wall time, and the
+particle's next position depends on its last sample: on several ranks the library asks for the
+samples of a time line's particles stage by stage, one exchange per Runge-Kutta stage (and per
+stage of the particles it re-integrates from the seed where the front stretches).  Prints the median over 5 updates of the filter's wall time, and the
 number of exchanges; the difference to the 1-process time, divided by the exchanges, is the
 cost of one.
 """

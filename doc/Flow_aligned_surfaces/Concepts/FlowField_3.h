@@ -42,6 +42,18 @@ between copies with a `std::shared_ptr`, so their copies are cheap too.  The cal
 `const`; it should not modify state shared between calls, so that a field can be sampled from
 several threads at once (`parameters::use_parallelism(true)`).
 
+<b>Batches (optional).</b>  A field whose samples are cheaper many at a time than one by one
+(a field whose pieces live on the processes of a cluster, where every query is an exchange of
+messages) may add `sample()`, which answers a batch of points in one call.  The algorithms then
+ask for the points they know beforehand in one batch (the face centroids of a measure or of a
+parametrization), and integrate stream surfaces a time line at a time: every particle's
+Runge-Kutta stage in one batch, re-integrated particles level by level.  The results are the same,
+bit for bit, as with the call operator alone (the same samples, the same arithmetic); the report
+of `integrate_stream_surface()` counts the batches (`Stream_surface_report::number_of_sample_batches`).
+On one process a field should not offer it: a stream surface then runs in rounds, one per
+stage, and rounds cost more than they save without exchanges (20 times the time of the same
+surface point by point, in the package's tests).
+
 \cgalHasModelsBegin
 \cgalHasModels{Any callable `std::optional<Vector_3>(const Point_3&)`, such as a lambda}
 \cgalHasModels{`CGAL::Flow_aligned_surfaces::Uniform_flow<GeomTraits>`}
@@ -80,6 +92,11 @@ public:
 
   /// Returns the velocity at `p`, or `std::nullopt` when `p` is outside the domain.
   std::optional<Vector_3> operator()(const Point_3& p) const;
+
+  /// Optional.  Returns the velocities at `points`, in order: what the call operator returns for
+  /// each, as many as there are points.  An algorithm that finds a batch of another size throws
+  /// `std::logic_error`.
+  std::vector<std::optional<Vector_3>> sample(const std::vector<Point_3>& points) const;
 
   /// @}
 };

@@ -40,5 +40,11 @@ public:
   /// domain at that time.
   std::optional<Vector_3> operator()(const Point_3& p, double t) const;
 
+  /// Optional.  Returns the velocities at `points[i]` at time `times[i]`, in order, as
+  /// `FlowField_3::sample()` does for a steady field (the path surfaces of
+  /// `integrate_stream_surface()` ask for their stages in batches).
+  std::vector<std::optional<Vector_3>> sample(const std::vector<Point_3>& points,
+                                              const std::vector<double>& times) const;
+
   /// @}
 };

@@ -23,6 +23,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
 #include <CGAL/Flow_aligned_surfaces/internal/grow_boundary/boundary_strip.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
+#include <CGAL/Flow_aligned_surfaces/internal/batched_sampling.h>
 #include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/progress_callback.h>
@@ -50,6 +51,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -276,6 +278,31 @@ boundary; grow in several small steps to follow a curved surface.
 
 \sa `Flow_aligned_deformation::grow()`
 */
+namespace internal {
+
+// The samples of `field` at the midpoints of the border edges of `tm` (as the growth across the
+// flow computes them), in one batch, into `samples` (at time 0).
+template <class TriangleMesh, class VertexIndexMap, class FlowField, class GeomTraits>
+void sample_border_midpoints(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x, const FlowField& field,
+                             const GeomTraits& gt, Replay_samples<Flow_sample>& samples)
+{
+  auto construct_point = gt.construct_point_3_object();
+  std::vector<Eigen::Vector3d> midpoints;
+  std::vector<typename GeomTraits::Point_3> points;
+  for (auto h : halfedges(tm))
+    if (is_border(h, tm)) {
+      const Eigen::Vector3d m =
+          0.5 * (position<TriangleMesh>(x, vim, source(h, tm)) + position<TriangleMesh>(x, vim, target(h, tm)));
+      midpoints.push_back(m);
+      points.push_back(construct_point(m.x(), m.y(), m.z()));
+    }
+  const std::vector<Flow_sample> sampled = sample_flow_at(field, points);
+  for (std::size_t k = 0; k < midpoints.size(); ++k)
+    samples.add(midpoints[k], 0., sampled[k]);
+}
+
+} // namespace internal
+
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 Growth_report grow_boundary(TriangleMesh& tm, double distance,
                             const NamedParameters& np = CGAL::parameters::default_values())
@@ -314,9 +341,23 @@ Growth_report grow_boundary(TriangleMesh& tm, double distance,
   else {
     // By reference: get_parameter() would copy the field.
     const auto& field = CGAL::parameters::get_parameter_reference(np, internal_np::flow_field_t());
+    using Field = std::decay_t<decltype(field)>;
+    constexpr bool batched = internal::has_batch_sampling_v<Field, typename Geom_traits::Point_3>;
+    // A field that answers batches gets the midpoints of the border edges, where growth across the
+    // flow samples it, in one batch.
+    internal::Replay_samples<internal::Flow_sample> midpoints;
+    if constexpr (batched)
+      if (options.across_flow)
+        sample_border_midpoints(tm, vim, x, field, gt, midpoints);
     strip = internal::make_boundary_strip(
         tm, vim, x, nullptr, distance, options,
         [&](const Eigen::Vector3d& p) {
+          if constexpr (batched)
+            try {
+              return midpoints.at(p, 0.);
+            }
+            catch (const internal::Sample_not_ready&) {
+            }
           return internal::sample_flow(field, construct_point(p.x(), p.y(), p.z()));
         },
         caller);

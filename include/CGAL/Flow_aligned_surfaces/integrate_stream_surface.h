@@ -20,6 +20,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/integrate_streamline.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Dormand_prince_integrator.h>
+#include <CGAL/Flow_aligned_surfaces/internal/batched_sampling.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/progress_callback.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
@@ -137,6 +138,10 @@ struct Stream_surface_report {
   /// with `Integration_direction::BOTH`: the backward half's time lines, last parameter and
   /// termination; empty otherwise
   std::optional<Stream_surface_half_report> backward;
+  /// the batches of samples asked of a field that answers batches (its `sample()`): one per
+  /// stage of the Runge-Kutta steps of a whole time line, and per level of insertions; 0 for a
+  /// field without `sample()`
+  std::size_t number_of_sample_batches = 0;
   /// whether the `callback` named parameter stopped the integration (the termination of the half
   /// it stopped is then `STOPPED`; with `BOTH`, a stop in the backward half leaves out the
   /// forward half)
@@ -147,22 +152,60 @@ namespace internal {
 
 // The field seen by the integrator: std::optional<Eigen::Vector3d>(x, t); zero at critical
 // points (the integrator stagnates there), std::nullopt outside the domain or for NaN vectors.
+// A field that answers batches (`sample()`) is seen through `replay`: the samples the front's
+// particles asked for in earlier rounds (batched_sampling.h).
 template <class FlowField, class Point_3>
 struct Front_field {
+  using Value = std::optional<Eigen::Vector3d>;
   const FlowField* field;
   bool normalize;
+  Replay_samples<Value>* replay = nullptr;
 
   static constexpr bool is_unsteady = std::is_invocable_v<const FlowField&, const Point_3&, double>;
+  static constexpr bool is_batched = is_unsteady ? has_unsteady_batch_sampling_v<FlowField, Point_3>
+                                                 : has_batch_sampling_v<FlowField, Point_3>;
 
-  std::optional<Eigen::Vector3d> operator()(const Eigen::Vector3d& x, double t) const
+  Value operator()(const Eigen::Vector3d& x, double t) const
   {
-    using FT = typename CGAL::Kernel_traits<Point_3>::Kernel::FT;
-    const Point_3 p{FT(x[0]), FT(x[1]), FT(x[2])};
+    if (replay != nullptr)
+      return replay->at(x, t);
     Flow_sample s;
     if constexpr (is_unsteady)
-      s = sample_flow([&](const Point_3& q) { return (*field)(q, t); }, p);
+      s = sample_flow([&](const Point_3& q) { return (*field)(q, t); }, point(x));
     else
-      s = sample_flow(*field, p);
+      s = sample_flow(*field, point(x));
+    return value(s);
+  }
+
+  /// The values at the points (x, t) in one batch of the field.
+  std::vector<Value> operator()(const std::vector<std::pair<Eigen::Vector3d, double>>& points) const
+  {
+    std::vector<Point_3> ps;
+    std::vector<double> times;
+    for (const auto& [x, t] : points) {
+      ps.push_back(point(x));
+      times.push_back(t);
+    }
+    std::vector<Flow_sample> samples;
+    if constexpr (is_unsteady)
+      samples = sample_flow_at(*field, ps, times);
+    else
+      samples = sample_flow_at(*field, ps);
+    std::vector<Value> values;
+    for (const Flow_sample& s : samples)
+      values.push_back(value(s));
+    return values;
+  }
+
+private:
+  static Point_3 point(const Eigen::Vector3d& x)
+  {
+    using FT = typename CGAL::Kernel_traits<Point_3>::Kernel::FT;
+    return Point_3{FT(x[0]), FT(x[1]), FT(x[2])};
+  }
+
+  Value value(const Flow_sample& s) const
+  {
     if (s.kind == Sample_kind::OUTSIDE || s.kind == Sample_kind::INVALID)
       return std::nullopt;
     if (s.kind == Sample_kind::ZERO)
@@ -267,7 +310,12 @@ public:
       : m_field{&field, normalize}, m_seed(seed), m_s(settings), m_tm(tm), m_vpm(vpm), m_u_map(u_map),
         m_t_map(t_map), m_seed_vertices(seed_vertices)
   {
+    if constexpr (Field::is_batched)
+      m_field.replay = &m_replay;
   }
+  // The integrators' field points to `m_replay`.
+  Stream_surface_front(const Stream_surface_front&) = delete;
+  Stream_surface_front& operator=(const Stream_surface_front&) = delete;
 
   Stream_surface_report run(Stream_surface_report report)
   {
@@ -299,9 +347,18 @@ private:
       if (m_parameter >= m_s.max_parameter || m_s.max_parameter - m_parameter < 0.5 * m_s.step)
         m_parameter = m_s.max_parameter;
       m_last_line = m_parameter >= m_s.max_parameter || k >= m_s.max_time_lines;
-      std::vector<std::vector<Particle>> next;
+      // Every particle of the front first, together (one batch of samples per round of steps).
+      std::vector<Particle*> particles;
       for (std::vector<Particle>& piece : m_pieces)
-        advance_piece(piece, next);
+        for (Particle& p : piece)
+          particles.push_back(&p);
+      const std::vector<char> reached = advance_all(particles);
+      std::vector<std::vector<Particle>> next;
+      std::size_t first = 0;
+      for (std::vector<Particle>& piece : m_pieces) {
+        advance_piece(piece, reached.data() + first, next);
+        first += piece.size();
+      }
       m_pieces = std::move(next);
       m_report.number_of_time_lines = k;
       m_report.final_parameter = m_parameter;
@@ -358,6 +415,9 @@ private:
   }
 
   static constexpr std::size_t no_node = std::numeric_limits<std::size_t>::max();
+
+  // Where a particle is after `integrate_to_line()`.
+  enum class Reach { LINE, EXIT, LOST };
 
   struct Particle {
     Particle(double u, Integrator integrator) : u(u), integrator(std::move(integrator)) {}
@@ -427,49 +487,110 @@ private:
 
   // A particle released from the seed at c(u), advanced to the current time line; nothing if it
   // does not get there.
-  std::optional<Particle> release(double u)
+  // The particles at `us` released from the seed and advanced to the current time line
+  // (`advance()`); none where that fails.
+  std::vector<std::optional<Particle>> release(const std::vector<double>& us)
   {
-    Integrator integrator(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances);
-    if (!integrator.is_start_inside())
-      return std::nullopt;
-    Particle p{u, std::move(integrator)};
-    if (!advance(p))
-      return std::nullopt;
-    return p;
+    std::vector<std::optional<Particle>> released(us.size());
+    std::vector<std::optional<Reach>> reach(us.size());
+    std::vector<char> ok(us.size(), 0);
+    run_tasks(us.size(), [&](std::size_t i) {
+      if (!released[i])
+        released[i].emplace(us[i], Integrator(m_field, m_seed(us[i]), m_s.t0, m_s.direction, m_s.tolerances));
+      if (released[i]->integrator.is_start_inside())
+        ok[i] = advance(*released[i], reach[i]);
+    });
+    for (std::size_t i = 0; i < us.size(); ++i)
+      if (!ok[i])
+        released[i].reset();
+    return released;
+  }
+
+  // Advances the particles `ps` (`advance()`), together: whether each reached the time line.
+  std::vector<char> advance_all(const std::vector<Particle*>& ps)
+  {
+    std::vector<std::optional<Reach>> reach(ps.size());
+    std::vector<char> ok(ps.size(), 0);
+    run_tasks(ps.size(), [&](std::size_t i) { ok[i] = advance(*ps[i], reach[i]); });
+    return ok;
+  }
+
+  // Runs `task(i)` for i in [0, n).  With a field that answers batches, the tasks run in rounds,
+  // one batch of samples per round (batched_sampling.h); a task must then commit its progress
+  // only where it can be resumed: `reach` and the integrators' whole steps.
+  template <class Task>
+  void run_tasks(std::size_t n, const Task& task)
+  {
+    if constexpr (!Field::is_batched) {
+      for (std::size_t i = 0; i < n; ++i)
+        task(i);
+    }
+    else {
+      m_report.number_of_sample_batches += run_in_rounds(n, m_replay, task, [this](const auto& points) {
+        auto field = m_field;
+        field.replay = nullptr;
+        return field(points);
+      });
+      m_replay.clear();
+    }
   }
 
   // Advances `p` to the current time line, or to where it leaves the domain before it (then
-  // `at_boundary`, at the last point inside that the integrator located by bisection).  False
-  // if it left before, stagnates, or has taken max_number_of_steps steps since the seed (so every
-  // loop has a bound); also if it leaves within 1e-3 Δ after the previous time line, whose node
-  // is then its last (a later one would only make slivers).
-  bool advance(Particle& p)
+  // `at_boundary`, at the last point inside that the integrator located by bisection), and
+  // samples the flow's direction there.  False if it left before, stagnates, or has taken
+  // max_number_of_steps steps since the seed (so every loop has a bound); also if it leaves
+  // within 1e-3 Δ after the previous time line, whose node is then its last (a later one would
+  // only make slivers).  `reach` keeps where the integration got to (see `run_tasks()`).
+  bool advance(Particle& p, std::optional<Reach>& reach)
   {
     if (p.at_boundary)
       return false;
-    Integrator& it = p.integrator;
-    p.tau = m_parameter;
-    while (it.parameter() < m_parameter) {
-      if (it.number_of_accepted_steps() >= m_s.max_steps)
-        return false;
-      const Step_result r = it.step();
-      if (r == Step_result::LEFT_DOMAIN) {
-        if (it.parameter() <= m_previous_parameter + 1e-3 * m_s.step)
-          return false;
-        p.at_boundary = true;
-        p.tau = it.parameter();
-        break;
-      }
-      if (r != Step_result::ACCEPTED)
-        return false;
-    }
-    p.x = p.at_boundary ? it.position() : it.dense_output(m_parameter);
-    const std::optional<Eigen::Vector3d> v = m_field(p.x, m_s.t0 + m_s.direction * p.tau);
+    if (!reach)
+      reach = integrate_to_line(p.integrator);
+    if (*reach == Reach::LOST)
+      return false;
+    const Integrator& it = p.integrator;
+    const bool exit = *reach == Reach::EXIT;
+    const double tau = exit ? it.parameter() : m_parameter;
+    const Eigen::Vector3d x = exit ? it.position() : it.dense_output(m_parameter);
+    const std::optional<Eigen::Vector3d> v = m_field(x, m_s.t0 + m_s.direction * tau);
+    p.at_boundary = exit;
+    p.tau = tau;
+    p.x = x;
     if (!v)
       return false;
     const double speed = v->norm();
     p.direction = speed > 0 ? Eigen::Vector3d(*v / speed) : Eigen::Vector3d::Zero();
     return speed > 0;
+  }
+
+  // Integrates to the current time line, a whole step at a time (resumable after each).
+  Reach integrate_to_line(Integrator& it)
+  {
+    while (it.parameter() < m_parameter) {
+      if (it.number_of_accepted_steps() >= m_s.max_steps)
+        return Reach::LOST;
+      const Step_result r = whole_step(it);
+      if (r == Step_result::LEFT_DOMAIN)
+        return it.parameter() <= m_previous_parameter + 1e-3 * m_s.step ? Reach::LOST : Reach::EXIT;
+      if (r != Step_result::ACCEPTED)
+        return Reach::LOST;
+    }
+    return Reach::LINE;
+  }
+
+  // One step of `it`; with samples in rounds on a copy, so that a step interrupted for its
+  // samples starts again from where it began.
+  Step_result whole_step(Integrator& it) const
+  {
+    if constexpr (!Field::is_batched)
+      return it.step();
+    else {
+      Integrator trial = it;
+      const Step_result r = trial.step();
+      it = std::move(trial);
+      return r;
+    }
   }
 
   void seed_front()
@@ -479,19 +600,24 @@ private:
     const std::size_t n = static_cast<std::size_t>(
         std::min(std::ceil(m_seed.length() / m_s.spacing), double(m_s.max_vertices)));
     m_seed_vertices.resize(n + 1); // the same samples in both halves
+    std::vector<double> us(n + 1);
+    for (std::size_t i = 0; i <= n; ++i)
+      us[i] = i == n ? m_seed.length() : m_seed.length() * double(i) / double(n);
+    std::vector<std::optional<Particle>> particles(n + 1);
+    std::vector<char> inside(n + 1, 0), moving(n + 1, 0);
+    std::vector<std::optional<Reach>> reach(n + 1);
+    run_tasks(n + 1, [&](std::size_t i) {
+      const double u = us[i];
+      if (!particles[i])
+        particles[i].emplace(u, Integrator(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances));
+      inside[i] = particles[i]->integrator.is_start_inside();
+      if (inside[i])
+        moving[i] = advance(*particles[i], reach[i]); // τ = 0: the flow direction at the seed point
+    });
     std::vector<Particle> piece;
-    std::size_t inside = 0, moving = 0;
     for (std::size_t i = 0; i <= n; ++i) {
-      const double u = i == n ? m_seed.length() : m_seed.length() * double(i) / double(n);
-      Integrator integrator(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances);
-      Particle p{u, std::move(integrator)};
-      bool usable = p.integrator.is_start_inside();
-      if (usable) {
-        ++inside;
-        usable = advance(p); // τ = 0: the flow direction at the seed point
-        moving += usable ? 1 : 0;
-      }
-      if (usable) {
+      if (moving[i]) {
+        Particle& p = *particles[i];
         p.node = add_node(p);
         m_nodes[p.node].vertex = m_seed_vertices[i];
         m_seed_nodes.emplace_back(i, p.node);
@@ -504,13 +630,15 @@ private:
     }
     if (!piece.empty())
       m_pieces.push_back(std::move(piece));
-    m_report.number_of_lost_particles += (n + 1) - moving;
-    if (inside == 0) {
+    const std::size_t number_inside = std::size_t(std::count(inside.begin(), inside.end(), 1));
+    const std::size_t number_moving = std::size_t(std::count(moving.begin(), moving.end(), 1));
+    m_report.number_of_lost_particles += (n + 1) - number_moving;
+    if (number_inside == 0) {
       m_pieces.clear();
       finish(Stream_surface_termination::SEED_OUTSIDE_DOMAIN,
              "every point of the seed is outside the domain");
     }
-    else if (moving == 0) {
+    else if (number_moving == 0) {
       m_pieces.clear();
       finish(Stream_surface_termination::SEED_AT_REST,
              "the field is zero at every point of the seed inside the domain");
@@ -519,33 +647,73 @@ private:
 
   double cosine(const Particle& a, const Particle& b) const { return a.direction.dot(b.direction); }
 
-  // Appends `b` after the last particle of `out.back()`, inserting re-integrated particles
-  // while the gap is too wide or the flow turns too much between them, and tearing where that
-  // is not possible.  The recursion depth is bounded by log2(2h / min_gap).
-  void connect(std::vector<std::vector<Particle>>& out, Particle&& b)
+  // What happens between two neighbours of a run.
+  enum class Gap { OPEN, CLOSED, TORN };
+
+  // Whether neighbours a and b are close enough and move alike (CLOSED), need a re-integrated
+  // particle between them (OPEN), or cannot get one (TORN).
+  Gap gap(const Particle& a, const Particle& b) const
   {
-    const Particle& a = out.back().back();
     const double d = (b.x - a.x).norm();
     const bool wide = d > 2 * m_s.spacing;
     const bool turning = cosine(a, b) < m_s.tear_cosine;
-    if (!wide && !turning) {
-      out.back().push_back(std::move(b));
-      return;
-    }
+    if (!wide && !turning)
+      return Gap::CLOSED;
     const bool refinable =
         b.u - a.u > m_s.min_gap && (wide || d > m_s.spacing) && m_nodes.size() < 2 * m_s.max_vertices;
-    std::optional<Particle> m = refinable ? release(0.5 * (a.u + b.u)) : std::nullopt;
-    if (refinable && !m)
-      ++m_report.number_of_lost_particles;
-    if (!m) {
-      ++m_report.number_of_tears;
-      out.emplace_back();
-      out.back().push_back(std::move(b));
-      return;
+    return refinable ? Gap::OPEN : Gap::TORN;
+  }
+
+  // The run's particles as front pieces: between neighbours that diverge, particles are
+  // inserted (re-integrated from the seed half-way in u) while the gap is too wide or the flow
+  // turns too much between them; the front is torn where that is not possible.  Level by level,
+  // the insertions of a level integrated together; each gap's outcome depends on its two ends
+  // only.  The levels are bounded by log2(2h / min_gap).
+  std::vector<std::vector<Particle>> connect(std::vector<Particle>&& run)
+  {
+    std::vector<Particle> line = std::move(run);
+    std::vector<Gap> gaps; // gaps[i]: between line[i] and line[i + 1]
+    for (std::size_t i = 0; i + 1 < line.size(); ++i)
+      gaps.push_back(gap(line[i], line[i + 1]));
+    for (;;) {
+      std::vector<double> us;
+      for (std::size_t i = 0; i < gaps.size(); ++i)
+        if (gaps[i] == Gap::OPEN)
+          us.push_back(0.5 * (line[i].u + line[i + 1].u));
+      if (us.empty())
+        break;
+      std::vector<std::optional<Particle>> inserted = release(us);
+      std::vector<Particle> finer;
+      std::vector<Gap> finer_gaps;
+      for (std::size_t i = 0, k = 0; i < line.size(); ++i) {
+        finer.push_back(std::move(line[i]));
+        if (i + 1 == line.size())
+          break;
+        if (gaps[i] != Gap::OPEN || !inserted[k]) {
+          if (gaps[i] == Gap::OPEN) {
+            ++m_report.number_of_lost_particles;
+            ++k;
+          }
+          finer_gaps.push_back(gaps[i] == Gap::CLOSED ? Gap::CLOSED : Gap::TORN);
+          continue;
+        }
+        ++m_report.number_of_inserted_particles;
+        finer.push_back(std::move(*inserted[k++]));
+        finer_gaps.push_back(gap(finer[finer.size() - 2], finer.back()));
+        finer_gaps.push_back(gap(finer.back(), line[i + 1]));
+      }
+      line = std::move(finer);
+      gaps = std::move(finer_gaps);
     }
-    ++m_report.number_of_inserted_particles;
-    connect(out, std::move(*m));
-    connect(out, std::move(b));
+    std::vector<std::vector<Particle>> pieces(1);
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (i > 0 && gaps[i - 1] == Gap::TORN) {
+        ++m_report.number_of_tears;
+        pieces.emplace_back();
+      }
+      pieces.back().push_back(std::move(line[i]));
+    }
+    return pieces;
   }
 
   // Removes particles closer than h/2 to their predecessor (an interior one of the two).
@@ -586,7 +754,8 @@ private:
     }
   }
 
-  void advance_piece(std::vector<Particle>& piece, std::vector<std::vector<Particle>>& next)
+  // The piece's strip to the new time line, which its particles reached where `reached` says.
+  void advance_piece(std::vector<Particle>& piece, const char* reached, std::vector<std::vector<Particle>>& next)
   {
     std::vector<std::pair<double, std::size_t>> old_line; // (u, node) of the last meshed time line
     for (const Particle& p : piece)
@@ -597,9 +766,9 @@ private:
 
     // Runs of particles that reach the new time line.
     std::vector<std::vector<Particle>> runs(1);
-    for (Particle& p : piece) {
-      if (advance(p))
-        runs.back().push_back(std::move(p));
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      if (reached[i])
+        runs.back().push_back(std::move(piece[i]));
       else {
         ++m_report.number_of_lost_particles;
         if (!runs.back().empty())
@@ -610,10 +779,7 @@ private:
       if (run.empty())
         continue;
       remove_converging(run);
-      std::vector<std::vector<Particle>> pieces(1);
-      pieces.back().push_back(std::move(run.front()));
-      for (std::size_t i = 1; i < run.size(); ++i)
-        connect(pieces, std::move(run[i]));
+      std::vector<std::vector<Particle>> pieces = connect(std::move(run));
       // A piece that only moved (and gained inserted particles) since its last meshed time line
       // waits for the next one while the strip would be thin: sheared fronts turn towards the
       // flow, and their strips, h wide, get ever flatter.
@@ -731,6 +897,7 @@ private:
   }
 
   Field m_field;
+  Replay_samples<typename Field::Value> m_replay; // with a field that answers batches
   const Seed_curve& m_seed;
   Settings m_s;
   TriangleMesh& m_tm;
@@ -775,10 +942,12 @@ double median_speed_time_line_step(const Field& f, const Seed_curve& seed, doubl
 {
   std::vector<double> speeds;
   const std::size_t n = std::min<std::size_t>(64, seed.number_of_segments());
+  std::vector<std::pair<Eigen::Vector3d, double>> points;
   for (std::size_t i = 0; i <= n; ++i)
-    if (const std::optional<Eigen::Vector3d> v = f(seed(seed.length() * double(i) / double(n)), t0))
-      if (v->norm() > 0)
-        speeds.push_back(v->norm());
+    points.emplace_back(seed(seed.length() * double(i) / double(n)), t0);
+  for (const std::optional<Eigen::Vector3d>& v : f(points)) // one batch
+    if (v && v->norm() > 0)
+      speeds.push_back(v->norm());
   std::nth_element(speeds.begin(), speeds.begin() + std::ptrdiff_t(speeds.size() / 2), speeds.end());
   return speeds.empty() ? spacing : spacing / speeds[speeds.size() / 2];
 }
@@ -894,6 +1063,11 @@ same \f$ \tau = k \Delta \f$ exactly (the last one: the limit); a vertex where a
 get \f$ -\tau \f$.
 
 Vertices and faces are added to `tm_out`; what it held before is kept.
+
+A field that answers batches (the optional `sample()` of the concepts) is sampled a time line
+at a time: the particles' Runge-Kutta stages, one batch each, and the particles re-integrated from
+the seed, level by level, one batch per stage of their paths; the surface is the same, bit for
+bit.  The report counts the batches.
 
 \tparam FlowField a model of `FlowField_3` (a stream surface) or of `UnsteadyFlowField_3` (a path
         surface: it is called with `(p, t)`)

@@ -24,6 +24,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
+#include <CGAL/Flow_aligned_surfaces/internal/batched_sampling.h>
 #include <CGAL/Flow_aligned_surfaces/internal/check_triangle_mesh.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/rotations.h>
@@ -48,13 +49,18 @@ namespace Flow_aligned_surfaces {
 namespace internal {
 
 /// Calls `visit(j, unit_normal, area, sample)` for every non-degenerate face j of `positions`,
-/// with the field's sample at its centroid.
+/// with the field's sample at its centroid (all of them in one batch when the field answers
+/// batches).
 template <class FlowField, class GeomTraits, class Visit>
 void visit_face_samples(const Positions& positions,
                         const std::vector<std::array<Eigen::Index, 3>>& face_vertices, const FlowField& field,
                         const GeomTraits& gt, const Visit& visit)
 {
   auto construct_point = gt.construct_point_3_object();
+  std::vector<std::size_t> faces;
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<double> areas;
+  std::vector<typename GeomTraits::Point_3> centroids;
   for (std::size_t j = 0; j < face_vertices.size(); ++j) {
     const auto& face = face_vertices[j];
     const Eigen::Vector3d a = positions.row(face[0]), b = positions.row(face[1]), c = positions.row(face[2]);
@@ -63,9 +69,14 @@ void visit_face_samples(const Positions& positions,
     if (!(twice_area > 0))
       continue;
     const Eigen::Vector3d centroid = (a + b + c) / 3;
-    visit(j, Eigen::Vector3d(cross / twice_area), 0.5 * twice_area,
-          sample_flow(field, construct_point(centroid.x(), centroid.y(), centroid.z())));
+    faces.push_back(j);
+    normals.push_back(cross / twice_area);
+    areas.push_back(0.5 * twice_area);
+    centroids.push_back(construct_point(centroid.x(), centroid.y(), centroid.z()));
   }
+  const std::vector<Flow_sample> samples = sample_flow_at(field, centroids);
+  for (std::size_t k = 0; k < faces.size(); ++k)
+    visit(faces[k], normals[k], areas[k], samples[k]);
 }
 
 /// |n . v| / |v| for a usable sample, nothing otherwise.

@@ -20,6 +20,7 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_PARAMETRIZATION_H
 
 #include <CGAL/Flow_aligned_surfaces/internal/Mesh_arrays.h>
+#include <CGAL/Flow_aligned_surfaces/internal/batched_sampling.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Poisson_operators.h>
 #include <CGAL/Flow_aligned_surfaces/internal/solver/Sparse_cholesky.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
@@ -164,19 +165,20 @@ inline Eigen::Vector3d vertex_normal(const Mesh_arrays& arrays, const Surface_fa
   return n.normalized();
 }
 
-/// Samples `field` at every face centroid; rows of faces without a usable sample (outside the
-/// domain, not finite, or zero) are zero.
+/// Samples `field` at every face centroid (in one batch when the field answers batches); rows of
+/// faces without a usable sample (outside the domain, not finite, or zero) are zero.
 template <class FlowField, class GeomTraits>
 Positions sample_face_velocities(const Surface_faces& s, const FlowField& field, const GeomTraits& gt)
 {
   auto construct_point = gt.construct_point_3_object();
+  std::vector<typename GeomTraits::Point_3> centroids;
+  for (Eigen::Index j = 0; j < s.number_of_faces(); ++j)
+    centroids.push_back(construct_point(s.face_centroids(j, 0), s.face_centroids(j, 1), s.face_centroids(j, 2)));
+  const std::vector<Flow_sample> samples = sample_flow_at(field, centroids);
   Positions v = Positions::Zero(s.number_of_faces(), 3);
-  for (Eigen::Index j = 0; j < s.number_of_faces(); ++j) {
-    const Flow_sample sample = sample_flow(
-        field, construct_point(s.face_centroids(j, 0), s.face_centroids(j, 1), s.face_centroids(j, 2)));
-    if (sample.kind == Sample_kind::VALID)
-      v.row(j) = sample.velocity.transpose();
-  }
+  for (Eigen::Index j = 0; j < s.number_of_faces(); ++j)
+    if (samples[std::size_t(j)].kind == Sample_kind::VALID)
+      v.row(j) = samples[std::size_t(j)].velocity.transpose();
   return v;
 }
 

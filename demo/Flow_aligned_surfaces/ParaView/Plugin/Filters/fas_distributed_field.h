@@ -8,8 +8,10 @@
 // the shared faces of image pieces) or "no sample" where no piece holds it: the semantics of
 // ResampleWithDataset.  Where rank 0 knows the points beforehand (an iteration's face
 // centroids, the vertices of a surface to parametrize) they go in one exchange (`probe()`,
-// `probe_points_of()`); a point it did not announce (a particle of a stream surface, a boundary
-// edge to grow) is exchanged alone when the algorithm asks for it.  The other ranks answer until
+// `probe_points_of()`); the library's algorithms that sample in batches (the concept's
+// `sample()`: the measures, the parametrizations, the stages of a stream or path surface's time
+// line) get one exchange per batch; a point none of these announced (a boundary edge to grow) is
+// exchanged alone when the algorithm asks for it.  The other ranks answer until
 // rank 0 says it has finished (`serve()`), so they take part in exactly as many exchanges as
 // rank 0 needs; a rank that fails sends its reason instead of hanging the others.
 //
@@ -185,7 +187,7 @@ public:
     State& s = *m_state;
     if (!distributed())
       return;
-    std::vector<Sample> samples = exchange(points, s.time);
+    std::vector<Sample> samples = exchange(points, std::vector<double>(points.size(), s.time));
     s.samples.clear();
     s.samples.reserve(points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -220,18 +222,20 @@ public:
 private:
   // Rank 0: the samples at `points`, from every rank (collective: the other ranks are in
   // `serve()`).  Throws std::runtime_error when a rank failed to sample its piece.
-  std::vector<Sample> exchange(const std::vector<Point>& points, double time) const
+  std::vector<Sample> exchange(const std::vector<Point>& points, const std::vector<double>& times) const
   {
     State& s = *m_state;
     const int ranks = s.controller->GetNumberOfProcesses();
     int header[2] = { PROBE, int(points.size()) };
     s.controller->Broadcast(header, 2, 0);
-    // The time, then the points.
-    std::vector<double> coordinates(1 + 3 * points.size());
-    coordinates[0] = time;
+    // (x, y, z, t) per point.
+    std::vector<double> coordinates(4 * points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
+    {
       for (int d = 0; d < 3; ++d)
-        coordinates[1 + 3 * i + std::size_t(d)] = points[i][d];
+        coordinates[4 * i + std::size_t(d)] = points[i][d];
+      coordinates[4 * i + 3] = times[i];
+    }
     s.controller->Broadcast(coordinates.data(), vtkIdType(coordinates.size()), 0);
     const std::vector<double> mine = sample_local(coordinates, ranks, 0);
     std::vector<double> total(mine.size());
@@ -280,7 +284,7 @@ public:
       s.controller->Broadcast(header, 2, 0);
       if (header[0] != PROBE)
         return;
-      std::vector<double> coordinates(1 + 3 * std::size_t(header[1]));
+      std::vector<double> coordinates(4 * std::size_t(header[1]));
       s.controller->Broadcast(coordinates.data(), vtkIdType(coordinates.size()), 0);
       const std::vector<double> mine = sample_local(coordinates, ranks, rank);
       std::vector<double> total(mine.size());
@@ -308,7 +312,21 @@ public:
       return found->second;
     if (std::this_thread::get_id() != s.owner)
       throw std::logic_error("the field was asked in a parallel loop for a point that was not probed from the ranks");
-    return exchange({ p }, s.time).front();
+    return exchange({ p }, { s.time }).front();
+  }
+
+  /// The velocities at `points` (the batch operation of `FlowField_3`): on rank 0 of several,
+  /// those not probed before in one exchange.
+  std::vector<Sample> sample(const std::vector<Point>& points) const
+  {
+    return batch(points, std::vector<double>(points.size(), m_state->time), true);
+  }
+
+  /// The velocities at `points[i]` at `times[i]` (the batch operation of
+  /// `UnsteadyFlowField_3`), in one exchange on rank 0 of several.
+  std::vector<Sample> sample(const std::vector<Point>& points, const std::vector<double>& times) const
+  {
+    return batch(points, times, false);
   }
 
   /// The velocity at `p` at time `t` (within the times of the steps of the update), for an
@@ -322,7 +340,7 @@ public:
       return s.local ? s.local->unsteady_field()(p, t) : Sample();
     if (std::this_thread::get_id() != s.owner)
       throw std::logic_error("the field was asked for a time in a parallel loop");
-    return exchange({ p }, t).front();
+    return exchange({ p }, { t }).front();
   }
 
   /// Ranks whose piece supplied at least one sample in the last exchange.
@@ -331,6 +349,50 @@ public:
   std::size_t number_of_exchanges() const { return m_state->exchanges; }
 
 private:
+  // The samples at (points[i], times[i]); with `probed`, those probed before at the current time
+  // are taken from the probes.  On rank 0 of several the others come in one exchange.
+  std::vector<Sample> batch(const std::vector<Point>& points, const std::vector<double>& times, bool probed) const
+  {
+    State& s = *m_state;
+    std::vector<Sample> samples(points.size());
+    if (!distributed())
+    {
+      if (s.local)
+        for (std::size_t i = 0; i < points.size(); ++i)
+          samples[i] = s.local->unsteady_field()(points[i], times[i]);
+      return samples;
+    }
+    if (s.recording)
+    {
+      std::lock_guard<std::mutex> lock(s.record_mutex);
+      s.recorded.insert(s.recorded.end(), points.begin(), points.end());
+      return std::vector<Sample>(points.size(), Vector(1, 0, 0));
+    }
+    std::vector<std::size_t> asked;
+    std::vector<Point> asked_points;
+    std::vector<double> asked_times;
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      if (probed)
+        if (const auto found = s.samples.find(key(points[i])); found != s.samples.end())
+        {
+          samples[i] = found->second;
+          continue;
+        }
+      asked.push_back(i);
+      asked_points.push_back(points[i]);
+      asked_times.push_back(times[i]);
+    }
+    if (asked.empty())
+      return samples;
+    if (std::this_thread::get_id() != s.owner)
+      throw std::logic_error("the field was asked for a batch in a parallel loop");
+    const std::vector<Sample> answers = exchange(asked_points, asked_times);
+    for (std::size_t k = 0; k < asked.size(); ++k)
+      samples[asked[k]] = answers[k];
+    return samples;
+  }
+
   // The global controller when there are several processes; null for one.
   static vtkMultiProcessController* global_controller()
   {
@@ -417,13 +479,13 @@ private:
     return k;
   }
 
-  // This rank's reply to (time, points): per point (vx, vy, vz, 1) where its piece has a sample
-  // at that time, zeros elsewhere; then 1 if sampling failed here, then per rank the number of
-  // samples it supplied.
+  // This rank's reply to the points (x, y, z, t): per point (vx, vy, vz, 1) where its piece has a
+  // sample there and then, zeros elsewhere; then 1 if sampling failed here, then per rank the
+  // number of samples it supplied.
   std::vector<double> sample_local(const std::vector<double>& coordinates, int ranks, int rank) const
   {
     const State& s = *m_state;
-    const std::size_t n = (coordinates.size() - 1) / 3;
+    const std::size_t n = coordinates.size() / 4;
     std::vector<double> reply(4 * n + 1 + std::size_t(ranks), 0.);
     if (!s.local_error.empty())
     {
@@ -434,13 +496,12 @@ private:
       return reply;
     try
     {
-      Piece_field local = *s.local;
-      local.set_time(coordinates[0]);
-      const double* x = coordinates.data() + 1;
+      const auto& unsteady = s.local->unsteady_field();
+      const double* x = coordinates.data();
       double supplied = 0;
       for (std::size_t i = 0; i < n; ++i)
       {
-        const Sample v = local(Point(x[3 * i], x[3 * i + 1], x[3 * i + 2]));
+        const Sample v = unsteady(Point(x[4 * i], x[4 * i + 1], x[4 * i + 2]), x[4 * i + 3]);
         if (!v)
           continue;
         reply[4 * i] = v->x();
@@ -580,17 +641,14 @@ inline void add_distribution_values(vtkDataObject* output, const Distributed_inp
 }
 
 /// Rank 0: `tm` as polygonal data with the arrays of `add_alignment_arrays()` (on several ranks
-/// their samples are exchanged first, in one go), and its normalized flux.
+/// an exchange per array: the vertices' velocities, the faces' fluxes, the normalized flux), and
+/// its normalized flux.
 inline std::pair<vtkSmartPointer<vtkPolyData>, FAS::Normalized_flux> aligned_surface_output(
   Mesh& tm, const Distributed_velocity_field& field)
 {
-  const auto with_arrays = [&tm, &field] {
-    vtkSmartPointer<vtkPolyData> polydata = to_polydata(tm);
-    const FAS::Normalized_flux measured = add_alignment_arrays(polydata, tm, field);
-    return std::make_pair(polydata, measured);
-  };
-  field.probe_points_of(with_arrays);
-  return with_arrays();
+  vtkSmartPointer<vtkPolyData> polydata = to_polydata(tm);
+  const FAS::Normalized_flux measured = add_alignment_arrays(polydata, tm, field);
+  return std::make_pair(polydata, measured);
 }
 
 /// Every rank (collective when distributed): the pieces of a polygonal input brought together on
@@ -659,11 +717,30 @@ inline void request_steps_around_requested_time(Temporal_flow_input& steps, vtkI
   steps.request_next(inputVector[0]->GetInformationObject(0), steps.steps_around(t));
 }
 
+/// A `Distributed_velocity_field` point by point, without its batch operation: on one process,
+/// where the library's rounds of batched sampling (a stream surface's Runge-Kutta stages) cost
+/// more than the exchanges they save.
+struct Pointwise_view {
+  const Distributed_velocity_field& field;
+  Distributed_velocity_field::Sample operator()(const Point& p) const { return field(p); }
+};
+
+/// The same as an unsteady field.
+struct Pointwise_unsteady_view {
+  const Distributed_velocity_field& field;
+  Distributed_velocity_field::Sample operator()(const Point& p, double t) const { return field.at(p, t); }
+};
+
 /// The view of a `Distributed_velocity_field` as an unsteady field (`UnsteadyFlowField_3`):
-/// `field.at(p, t)`.
+/// `field.at(p, t)`, and batches of points and times in one exchange.
 struct Unsteady_view {
   const Distributed_velocity_field& field;
   Distributed_velocity_field::Sample operator()(const Point& p, double t) const { return field.at(p, t); }
+  std::vector<Distributed_velocity_field::Sample> sample(const std::vector<Point>& points,
+                                                         const std::vector<double>& times) const
+  {
+    return field.sample(points, times);
+  }
 };
 
 /// RequestData of a filter that samples the flow (every rank, collective when distributed): none

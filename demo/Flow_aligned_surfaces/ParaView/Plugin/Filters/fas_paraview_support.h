@@ -230,6 +230,22 @@ inline void add_field_value(vtkDataObject* data, const char* name, double value)
   data->GetFieldData()->AddArray(array);
 }
 
+/// The velocities at `points`: in one batch when the field answers batches (its `sample()`, as
+/// `Distributed_velocity_field`), else point by point.  Call with 0 as the last argument.
+template <class Field>
+auto velocities_at(const Field& field, const std::vector<Point>& points, int) -> decltype(field.sample(points))
+{
+  return field.sample(points);
+}
+template <class Field>
+std::vector<std::optional<Vector>> velocities_at(const Field& field, const std::vector<Point>& points, long)
+{
+  std::vector<std::optional<Vector>> velocities;
+  for (const Point& p : points)
+    velocities.push_back(field(p));
+  return velocities;
+}
+
 /// The velocity at every point of `polydata`, as the point array `velocity` (zero where the
 /// field has no sample) and `velocity_sampled` (1 where it has one).
 template <class Field>
@@ -238,10 +254,15 @@ void add_point_velocities(vtkPolyData* polydata, const Field& field)
   const vtkIdType n = polydata->GetNumberOfPoints();
   auto velocity = make_array("velocity", 3, n);
   auto sampled = make_array("velocity_sampled", 1, n);
+  std::vector<Point> points;
   for (vtkIdType i = 0; i < n; ++i) {
     double x[3];
     polydata->GetPoint(i, x);
-    const std::optional<Vector> v = field(Point(x[0], x[1], x[2]));
+    points.emplace_back(x[0], x[1], x[2]);
+  }
+  const std::vector<std::optional<Vector>> velocities = velocities_at(field, points, 0);
+  for (vtkIdType i = 0; i < n; ++i) {
+    const std::optional<Vector>& v = velocities[std::size_t(i)];
     velocity->SetTuple3(i, v ? v->x() : 0., v ? v->y() : 0., v ? v->z() : 0.);
     sampled->SetValue(i, v ? 1. : 0.);
   }

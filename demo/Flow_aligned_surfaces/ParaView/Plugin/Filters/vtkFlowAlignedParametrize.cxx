@@ -225,8 +225,8 @@ int vtkFlowAlignedParametrize::RequestData(
     else
     {
       pieces.require_samples();
-      // The parameters along and across the flow (on several ranks their samples are
-      // exchanged first, in one go).
+      // The parameters along and across the flow (on several ranks the library's batch of face
+      // samples is one exchange).
       const auto parametrize = [&](Mesh& m, const std::function<bool(double)>& report) {
         Scalar_map r = m.add_property_map<Vertex, double>("v:r", 0.).first;
         Scalar_map s = m.add_property_map<Vertex, double>("v:s", 0.).first;
@@ -238,10 +238,6 @@ int vtkFlowAlignedParametrize::RequestData(
               [&](const auto& np) { return FAS::parametrize_tangential(m, in.field, r, s, np); });
         return std::make_tuple(done, r, s);
       };
-      in.field.probe_points_of([&] {
-        Mesh copy = tm;
-        parametrize(copy, {});
-      });
       Scalar_map s;
       bool done = false;
       std::tie(done, f, s) = parametrize(tm, progress);

@@ -495,7 +495,6 @@ void vtkFlowAlignedSurface::Internals::start_iterations(const Distributed_input&
   in.reports.clear();
   in.converged = false;
   in.restart = false;
-  in.field.probe_points_of([&] { FAS::normalized_flux(in.tm, in.field); });
   const FAS::Normalized_flux start = FAS::normalized_flux(in.tm, in.field);
   if (!start.value)
   {

@@ -131,7 +131,6 @@ int vtkGrowBoundary::RequestData(
     const Distributed_velocity_field& field = in.field; // outlives the deformation, as tm does
     Mesh tm = mesh_from_polydata(surface, "the surface (input 1)");
     const std::size_t input_vertices = tm.number_of_vertices();
-    field.probe_points_of([&] { FAS::normalized_flux(tm, field); });
     if (!FAS::normalized_flux(tm, field).value)
       throw std::invalid_argument("the surface (input 1) has no flow sample: it lies outside the input "
                                   "data set (bounds " + bounds_text(pieces.bounds.data()) + "); move it into the data");

@@ -59,13 +59,15 @@ double time_across_the_data(const Field& field, const std::vector<Polyline>& cur
 {
   double speed = 0;
   std::size_t sampled = 0;
+  std::vector<Point> points;
   for (const Polyline& curve : curves)
-    for (const Point& p : curve)
-      if (const std::optional<Vector> v = field(p))
-      {
-        speed += std::sqrt(v->squared_length());
-        ++sampled;
-      }
+    points.insert(points.end(), curve.begin(), curve.end());
+  for (const std::optional<Vector>& v : velocities_at(field, points, 0)) // one batch
+    if (v)
+    {
+      speed += std::sqrt(v->squared_length());
+      ++sampled;
+    }
   const double extent = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
   return sampled > 0 && speed > 0 ? extent / (speed / double(sampled)) : 0.;
 }
@@ -387,14 +389,16 @@ void vtkStreamSurfaceFromCurve::Internals::integrate_stream_surfaces(vtkStreamSu
       limits.max_length = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
     else
     {
-      field.probe_points_of([&] { time_across_the_data(field, curves, b); });
       limits.max_time = time_across_the_data(field, curves, b);
     }
     if (limits.time_line_step <= 0)
       limits.time_line_step = (f->ArcLengthTimeLines ? limits.max_length : limits.max_time) / 200;
   }
   const auto no_start_time = [](const auto& np) { return np; };
-  integrate_curves(f, field, curves, limits, no_start_time, surfaces);
+  if (field.distributed())
+    integrate_curves(f, field, curves, limits, no_start_time, surfaces);
+  else
+    integrate_curves(f, Pointwise_view{ field }, curves, limits, no_start_time, surfaces);
 }
 
 void vtkStreamSurfaceFromCurve::Internals::integrate_path_surfaces(vtkStreamSurfaceFromCurve* f,
@@ -418,7 +422,10 @@ void vtkStreamSurfaceFromCurve::Internals::integrate_path_surfaces(vtkStreamSurf
   if (limits.time_line_step <= 0)
     limits.time_line_step = limits.max_time / 200;
   const auto from_start = [start](const auto& np) { return FAS::parameters::start_time(start, np); };
-  integrate_curves(f, Unsteady_view{ field }, curves, limits, from_start, surfaces);
+  if (field.distributed())
+    integrate_curves(f, Unsteady_view{ field }, curves, limits, from_start, surfaces);
+  else
+    integrate_curves(f, Pointwise_unsteady_view{ field }, curves, limits, from_start, surfaces);
 }
 
 void vtkStreamSurfaceFromCurve::CheckProperties()

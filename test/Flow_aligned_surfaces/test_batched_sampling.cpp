@@ -1,0 +1,303 @@
+// Fields that answer batches (the optional `sample()` of FlowField_3 and UnsteadyFlowField_3):
+// the algorithms give the same results, bit for bit, as with the same field point by point,
+// and ask for every sample in batches: a stream surface around a cylinder (tears, lost and
+// inserted particles), the same surface with both directions, a path surface, the measures, the
+// parametrization and the growth across the flow.  The peer is the same field without `sample()`.
+
+#include "test_kernel.h"
+
+#include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
+#include <CGAL/Flow_aligned_surfaces/grow_boundary.h>
+#include <CGAL/Flow_aligned_surfaces/integrate_stream_surface.h>
+#include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
+#include <CGAL/Flow_aligned_surfaces/measure.h>
+#include <CGAL/Flow_aligned_surfaces/parametrize.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+// This file's tests and helpers in a namespace of their own (unity batches).
+namespace test_batched_sampling {
+
+namespace {
+
+using namespace fas_test;
+using Mesh = CGAL::Surface_mesh<Point_3>;
+using Vertex = Mesh::Vertex_index;
+using Polyline = std::vector<Point_3>;
+
+// What a batched field was asked.
+struct Counts {
+  std::size_t single = 0;  // calls of the call operator
+  std::size_t batches = 0; // calls of sample()
+  std::size_t points = 0;  // points in the batches
+};
+
+// `Field` (steady) with a batch operation that answers as the call operator does, counting.
+template <class Field>
+struct Batched {
+  Field field;
+  std::shared_ptr<Counts> counts = std::make_shared<Counts>();
+
+  std::optional<Vector_3> operator()(const Point_3& p) const
+  {
+    ++counts->single;
+    return field(p);
+  }
+  std::vector<std::optional<Vector_3>> sample(const std::vector<Point_3>& points) const
+  {
+    ++counts->batches;
+    counts->points += points.size();
+    std::vector<std::optional<Vector_3>> answers;
+    for (const Point_3& p : points)
+      answers.push_back(field(p));
+    return answers;
+  }
+};
+
+// The same for an unsteady field.
+template <class Field>
+struct Batched_unsteady {
+  Field field;
+  std::shared_ptr<Counts> counts = std::make_shared<Counts>();
+
+  std::optional<Vector_3> operator()(const Point_3& p, double t) const
+  {
+    ++counts->single;
+    return field(p, t);
+  }
+  std::vector<std::optional<Vector_3>> sample(const std::vector<Point_3>& points,
+                                              const std::vector<double>& times) const
+  {
+    ++counts->batches;
+    counts->points += points.size();
+    std::vector<std::optional<Vector_3>> answers;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      answers.push_back(field(points[i], times[i]));
+    return answers;
+  }
+};
+
+struct Surface {
+  Mesh tm;
+  Mesh::Property_map<Vertex, double> u, t;
+  FAS::Stream_surface_report report;
+
+  template <class Field, class NP>
+  Surface(const Field& field, const Polyline& seed, const NP& np)
+  {
+    u = tm.add_property_map<Vertex, double>("v:u", -1).first;
+    t = tm.add_property_map<Vertex, double>("v:t", -1).first;
+    report = FAS::integrate_stream_surface(
+        field, seed, tm,
+        FAS::parameters::seed_parameter_map(u, FAS::parameters::integration_time_map(t, np)));
+  }
+};
+
+// The two surfaces are the same: vertices (points, u, t) and faces in the same order, the
+// same report.
+void expect_same_surface(const Surface& a, const Surface& b)
+{
+  ASSERT_GT(a.tm.number_of_faces(), 0u);
+  ASSERT_EQ(a.tm.number_of_vertices(), b.tm.number_of_vertices());
+  ASSERT_EQ(a.tm.number_of_faces(), b.tm.number_of_faces());
+  for (Vertex v : a.tm.vertices()) {
+    ASSERT_EQ(a.tm.point(v), b.tm.point(v)) << "vertex " << v;
+    ASSERT_EQ(a.u[v], b.u[v]);
+    ASSERT_EQ(a.t[v], b.t[v]);
+  }
+  for (auto f : a.tm.faces()) {
+    auto ha = a.tm.halfedge(f), hb = b.tm.halfedge(f);
+    for (int k = 0; k < 3; ++k, ha = a.tm.next(ha), hb = b.tm.next(hb))
+      ASSERT_EQ(a.tm.target(ha), b.tm.target(hb)) << "face " << f;
+  }
+  EXPECT_EQ(a.report.number_of_time_lines, b.report.number_of_time_lines);
+  EXPECT_EQ(a.report.number_of_inserted_particles, b.report.number_of_inserted_particles);
+  EXPECT_EQ(a.report.number_of_removed_particles, b.report.number_of_removed_particles);
+  EXPECT_EQ(a.report.number_of_tears, b.report.number_of_tears);
+  EXPECT_EQ(a.report.number_of_lost_particles, b.report.number_of_lost_particles);
+  EXPECT_EQ(a.report.final_parameter, b.report.final_parameter);
+  EXPECT_EQ(a.report.termination, b.report.termination);
+}
+
+// Every sample in batches, as many as the report says (and one more, where the default time-line
+// step samples the seed curve).
+void expect_batched(const Counts& counts, const Surface& s)
+{
+  EXPECT_EQ(counts.single, 0u);
+  EXPECT_GE(counts.batches, s.report.number_of_sample_batches);
+  EXPECT_LE(counts.batches, s.report.number_of_sample_batches + 1);
+  ASSERT_GT(counts.batches, 0u);
+  EXPECT_GT(counts.points, counts.batches);
+}
+
+// Under the sanitizers (FAS_TEST_SANITIZED, at -O0) the cylinder's surface stops once the front
+// has torn around the cylinder: the same code paths at half the cost.
+#ifdef FAS_TEST_SANITIZED
+constexpr double cylinder_time = 4.0;
+#else
+constexpr double cylinder_time = 10.0;
+#endif
+
+TEST(BatchedSampling, StreamSurfaceAroundACylinderIsTheSameBitForBit)
+{
+  const FAS::Cylinder_potential_flow<K> cylinder(1.0, 1.0);
+  const Batched<FAS::Cylinder_potential_flow<K>> batched{cylinder};
+  const Polyline seed = {Point_3(-3, -0.6, 0.2), Point_3(-3, 0.6, 0.2)};
+  const auto np = FAS::parameters::front_spacing(
+      0.05,
+      FAS::parameters::max_time(cylinder_time, FAS::parameters::max_number_of_time_lines(std::size_t(1000))));
+  const Surface one_by_one(cylinder, seed, np);
+  const Surface in_batches(batched, seed, np);
+  expect_same_surface(one_by_one, in_batches);
+  EXPECT_GE(one_by_one.report.number_of_tears + one_by_one.report.number_of_lost_particles, 1u);
+  EXPECT_GE(one_by_one.report.number_of_inserted_particles, 1u);
+  EXPECT_EQ(one_by_one.report.number_of_sample_batches, 0u);
+  expect_batched(*batched.counts, in_batches);
+  std::cout << "cylinder: " << batched.counts->points << " samples in " << batched.counts->batches
+            << " batches over " << in_batches.report.number_of_time_lines << " time lines\n";
+}
+
+TEST(BatchedSampling, AFrontWithoutInsertionsTakesABatchPerStageOfEachTimeLine)
+{
+  // A uniform flow: no particle is inserted, and one Runge-Kutta step (six stages after the
+  // first) and the sample of the direction at its end bring a time line, or only that sample
+  // where the last step reaches beyond it.  Two batches at the seed (the particles' first
+  // samples, their directions).
+  const FAS::Uniform_flow<K> uniform(Vector_3(0.3, 1, 0.2));
+  const Batched<FAS::Uniform_flow<K>> batched{uniform};
+  const Polyline seed = {Point_3(0, 0, 0), Point_3(1, 0, 0.5)};
+  const auto np = FAS::parameters::front_spacing(
+      0.05, FAS::parameters::max_time(2.0, FAS::parameters::time_line_step(0.1)));
+  const Surface one_by_one(uniform, seed, np);
+  const Surface in_batches(batched, seed, np);
+  expect_same_surface(one_by_one, in_batches);
+  expect_batched(*batched.counts, in_batches);
+  EXPECT_EQ(in_batches.report.number_of_inserted_particles, 0u);
+  EXPECT_LE(in_batches.report.number_of_sample_batches, 2 + 7 * in_batches.report.number_of_time_lines);
+  // Most of the front in each of them (its particles start with steps of their own size: the
+  // starting step depends on the point).
+  std::size_t particles = 0;
+  for (Vertex v : in_batches.tm.vertices())
+    particles += in_batches.t[v] == 0. ? 1 : 0;
+  EXPECT_GE(2 * batched.counts->points, particles * batched.counts->batches);
+}
+
+TEST(BatchedSampling, BothDirectionsInALinearFlowAreTheSameBitForBit)
+{
+  // Diverging particles: insertions, level after level.
+  const FAS::Linear_flow<K> linear;
+  const Batched<FAS::Linear_flow<K>> batched{linear};
+  const Polyline seed = {Point_3(0.2, 0.1, 1.0), Point_3(0.4, 0.5, 0.8)};
+  const auto np = FAS::parameters::integration_direction(
+      FAS::Integration_direction::BOTH, FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(1.5)));
+  const Surface one_by_one(linear, seed, np);
+  const Surface in_batches(batched, seed, np);
+  expect_same_surface(one_by_one, in_batches);
+  EXPECT_GE(one_by_one.report.number_of_inserted_particles, 10u);
+  expect_batched(*batched.counts, in_batches);
+}
+
+TEST(BatchedSampling, PathSurfaceIsTheSameBitForBit)
+{
+  const Vector_3 U0(1, 0, 0), U1(1, 2, 0.5);
+  const FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>> flow(
+      {0., 2.}, {FAS::Uniform_flow<K>(U0), FAS::Uniform_flow<K>(U1)});
+  const Batched_unsteady<FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>>> batched{flow};
+  const Polyline seed = {Point_3(0, 0, 0), Point_3(0, 0, 1)};
+  const auto np = FAS::parameters::front_spacing(
+      0.1, FAS::parameters::start_time(0.5, FAS::parameters::time_line_step(0.1)));
+  const Surface one_by_one(flow, seed, np);
+  const Surface in_batches(batched, seed, np);
+  expect_same_surface(one_by_one, in_batches);
+  expect_batched(*batched.counts, in_batches);
+}
+
+TEST(BatchedSampling, MeasuresAndParametrizationAskOneBatch)
+{
+  Mesh tm;
+  FAS::make_planar_patch(tm, Point_3(0.2, 0.1, 0.3), Vector_3(0.3, 0.2, 1), 0.5, 0.5, 800);
+  const FAS::ABC_flow<K> abc;
+  const Batched<FAS::ABC_flow<K>> batched{abc};
+
+  const FAS::Normalized_flux a = FAS::normalized_flux(tm, abc);
+  const FAS::Normalized_flux b = FAS::normalized_flux(tm, batched);
+  ASSERT_TRUE(a.value && b.value);
+  EXPECT_EQ(*a.value, *b.value);
+  EXPECT_EQ(a.sampled_area_fraction, b.sampled_area_fraction);
+  EXPECT_EQ(batched.counts->batches, 1u);
+  EXPECT_EQ(batched.counts->single, 0u);
+  EXPECT_EQ(batched.counts->points, tm.number_of_faces());
+
+  *batched.counts = Counts();
+  auto ra = tm.add_property_map<Vertex, double>("v:ra", 0).first;
+  auto sa = tm.add_property_map<Vertex, double>("v:sa", 0).first;
+  auto rb = tm.add_property_map<Vertex, double>("v:rb", 0).first;
+  auto sb = tm.add_property_map<Vertex, double>("v:sb", 0).first;
+  ASSERT_TRUE(FAS::parametrize_tangential(tm, abc, ra, sa));
+  ASSERT_TRUE(FAS::parametrize_tangential(tm, batched, rb, sb));
+  for (Vertex v : tm.vertices()) {
+    ASSERT_EQ(ra[v], rb[v]);
+    ASSERT_EQ(sa[v], sb[v]);
+  }
+  EXPECT_EQ(batched.counts->batches, 1u);
+  EXPECT_EQ(batched.counts->single, 0u);
+}
+
+TEST(BatchedSampling, GrowthAcrossTheFlowAsksOneBatch)
+{
+  // A swirl about the z-axis through a patch beside it: the border edges face across the flow
+  // on some sides only.
+  const FAS::Helical_flow<K> swirl;
+  const Batched<FAS::Helical_flow<K>> batched{swirl};
+  Mesh a, b;
+  FAS::make_planar_patch(a, Point_3(1.5, 0.2, 0.3), Vector_3(0, 1, 0.2), 0.8, 0.6, 600);
+  b = a;
+  const FAS::Growth_report one_by_one =
+      FAS::grow_boundary(a, 0.1, FAS::parameters::across_flow(true, FAS::parameters::flow_field(swirl)));
+  const FAS::Growth_report in_a_batch =
+      FAS::grow_boundary(b, 0.1, FAS::parameters::across_flow(true, FAS::parameters::flow_field(batched)));
+  ASSERT_GT(one_by_one.number_of_new_faces, 0u);
+  EXPECT_EQ(one_by_one.number_of_new_faces, in_a_batch.number_of_new_faces);
+  ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices());
+  for (Vertex v : a.vertices())
+    ASSERT_EQ(a.point(v), b.point(v));
+  EXPECT_EQ(batched.counts->batches, 1u);
+  EXPECT_EQ(batched.counts->single, 0u);
+}
+
+// A batch operation that answers a point less than asked.
+struct Short_batches {
+  std::optional<Vector_3> operator()(const Point_3&) const { return Vector_3(1, 0, 0); }
+  std::vector<std::optional<Vector_3>> sample(const std::vector<Point_3>& points) const
+  {
+    return std::vector<std::optional<Vector_3>>(points.empty() ? 0 : points.size() - 1, Vector_3(1, 0, 0));
+  }
+};
+
+TEST(BatchedSampling, ABatchOfTheWrongSizeIsRefusedWithItsCounts)
+{
+  Mesh tm;
+  FAS::make_planar_patch(tm, Point_3(0, 0, 0), Vector_3(0, 0, 1), 1, 1, 50);
+  try {
+    FAS::normalized_flux(tm, Short_batches());
+    FAIL() << "no exception";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("answered " + std::to_string(tm.number_of_faces() - 1) + " of " +
+                                         std::to_string(tm.number_of_faces()) + " points"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+} // namespace
+} // namespace test_batched_sampling
