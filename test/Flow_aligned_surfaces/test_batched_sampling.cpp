@@ -2,10 +2,11 @@
 // the algorithms give the same results, bit for bit, as with the same field point by point,
 // and ask for every sample in batches: a stream surface around a cylinder (tears, lost and
 // inserted particles), the same surface with both directions, a path surface, the measures, the
-// parametrization and the growth across the flow.  The peer is the same field without `sample()`.
+// parametrization, the growth across the flow, and the flow on a path surface.  The peer is the same field without `sample()`.
 
 #include "test_kernel.h"
 
+#include <CGAL/Flow_aligned_surfaces/Path_surface_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/grow_boundary.h>
@@ -273,6 +274,31 @@ TEST(BatchedSampling, GrowthAcrossTheFlowAsksOneBatch)
     ASSERT_EQ(a.point(v), b.point(v));
   EXPECT_EQ(batched.counts->batches, 1u);
   EXPECT_EQ(batched.counts->single, 0u);
+}
+
+TEST(BatchedSampling, ThePathSurfaceFlowPassesItsBatchesOn)
+{
+  // The flow a surface saw, its vertices passed at the times t = x: measured through an unsteady
+  // field that answers batches, in one batch of points and their times.
+  const Vector_3 U0(1, 0, 0), U1(1, 2, 0.5);
+  const FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>> flow(
+      {0., 2.}, {FAS::Uniform_flow<K>(U0), FAS::Uniform_flow<K>(U1)});
+  const Batched_unsteady<FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>>> batched{flow};
+  Mesh tm;
+  FAS::make_planar_patch(tm, Point_3(1, 0, 0), Vector_3(0, 0.3, 1), 1.5, 1, 400);
+  auto times = tm.add_property_map<Vertex, double>("v:time", 0).first;
+  for (Vertex v : tm.vertices())
+    times[v] = tm.point(v).x();
+  using Times = decltype(times);
+  const FAS::Path_surface_flow_field_3<decltype(flow), Mesh, Times> one_by_one(flow, tm, times);
+  const FAS::Path_surface_flow_field_3<decltype(batched), Mesh, Times> in_a_batch(batched, tm, times);
+  const FAS::Normalized_flux a = FAS::normalized_flux(tm, one_by_one);
+  const FAS::Normalized_flux b = FAS::normalized_flux(tm, in_a_batch);
+  ASSERT_TRUE(a.value && b.value);
+  EXPECT_EQ(*a.value, *b.value);
+  EXPECT_EQ(batched.counts->batches, 1u);
+  EXPECT_EQ(batched.counts->single, 0u);
+  EXPECT_EQ(batched.counts->points, tm.number_of_faces());
 }
 
 // A batch operation that answers a point less than asked.

@@ -22,6 +22,7 @@
 #include <memory>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
@@ -99,6 +100,20 @@ public:
   auto operator()(const Point_3& p) const -> decltype(std::declval<const UnsteadyFlowField&>()(p, 0.))
   {
     return m_field(p, time(p));
+  }
+
+  /// returns `field(p, time(p))` for each of `points`, in one batch of `field` (its
+  /// `sample(points, times)`, see `UnsteadyFlowField_3`); only where `UnsteadyFlowField` answers
+  /// batches
+  template <class Field = UnsteadyFlowField>
+  auto sample(const std::vector<Point_3>& points) const
+      -> decltype(std::declval<const Field&>().sample(points, std::vector<double>()))
+  {
+    std::vector<double> times;
+    times.reserve(points.size());
+    for (const Point_3& p : points)
+      times.push_back(time(p));
+    return m_field.sample(points, times);
   }
   /// @}
 

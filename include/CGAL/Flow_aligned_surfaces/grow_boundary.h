@@ -165,6 +165,27 @@ std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> appen
   return added;
 }
 
+// The samples of `field` at the midpoints of the border edges of `tm` (as the growth across the
+// flow computes them), in one batch, into `samples` (at time 0).
+template <class TriangleMesh, class VertexIndexMap, class FlowField, class GeomTraits>
+void sample_border_midpoints(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x, const FlowField& field,
+                             const GeomTraits& gt, Replay_samples<Flow_sample>& samples)
+{
+  auto construct_point = gt.construct_point_3_object();
+  std::vector<Eigen::Vector3d> midpoints;
+  std::vector<typename GeomTraits::Point_3> points;
+  for (auto h : halfedges(tm))
+    if (is_border(h, tm)) {
+      const Eigen::Vector3d m =
+          0.5 * (position<TriangleMesh>(x, vim, source(h, tm)) + position<TriangleMesh>(x, vim, target(h, tm)));
+      midpoints.push_back(m);
+      points.push_back(construct_point(m.x(), m.y(), m.z()));
+    }
+  const std::vector<Flow_sample> sampled = sample_flow_at(field, points);
+  for (std::size_t k = 0; k < midpoints.size(); ++k)
+    samples.add(midpoints[k], 0., sampled[k]);
+}
+
 } // namespace internal
 /// \endcond
 
@@ -278,30 +299,6 @@ boundary; grow in several small steps to follow a curved surface.
 
 \sa `Flow_aligned_deformation::grow()`
 */
-namespace internal {
-
-// The samples of `field` at the midpoints of the border edges of `tm` (as the growth across the
-// flow computes them), in one batch, into `samples` (at time 0).
-template <class TriangleMesh, class VertexIndexMap, class FlowField, class GeomTraits>
-void sample_border_midpoints(const TriangleMesh& tm, VertexIndexMap vim, const Positions& x, const FlowField& field,
-                             const GeomTraits& gt, Replay_samples<Flow_sample>& samples)
-{
-  auto construct_point = gt.construct_point_3_object();
-  std::vector<Eigen::Vector3d> midpoints;
-  std::vector<typename GeomTraits::Point_3> points;
-  for (auto h : halfedges(tm))
-    if (is_border(h, tm)) {
-      const Eigen::Vector3d m =
-          0.5 * (position<TriangleMesh>(x, vim, source(h, tm)) + position<TriangleMesh>(x, vim, target(h, tm)));
-      midpoints.push_back(m);
-      points.push_back(construct_point(m.x(), m.y(), m.z()));
-    }
-  const std::vector<Flow_sample> sampled = sample_flow_at(field, points);
-  for (std::size_t k = 0; k < midpoints.size(); ++k)
-    samples.add(midpoints[k], 0., sampled[k]);
-}
-
-} // namespace internal
 
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 Growth_report grow_boundary(TriangleMesh& tm, double distance,

@@ -2,7 +2,8 @@
 see CMakeLists.txt), with that input spread over the ranks as well: its pieces are brought
 together on rank 0 (shared points merged, line pieces joined into one polyline), and the result
 is the library's for the whole input.  Then the flow on one rank only (rank 0, which runs the
-algorithm, holds no cells) and on none (a message, the previous output kept).  The serial test
+algorithm, holds no cells; the filter says once that redistributing would spread the sampling)
+and on none (a message, the previous output kept).  The serial test
 scripts, run on 2 ranks as well, cover the flow spread over the ranks with whole surfaces."""
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
@@ -144,14 +145,19 @@ t.expect_same_surface(out, t.read_polydata(reference_vtp), "split seed line")
 # 3. The flow on one rank only, as unstructured cells (sampled through VTK's cell locator and
 # interpolation functions, not the image's grid: so the library's surface only within 1e-6).  On
 # rank 1 only, rank 0 (which integrates) holds no cells and every sample comes from rank 1; on
-# rank 0 only, every sample is rank 0's own.  The two surfaces are the same to the last bit.
-# Then on no rank: a message, the previous output kept.
+# rank 0 only, every sample is rank 0's own.  The two surfaces are the same to the last bit.  The
+# filter says, once, that redistributing the data would spread the sampling.  Then on no rank: a
+# message, the previous output kept.
 pieces = ProgrammableSource(OutputDataSetType="vtkUnstructuredGrid")
 surface.Input = pieces
 on_rank = {}
 for rank in [0, 1]:
     pieces.Script = t.flow_on_one_rank(rank, "all", setup.field())
-    on_rank[rank] = t.fetch(surface)
+    with t.Messages() as messages:
+        on_rank[rank] = t.fetch(surface)
+    if ("Redistribute DataSet" in messages.text()) != (rank == 0):
+        raise AssertionError("flow on rank %d only: the note on redistributing the data %s:\n%s" % (
+            rank, "is missing" if rank == 0 else "comes a second time", messages.text()))
     t.expect_same_surface(on_rank[rank], t.read_polydata(reference_vtp), "flow on rank %d only" % rank, 1e-6)
     if t.field_value(on_rank[rank], "number_of_ranks_with_cells") != 1:
         raise AssertionError("flow on rank %d only: %g ranks with cells" % (

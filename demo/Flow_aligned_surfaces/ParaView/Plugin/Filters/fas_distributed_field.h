@@ -706,17 +706,6 @@ inline vtkSmartPointer<vtkPolyData> gather_on_root(vtkPolyData* piece)
   return whole;
 }
 
-/// RequestUpdateExtent of a filter that samples the flow at the requested time: asks the input
-/// (port 0) for the steps around that time, one pass after the other (fas_temporal_input.h).
-inline void request_steps_around_requested_time(Temporal_flow_input& steps, vtkInformationVector** inputVector,
-                                                vtkInformationVector* outputVector)
-{
-  if (!steps.temporal())
-    return;
-  const double t = steps.requested_time(outputVector->GetInformationObject(0));
-  steps.request_next(inputVector[0]->GetInformationObject(0), steps.steps_around(t));
-}
-
 /// A `Distributed_velocity_field` point by point, without its batch operation: on one process,
 /// where the library's rounds of batched sampling (a stream surface's Runge-Kutta stages) cost
 /// more than the exchanges they save.
@@ -755,18 +744,6 @@ inline std::optional<Distributed_input> update_with_steps(Temporal_flow_input& s
   if (!steps.temporal())
     return field.update(steps.steps({}), 0., selection);
   return field.update(steps.steps(needed), steps.requested_time(outputVector->GetInformationObject(0)), selection);
-}
-
-/// The same with the steps around the requested time (a filter that samples the flow at that
-/// time only).
-inline std::optional<Distributed_input> update_at_requested_time(Temporal_flow_input& steps,
-  Distributed_velocity_field& field, vtkInformation* request, vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector, const Velocity_selection& selection)
-{
-  std::vector<std::size_t> needed;
-  if (steps.temporal())
-    needed = steps.steps_around(steps.requested_time(outputVector->GetInformationObject(0)));
-  return update_with_steps(steps, field, request, inputVector, outputVector, selection, needed);
 }
 
 } // namespace fas_paraview

@@ -1,6 +1,6 @@
 #include "vtkFlowAlignedParametrize.h"
 
-#include "fas_distributed_field.h"
+#include "fas_flow_state.h"
 #include "fas_paraview_surface_input.h"
 
 #include <CGAL/Flow_aligned_surfaces/extract_iso_contours.h>
@@ -122,12 +122,6 @@ vtkSmartPointer<vtkPolyData> point_cloud(const std::vector<Point>& seeds)
 
 } // namespace
 
-struct vtkFlowAlignedParametrize::Internals {
-  Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
-  Temporal_flow_input steps;        // the time steps of input 0
-  Kept_outputs kept;
-};
-
 vtkFlowAlignedParametrize::vtkFlowAlignedParametrize()
   : Parametrization(TANGENTIAL)
   , Normalization(LIBRARY_DEFAULT)
@@ -138,7 +132,6 @@ vtkFlowAlignedParametrize::vtkFlowAlignedParametrize()
   , NumberOfSeedCurves(10)
   , SeedPointSpacing(0)
   , RandomSeed(0)
-  , Internal(new Internals)
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(3);
@@ -146,143 +139,105 @@ vtkFlowAlignedParametrize::vtkFlowAlignedParametrize()
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS, vtkDataSetAttributes::VECTORS);
 }
 
-vtkFlowAlignedParametrize::~vtkFlowAlignedParametrize()
-{
-  delete this->Internal;
-}
+vtkFlowAlignedParametrize::~vtkFlowAlignedParametrize() = default;
 
 int vtkFlowAlignedParametrize::FillInputPortInformation(int port, vtkInformation* info)
 {
   return fill_surface_filter_input_port(port, info);
 }
 
-int vtkFlowAlignedParametrize::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+const char* vtkFlowAlignedParametrize::GetLabel()
 {
-  this->Internal->steps.read_time_steps(inputVector[0]->GetInformationObject(0));
-  return 1;
+  return "Parametrize And Seed";
 }
 
-int vtkFlowAlignedParametrize::RequestUpdateExtent(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+bool vtkFlowAlignedParametrize::Compute(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  request_steps_around_requested_time(this->Internal->steps, inputVector, outputVector);
-  return 1;
-}
-
-int vtkFlowAlignedParametrize::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  Internals& in = *this->Internal;
-  // Every rank: the flow at the requested time (a temporal input: once its steps have come).
-  const std::optional<Distributed_input> update =
-    update_at_requested_time(in.steps, in.field, request, inputVector, outputVector, selected_velocity(this));
-  if (!update)
-    return 1; // the pipeline runs this filter again with the next time step
-  const Distributed_input& pieces = *update;
-  // Every rank: the surface's pieces go to rank 0, and every rank samples its piece of the
-  // flow for rank 0 (one process: the input's own field).
-  const vtkSmartPointer<vtkPolyData> input_surface = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
-  if (!in.field.is_root())
+  FlowState& in = *this->Flow;
+  const Distributed_input& pieces = in.pieces;
+  const vtkSmartPointer<vtkPolyData>& input_surface = in.gathered;
+  require_property(std::isfinite(this->Angle), "Angle", this->Angle, "finite (radians)");
+  require_property(this->NumberOfSeedCurves >= 0 && this->NumberOfSeedCurves <= 100000, "Number Of Seed Curves",
+                   this->NumberOfSeedCurves, "from 0 to 100,000");
+  require_property(this->SeedPointSpacing >= 0, "Seed Point Spacing", this->SeedPointSpacing,
+                   ">= 0 (0: a twentieth of the surface's largest extent)");
+  require_property(this->RandomSeed >= 0, "Random Seed", this->RandomSeed, ">= 0");
+  Mesh tm = surface_mesh(input_surface);
+  // Progress per stage of the parametrization; Abort (AbortExecute) stops before the next stage.
+  const std::function<bool(double)> progress = [this](double fraction) {
+    this->UpdateProgress(fraction);
+    return !this->GetAbortExecute();
+  };
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->ShallowCopy(input_surface);
+  const char* contoured = "r";
+  Scalar_map f;
+  if (this->Parametrization == CIRCULAR)
   {
-    serve_rank_0(in.field, outputVector);
-    return 1;
+    const Point source = this->SourceAtCentroid
+      ? area_centroid(tm)
+      : Point(this->SourcePoint[0], this->SourcePoint[1], this->SourcePoint[2]);
+    const Vertex source_vertex = nearest_vertex(tm, source);
+    f = tm.add_property_map<Vertex, double>("v:distance", 0.).first;
+    if (!FAS::compute_geodesic_distance(tm, source_vertex, f,
+          FAS::parameters::intrinsic_delaunay(this->IntrinsicDelaunay != 0, CGAL::parameters::callback(progress))))
+      return this->Cancelled(outputVector);
+    contoured = "geodesic_distance";
+    add_vertex_array(surface, tm, contoured, 1, [&](Vertex v) { return f[v]; });
+    add_field_value(surface, "source_point_id", double(source_vertex.idx()));
   }
-  try
+  else
   {
-    Finish_probes finish_probes(in.field);
-    require_property(std::isfinite(this->Angle), "Angle", this->Angle, "finite (radians)");
-    require_property(this->NumberOfSeedCurves >= 0 && this->NumberOfSeedCurves <= 100000, "Number Of Seed Curves",
-                     this->NumberOfSeedCurves, "from 0 to 100,000");
-    require_property(this->SeedPointSpacing >= 0, "Seed Point Spacing", this->SeedPointSpacing,
-                     ">= 0 (0: a twentieth of the surface's largest extent)");
-    require_property(this->RandomSeed >= 0, "Random Seed", this->RandomSeed, ">= 0");
-    Mesh tm = surface_mesh(input_surface);
-    // Progress per stage of the parametrization; Abort (AbortExecute) stops before the next stage.
-    const std::function<bool(double)> progress = [this](double fraction) {
-      this->UpdateProgress(fraction);
-      return !this->GetAbortExecute();
+    pieces.require_samples();
+    // The parameters along and across the flow (on several ranks the library's batch of face
+    // samples is one exchange).
+    const auto parametrize = [&](Mesh& m, const std::function<bool(double)>& report) {
+      Scalar_map r = m.add_property_map<Vertex, double>("v:r", 0.).first;
+      Scalar_map s = m.add_property_map<Vertex, double>("v:s", 0.).first;
+      const bool done = this->Parametrization == ORTHOGONAL
+        ? with_normalization(this->Normalization, report, [&](const auto& np) {
+            return FAS::parametrize_orthogonal(m, in.field, r, s, FAS::parameters::angle(this->Angle, np));
+          })
+        : with_normalization(this->Normalization, report,
+            [&](const auto& np) { return FAS::parametrize_tangential(m, in.field, r, s, np); });
+      return std::make_tuple(done, r, s);
     };
-    auto surface = vtkSmartPointer<vtkPolyData>::New();
-    surface->ShallowCopy(input_surface);
-    const char* contoured = "r";
-    Scalar_map f;
-    if (this->Parametrization == CIRCULAR)
-    {
-      const Point source = this->SourceAtCentroid
-        ? area_centroid(tm)
-        : Point(this->SourcePoint[0], this->SourcePoint[1], this->SourcePoint[2]);
-      const Vertex source_vertex = nearest_vertex(tm, source);
-      f = tm.add_property_map<Vertex, double>("v:distance", 0.).first;
-      if (!FAS::compute_geodesic_distance(tm, source_vertex, f,
-            FAS::parameters::intrinsic_delaunay(this->IntrinsicDelaunay != 0, CGAL::parameters::callback(progress))))
-        return this->Cancelled(outputVector);
-      contoured = "geodesic_distance";
-      add_vertex_array(surface, tm, contoured, 1, [&](Vertex v) { return f[v]; });
-      add_field_value(surface, "source_point_id", double(source_vertex.idx()));
-    }
-    else
-    {
-      pieces.require_samples();
-      // The parameters along and across the flow (on several ranks the library's batch of face
-      // samples is one exchange).
-      const auto parametrize = [&](Mesh& m, const std::function<bool(double)>& report) {
-        Scalar_map r = m.add_property_map<Vertex, double>("v:r", 0.).first;
-        Scalar_map s = m.add_property_map<Vertex, double>("v:s", 0.).first;
-        const bool done = this->Parametrization == ORTHOGONAL
-          ? with_normalization(this->Normalization, report, [&](const auto& np) {
-              return FAS::parametrize_orthogonal(m, in.field, r, s, FAS::parameters::angle(this->Angle, np));
-            })
-          : with_normalization(this->Normalization, report,
-              [&](const auto& np) { return FAS::parametrize_tangential(m, in.field, r, s, np); });
-        return std::make_tuple(done, r, s);
-      };
-      Scalar_map s;
-      bool done = false;
-      std::tie(done, f, s) = parametrize(tm, progress);
-      if (!done)
-        return this->Cancelled(outputVector);
-      add_vertex_array(surface, tm, "r", 1, [&](Vertex v) { return f[v]; });
-      add_vertex_array(surface, tm, "s", 1, [&](Vertex v) { return s[v]; });
-    }
-    surface->GetPointData()->SetActiveScalars(contoured);
-    add_distribution_values(surface, pieces, in.field);
-
-    vtkSmartPointer<vtkPolyData> curves =
-      iso_contours(tm, f, std::size_t(this->NumberOfSeedCurves), contoured);
-    // Spacing 0: a twentieth of the surface's largest extent, taken when the filter runs (the
-    // surface has no bounds yet when a script creates the filter).
-    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(tm);
-    const double spacing = this->SeedPointSpacing > 0
-      ? this->SeedPointSpacing
-      : 0.05 * std::max({ box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin() });
-    std::vector<Point> seeds;
-    FAS::sample_seed_points(tm, spacing, std::back_inserter(seeds),
-      CGAL::parameters::random_seed(unsigned(this->RandomSeed)));
-
-    vtkPolyData::GetData(outputVector, 0)->ShallowCopy(surface);
-    vtkPolyData::GetData(outputVector, 1)->ShallowCopy(curves);
-    vtkPolyData::GetData(outputVector, 2)->ShallowCopy(point_cloud(seeds));
-    in.kept.keep(outputVector);
-    return 1;
+    Scalar_map s;
+    bool done = false;
+    std::tie(done, f, s) = parametrize(tm, progress);
+    if (!done)
+      return this->Cancelled(outputVector);
+    add_vertex_array(surface, tm, "r", 1, [&](Vertex v) { return f[v]; });
+    add_vertex_array(surface, tm, "s", 1, [&](Vertex v) { return s[v]; });
   }
-  catch (const std::exception& e)
-  {
-    const bool kept = in.kept.restore(outputVector);
-    vtkErrorMacro(<< "Parametrize And Seed: " << e.what()
-                  << (kept ? "; the previous output is kept" : ""));
-    return 1;
-  }
+  surface->GetPointData()->SetActiveScalars(contoured);
+  add_distribution_values(surface, pieces, in.field);
+
+  vtkSmartPointer<vtkPolyData> curves =
+    iso_contours(tm, f, std::size_t(this->NumberOfSeedCurves), contoured);
+  // Spacing 0: a twentieth of the surface's largest extent, taken when the filter runs (the
+  // surface has no bounds yet when a script creates the filter).
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(tm);
+  const double spacing = this->SeedPointSpacing > 0
+    ? this->SeedPointSpacing
+    : 0.05 * std::max({ box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin() });
+  std::vector<Point> seeds;
+  FAS::sample_seed_points(tm, spacing, std::back_inserter(seeds),
+    CGAL::parameters::random_seed(unsigned(this->RandomSeed)));
+
+  vtkPolyData::GetData(outputVector, 0)->ShallowCopy(surface);
+  vtkPolyData::GetData(outputVector, 1)->ShallowCopy(curves);
+  vtkPolyData::GetData(outputVector, 2)->ShallowCopy(point_cloud(seeds));
+  return true;
 }
 
-int vtkFlowAlignedParametrize::Cancelled(vtkInformationVector* outputVector)
+bool vtkFlowAlignedParametrize::Cancelled(vtkInformationVector* outputVector)
 {
-  const bool kept = this->Internal->kept.restore(outputVector);
+  const bool kept = this->Flow->kept.restore(outputVector);
   abort_handled(this);
   vtkWarningMacro(<< "Parametrize And Seed: cancelled before the parametrization was solved"
                   << (kept ? "; the previous output is kept" : ""));
-  return 1;
+  return false;
 }
 
 void vtkFlowAlignedParametrize::PrintSelf(ostream& os, vtkIndent indent)

@@ -6,7 +6,7 @@
 #define vtkFlowAlignedParametrize_h
 
 #include "FlowAlignedSurfacesFiltersModule.h"
-#include <vtkPolyDataAlgorithm.h>
+#include "vtkFlowAlignedFilter.h"
 
 /// Input port 0: any data set with a 3-component point or cell array (the velocity, chosen with
 /// `SetInputArrayToProcess(0, ...)`); input port 1: a triangulated surface (for instance the
@@ -21,11 +21,11 @@
 ///
 /// On bad input (no 3-component array, no triangles on port 1, a surface outside the data) it
 /// reports the error and keeps its previous outputs.
-class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkFlowAlignedParametrize : public vtkPolyDataAlgorithm
+class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkFlowAlignedParametrize : public vtkFlowAlignedFilter
 {
 public:
   static vtkFlowAlignedParametrize* New();
-  vtkTypeMacro(vtkFlowAlignedParametrize, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkFlowAlignedParametrize, vtkFlowAlignedFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Parametrizations
@@ -80,9 +80,8 @@ protected:
   ~vtkFlowAlignedParametrize() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  const char* GetLabel() override;
+  bool Compute(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Parametrization;
   int Normalization;
@@ -98,10 +97,7 @@ private:
   vtkFlowAlignedParametrize(const vtkFlowAlignedParametrize&) = delete;
   void operator=(const vtkFlowAlignedParametrize&) = delete;
   // After Abort: keeps the previous output, says so, and lets the next update compute anew.
-  int Cancelled(vtkInformationVector* outputVector);
-
-  struct Internals;
-  Internals* Internal;
+  bool Cancelled(vtkInformationVector* outputVector);
 };
 
 #endif

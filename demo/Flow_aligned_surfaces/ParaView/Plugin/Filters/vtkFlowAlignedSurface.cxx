@@ -1,7 +1,7 @@
 #include "vtkFlowAlignedSurface.h"
 
 #include "fas_default_patch.h"
-#include "fas_distributed_field.h"
+#include "fas_flow_state.h"
 #include "fas_paraview_support.h"
 
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
@@ -115,9 +115,16 @@ void expect_duration(double first_ms, std::size_t left)
 } // namespace
 
 struct vtkFlowAlignedSurface::Internals {
-  // The input's velocity (on several ranks: its samples probed from every rank's piece); the
-  // deformation holds a reference to it: never replaced.
-  Distributed_velocity_field field;
+  explicit Internals(FlowState& flow)
+    : field(flow.field)
+    , kept(flow.kept)
+    , steps(flow.steps)
+  {
+  }
+
+  // The input's velocity (vtkFlowAlignedFilter's: on several ranks, its samples probed from
+  // every rank's piece); the deformation holds a reference to it: never replaced.
+  Distributed_velocity_field& field;
 
   Mesh tm;                    // the surface the deformation writes
   std::unique_ptr<Deformation> deformation;
@@ -140,7 +147,7 @@ struct vtkFlowAlignedSurface::Internals {
   std::vector<FAS::Iteration_report> reports;   // reports[k] made positions[k + 1]
   bool converged = false;
 
-  Kept_outputs kept; // the outputs of the last successful run
+  Kept_outputs& kept; // the outputs of the last successful run (vtkFlowAlignedFilter's)
   double exchange_ms = 0, step_ms = 0; // of the iterations of the last update
 
   // A temporal input: the surface after following the flow from the patch through the steps
@@ -152,7 +159,7 @@ struct vtkFlowAlignedSurface::Internals {
     bool converged = false;
     double max_rotation_angle = 0;
   };
-  Temporal_flow_input steps;           // the time steps of the input
+  Temporal_flow_input& steps;          // the time steps of the input (vtkFlowAlignedFilter's)
   std::map<std::size_t, Followed> followed;
   std::vector<Point> initial;          // the patch at its pose, where following starts
   std::size_t followed_in_update = 0;  // steps followed by the last update
@@ -219,7 +226,7 @@ vtkFlowAlignedSurface::vtkFlowAlignedSurface()
   , MaxDihedralAngle(vtkMath::Pi() / 2)
   , ConvergenceAngle(1e-6)
   , NumberOfIterations(100)
-  , Internal(new Internals)
+  , Internal(new Internals(*this->Flow))
 {
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS, vtkDataSetAttributes::VECTORS);
@@ -256,11 +263,16 @@ vtkDoubleArray* vtkFlowAlignedSurface::GetSizeInfo()
   return this->Internal->size_info;
 }
 
+const char* vtkFlowAlignedSurface::GetLabel()
+{
+  return "Flow-Aligned Surface";
+}
+
 int vtkFlowAlignedSurface::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   Internals& in = *this->Internal;
-  in.steps.read_time_steps(inputVector[0]->GetInformationObject(0));
+  this->Superclass::RequestInformation(request, inputVector, outputVector);
   if (in.steps.temporal())
   {
     // The data's time steps (copied to the output by the pipeline): the time controls play the
@@ -283,15 +295,11 @@ int vtkFlowAlignedSurface::RequestInformation(
   return 1;
 }
 
-int vtkFlowAlignedSurface::RequestUpdateExtent(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+void vtkFlowAlignedSurface::SelectSteps(vtkInformationVector* outputVector)
 {
-  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  Internals& in = *this->Internal;
-  if (in.steps.temporal())
-    in.steps.request_next(inputVector[0]->GetInformationObject(0),
-                          in.needed_steps(outputVector->GetInformationObject(0)));
-  return 1;
+  this->Flow->needed.clear();
+  if (this->Flow->steps.temporal())
+    this->Flow->needed = this->Internal->needed_steps(outputVector->GetInformationObject(0));
 }
 
 void vtkFlowAlignedSurface::OfferDefaultPatch(vtkInformation* input_information)
@@ -325,66 +333,40 @@ void vtkFlowAlignedSurface::OfferDefaultPatch(vtkInformation* input_information)
   in.size_info->SetValue(1, 2 * patch->size);
 }
 
-int vtkFlowAlignedSurface::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+bool vtkFlowAlignedSurface::Compute(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   Internals& in = *this->Internal;
+  const Distributed_input& pieces = this->Flow->pieces;
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  // A temporal input: once the steps the update needs have come, one per pass of the pipeline.
-  if (!in.steps.collect(request, inputVector[0]->GetInformationObject(0)))
-    return 1;
   const bool temporal = in.steps.temporal();
-  const double t = temporal ? in.steps.requested_time(outInfo) : 0.;
-  try
+  check_properties(this);
+  pieces.require_samples();
+  // The field is sampled anew when the input or the array changed; the deformation keeps its
+  // factorization (it depends on the patch only).  A temporal input's steps differ from update
+  // to update; what it followed is dropped when its data change (RequestInformation).
+  const bool data_changed = pieces.changed && !temporal;
+  if (data_changed)
   {
-    // The field: sampled anew when the input or the array changed; the deformation keeps its
-    // factorization (it depends on the patch only).  On several ranks every rank builds the
-    // field of its own piece (none for a piece without cells) and rank 0 learns the pieces'
-    // state; then the other ranks only answer rank 0's probes.
-    const Distributed_input pieces =
-      in.field.update(in.steps.steps(temporal ? in.needed_steps(outInfo) : std::vector<std::size_t>()), t,
-                      selected_velocity(this));
-    if (!in.field.is_root())
-    {
-      serve_rank_0(in.field, outputVector);
-      return 1;
-    }
-    Finish_probes finish_probes(in.field);
-    check_properties(this);
-    pieces.require_samples();
-    // A temporal input's steps differ from update to update; what it followed is dropped when
-    // its data change (RequestInformation).
-    const bool data_changed = pieces.changed && !temporal;
-    if (data_changed)
-    {
-      in.restart = true;
-      if (!pieces.note.empty())
-        vtkOutputWindowDisplayText(("Flow-Aligned Surface: " + pieces.note + "\n").c_str());
-    }
-    in.prepare_patch(this, in.requested_pose(this, pieces, data_changed));
-    if (temporal)
-      in.follow_the_flow(this, t, pieces, outputVector);
-    else
-    {
-      std::size_t requested = std::size_t(this->NumberOfIterations);
-      if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-      {
-        const double k = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-        requested = std::size_t(std::lround(std::clamp(k, 0., double(this->NumberOfIterations))));
-      }
-      in.start_iterations(pieces);
-      const std::size_t computed = in.iterate(this, requested);
-      in.show_iteration(this, std::min(requested, in.positions.size() - 1), computed, pieces, outputVector);
-    }
-    in.kept.keep(outputVector);
-    return 1;
+    in.restart = true;
+    if (!pieces.note.empty())
+      vtkOutputWindowDisplayText(("Flow-Aligned Surface: " + pieces.note + "\n").c_str());
   }
-  catch (const std::exception& e)
+  in.prepare_patch(this, in.requested_pose(this, pieces, data_changed));
+  if (temporal)
+    in.follow_the_flow(this, in.steps.requested_time(outInfo), pieces, outputVector);
+  else
   {
-    const bool kept = in.kept.restore(outputVector);
-    vtkErrorMacro(<< "Flow-Aligned Surface: " << e.what() << (kept ? "; the previous output is kept" : ""));
-    return 1;
+    std::size_t requested = std::size_t(this->NumberOfIterations);
+    if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    {
+      const double k = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      requested = std::size_t(std::lround(std::clamp(k, 0., double(this->NumberOfIterations))));
+    }
+    in.start_iterations(pieces);
+    const std::size_t computed = in.iterate(this, requested);
+    in.show_iteration(this, std::min(requested, in.positions.size() - 1), computed, pieces, outputVector);
   }
+  return true;
 }
 
 std::array<double, 7> vtkFlowAlignedSurface::Internals::requested_pose(vtkFlowAlignedSurface* f, const Distributed_input& pieces,

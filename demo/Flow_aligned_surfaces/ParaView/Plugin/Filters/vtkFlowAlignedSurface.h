@@ -5,7 +5,7 @@
 #define vtkFlowAlignedSurface_h
 
 #include "FlowAlignedSurfacesFiltersModule.h"
-#include <vtkPolyDataAlgorithm.h>
+#include "vtkFlowAlignedFilter.h"
 
 class vtkDoubleArray;
 
@@ -61,11 +61,11 @@ class vtkDoubleArray;
 /// supplied samples of the output), `iterations_computed` and, when iterations were computed,
 /// `exchange_ms_per_iteration` and `step_ms_per_iteration` (see benchmark/.../RESULTS.md,
 /// "ParaView plugin under MPI").
-class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkFlowAlignedSurface : public vtkPolyDataAlgorithm
+class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkFlowAlignedSurface : public vtkFlowAlignedFilter
 {
 public:
   static vtkFlowAlignedSurface* New();
-  vtkTypeMacro(vtkFlowAlignedSurface, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkFlowAlignedSurface, vtkFlowAlignedFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum PatchShapes
@@ -125,9 +125,10 @@ protected:
   ~vtkFlowAlignedSurface() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  const char* GetLabel() override;
+  bool Compute(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void SelectSteps(vtkInformationVector* outputVector) override;
 
   double Center[3];
   double Normal[3];

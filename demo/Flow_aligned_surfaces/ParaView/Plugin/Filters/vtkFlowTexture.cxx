@@ -1,6 +1,6 @@
 #include "vtkFlowTexture.h"
 
-#include "fas_distributed_field.h"
+#include "fas_flow_state.h"
 #include "fas_paraview_surface_input.h"
 
 #include <CGAL/Flow_aligned_surfaces/Path_surface_flow_field_3.h>
@@ -76,20 +76,16 @@ std::vector<double> path_surface_times(vtkPolyData* surface, const Temporal_flow
 
 } // namespace
 
-struct vtkFlowTexture::Internals {
-  Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
-  Temporal_flow_input steps;        // the time steps of input 0
-
-  // The flow at the view's time; along a path surface, from the first step to it.
-  std::vector<std::size_t> needed_steps(vtkFlowTexture* f, vtkInformationVector* outputVector) const
-  {
-    if (!steps.temporal())
-      return {};
-    const double t = steps.requested_time(outputVector->GetInformationObject(0));
-    return f->GetPathSurface() ? steps.steps_between(steps.times().front(), t) : steps.steps_around(t);
-  }
-  Kept_outputs kept;
-};
+// The texture does not depend on the flow: every rank gives the part of it that it is asked for
+// (ParaView asks each rank for a piece of an image output).
+static vtkSmartPointer<vtkImageData> texture_piece(vtkFlowTexture* filter, vtkInformationVector* outputVector)
+{
+  vtkSmartPointer<vtkImageData> image = to_image(make_texture(filter));
+  vtkInformation* info = outputVector->GetInformationObject(1);
+  if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+    image->Crop(info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()));
+  return image;
+}
 
 vtkFlowTexture::vtkFlowTexture()
   : Scale(0)
@@ -103,7 +99,6 @@ vtkFlowTexture::vtkFlowTexture()
   , ArrowsAlong(4)
   , ArrowsAcross(4)
   , PathSurface(false)
-  , Internal(new Internals)
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
@@ -111,10 +106,7 @@ vtkFlowTexture::vtkFlowTexture()
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS, vtkDataSetAttributes::VECTORS);
 }
 
-vtkFlowTexture::~vtkFlowTexture()
-{
-  delete this->Internal;
-}
+vtkFlowTexture::~vtkFlowTexture() = default;
 
 int vtkFlowTexture::FillInputPortInformation(int port, vtkInformation* info)
 {
@@ -127,10 +119,15 @@ int vtkFlowTexture::FillOutputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
-int vtkFlowTexture::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+const char* vtkFlowTexture::GetLabel()
 {
-  this->Internal->steps.read_time_steps(inputVector[0]->GetInformationObject(0));
+  return "Flow Texture";
+}
+
+int vtkFlowTexture::RequestInformation(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->Superclass::RequestInformation(request, inputVector, outputVector);
   // The texture is one whole image.
   const int extent[6] = { 0, this->TextureWidth - 1, 0, this->TextureHeight - 1, 0, 0 };
   vtkInformation* info = outputVector->GetInformationObject(1);
@@ -138,147 +135,120 @@ int vtkFlowTexture::RequestInformation(
   return 1;
 }
 
-int vtkFlowTexture::RequestUpdateExtent(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+void vtkFlowTexture::SelectSteps(vtkInformationVector* outputVector)
 {
-  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  Internals& in = *this->Internal;
-  if (in.steps.temporal())
-    in.steps.request_next(inputVector[0]->GetInformationObject(0), in.needed_steps(this, outputVector));
-  return 1;
+  // The flow at the view's time; along a path surface, from the first step to it.
+  const Temporal_flow_input& steps = this->Flow->steps;
+  this->Flow->needed.clear();
+  if (!steps.temporal())
+    return;
+  const double t = steps.requested_time(outputVector->GetInformationObject(0));
+  this->Flow->needed =
+    this->PathSurface ? steps.steps_between(steps.times().front(), t) : steps.steps_around(t);
 }
 
-int vtkFlowTexture::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+void vtkFlowTexture::FillOtherRankOutputs(vtkInformationVector* outputVector)
 {
-  Internals& in = *this->Internal;
-  // Every rank: the flow at the requested time (a temporal input: once its steps have come).
-  const std::optional<Distributed_input> update = update_with_steps(in.steps, in.field, request, inputVector,
-    outputVector, selected_velocity(this), in.needed_steps(this, outputVector));
-  if (!update)
-    return 1; // the pipeline runs this filter again with the next time step
-  const Distributed_input& pieces = *update;
-  // Every rank: the surface's pieces go to rank 0, and every rank samples its piece of the
-  // flow for rank 0 (one process: the input's own field).
-  const vtkSmartPointer<vtkPolyData> input_surface = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
-  // The texture does not depend on the flow: every rank gives the part of it that it is asked
-  // for (ParaView asks each rank for a piece of an image output).
-  const auto texture_piece = [this, outputVector] {
-    vtkSmartPointer<vtkImageData> image = to_image(make_texture(this));
-    vtkInformation* info = outputVector->GetInformationObject(1);
-    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
-      image->Crop(info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()));
-    return image;
-  };
-  if (!in.field.is_root())
+  try
   {
-    serve_rank_0(in.field, outputVector);
+    vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture_piece(this, outputVector));
+  }
+  catch (const std::exception&)
+  {
+    // rank 0 reports what is wrong with the properties
+  }
+}
+
+void vtkFlowTexture::AfterFailure(vtkInformationVector* outputVector, bool kept)
+{
+  // Without an earlier output the texture is given all the same (it does not depend on the
+  // flow): an empty image would not have the extent the pipeline asked for, a second error.
+  if (!kept)
     try
     {
-      vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture_piece());
+      vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture_piece(this, outputVector));
     }
     catch (const std::exception&)
     {
-      // rank 0 reports what is wrong with the properties
+      // a property of the texture itself is wrong: said above
     }
-    return 1;
-  }
-  try
+}
+
+bool vtkFlowTexture::Compute(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  FlowState& in = *this->Flow;
+  const Distributed_input& pieces = in.pieces;
+  const vtkSmartPointer<vtkPolyData>& input_surface = in.gathered;
+  const auto texture_piece = [this, outputVector] { return ::texture_piece(this, outputVector); };
+  require_property(std::isfinite(this->Scale), "Scale", this->Scale, "finite (0: three repeats over the surface)");
+  require_property(std::isfinite(this->Offset), "Offset", this->Offset, "finite");
+  require_property(this->MinRelativeSpeed >= 0 && this->MinRelativeSpeed <= 1, "Min Relative Speed",
+                   this->MinRelativeSpeed, "in [0, 1]");
+  require_property(this->TextureWidth >= 1 && this->TextureWidth <= 16384, "Texture Width", this->TextureWidth,
+                   "from 1 to 16,384 texels");
+  require_property(this->TextureHeight >= 1 && this->TextureHeight <= 16384, "Texture Height",
+                   this->TextureHeight, "from 1 to 16,384 texels");
+  require_property(this->NoiseSeed >= 0, "Noise Seed", this->NoiseSeed, ">= 0");
+  require_property(this->ArrowsAlong >= 1 && this->ArrowsAlong <= 4096, "Arrows Along", this->ArrowsAlong,
+                   "from 1 to 4,096");
+  require_property(this->ArrowsAcross >= 1 && this->ArrowsAcross <= 4096, "Arrows Across", this->ArrowsAcross,
+                   "from 1 to 4,096");
+  pieces.require_samples();
+  if (this->PathSurface && input_surface != nullptr && input_surface->GetNumberOfCells() == 0)
   {
-    Finish_probes finish_probes(in.field);
-    require_property(std::isfinite(this->Scale), "Scale", this->Scale, "finite (0: three repeats over the surface)");
-    require_property(std::isfinite(this->Offset), "Offset", this->Offset, "finite");
-    require_property(this->MinRelativeSpeed >= 0 && this->MinRelativeSpeed <= 1, "Min Relative Speed",
-                     this->MinRelativeSpeed, "in [0, 1]");
-    require_property(this->TextureWidth >= 1 && this->TextureWidth <= 16384, "Texture Width", this->TextureWidth,
-                     "from 1 to 16,384 texels");
-    require_property(this->TextureHeight >= 1 && this->TextureHeight <= 16384, "Texture Height",
-                     this->TextureHeight, "from 1 to 16,384 texels");
-    require_property(this->NoiseSeed >= 0, "Noise Seed", this->NoiseSeed, ">= 0");
-    require_property(this->ArrowsAlong >= 1 && this->ArrowsAlong <= 4096, "Arrows Along", this->ArrowsAlong,
-                     "from 1 to 4,096");
-    require_property(this->ArrowsAcross >= 1 && this->ArrowsAcross <= 4096, "Arrows Across", this->ArrowsAcross,
-                     "from 1 to 4,096");
-    pieces.require_samples();
-    if (this->PathSurface && input_surface != nullptr && input_surface->GetNumberOfCells() == 0)
-    {
-      // A path surface at its release time has no face yet: nothing to texture, nothing wrong.
-      vtkPolyData::GetData(outputVector, 0)->ShallowCopy(input_surface);
-      vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture_piece());
-      in.kept.keep(outputVector);
-      return 1;
-    }
-    Mesh tm = surface_mesh(input_surface);
-    // The parameter r along the flow and the mask b(gamma) (on several ranks their samples are
-    // exchanged first, in one go).
-    const std::vector<double> path_times = this->PathSurface ? path_surface_times(input_surface, in.steps) : std::vector<double>();
-    const auto parametrize_and_mask = [&](Mesh& m) {
-      auto r = m.add_property_map<Vertex, double>("v:r", 0.).first;
-      auto s = m.add_property_map<Vertex, double>("v:s", 0.).first;
-      auto mask = m.add_property_map<Face, double>("f:mask", 1.).first;
-      const auto in_flow = [&](const auto& field) {
-        FAS::parametrize_tangential(m, field, r, s, FAS::parameters::normalized(false));
-        FAS::compute_flow_texture_mask(m, field, r, mask, FAS::parameters::min_relative_speed(this->MinRelativeSpeed));
-      };
-      if (this->PathSurface)
-      {
-        auto time = m.add_property_map<Vertex, double>("v:time", 0.).first;
-        for (Vertex v : m.vertices())
-          time[v] = path_times[v.idx()];
-        in_flow(FAS::Path_surface_flow_field_3<Unsteady_view, Mesh, decltype(time)>(Unsteady_view{ in.field }, m, time));
-      }
-      else
-        in_flow(in.field);
-      return std::make_tuple(r, s, mask);
+    // A path surface at its release time has no face yet: nothing to texture, nothing wrong.
+    vtkPolyData::GetData(outputVector, 0)->ShallowCopy(input_surface);
+    vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture_piece());
+    return true;
+  }
+  Mesh tm = surface_mesh(input_surface);
+  // The parameter r along the flow and the mask b(gamma) (on several ranks each is one
+  // exchange: the library asks for its face samples in one batch).
+  const std::vector<double> path_times = this->PathSurface ? path_surface_times(input_surface, in.steps) : std::vector<double>();
+  const auto parametrize_and_mask = [&](Mesh& m) {
+    auto r = m.add_property_map<Vertex, double>("v:r", 0.).first;
+    auto s = m.add_property_map<Vertex, double>("v:s", 0.).first;
+    auto mask = m.add_property_map<Face, double>("f:mask", 1.).first;
+    const auto in_flow = [&](const auto& field) {
+      FAS::parametrize_tangential(m, field, r, s, FAS::parameters::normalized(false));
+      FAS::compute_flow_texture_mask(m, field, r, mask, FAS::parameters::min_relative_speed(this->MinRelativeSpeed));
     };
-    in.field.probe_points_of([&] {
-      Mesh copy = tm;
-      parametrize_and_mask(copy);
-    });
-    const auto [r, s, mask] = parametrize_and_mask(tm);
-    auto uv = tm.add_property_map<Vertex, std::array<double, 2>>("v:uv").first;
-    // Scale 0: three repeats along the flow over the surface, whatever the flow's speed and the
-    // surface's size.
-    const double scale = this->Scale == 0 ? FAS::flow_texture_scale(tm, r, 3) : this->Scale;
-    FAS::compute_flow_texture_coordinates(tm, r, s, uv, scale, this->Offset);
-    const vtkSmartPointer<vtkImageData> texture = texture_piece();
+    if (this->PathSurface)
+    {
+      auto time = m.add_property_map<Vertex, double>("v:time", 0.).first;
+      for (Vertex v : m.vertices())
+        time[v] = path_times[v.idx()];
+      in_flow(FAS::Path_surface_flow_field_3<Unsteady_view, Mesh, decltype(time)>(Unsteady_view{ in.field }, m, time));
+    }
+    else
+      in_flow(in.field);
+    return std::make_tuple(r, s, mask);
+  };
+  const auto [r, s, mask] = parametrize_and_mask(tm);
+  auto uv = tm.add_property_map<Vertex, std::array<double, 2>>("v:uv").first;
+  // Scale 0: three repeats along the flow over the surface, whatever the flow's speed and the
+  // surface's size.
+  const double scale = this->Scale == 0 ? FAS::flow_texture_scale(tm, r, 3) : this->Scale;
+  FAS::compute_flow_texture_coordinates(tm, r, s, uv, scale, this->Offset);
+  const vtkSmartPointer<vtkImageData> texture = texture_piece();
 
-    auto surface = vtkSmartPointer<vtkPolyData>::New();
-    surface->ShallowCopy(input_surface);
-    // The maps by value: C++17 lets no lambda capture a structured binding (clang refuses it).
-    add_vertex_array(surface, tm, "r", 1, [r = r](Vertex v) { return r[v]; });
-    add_vertex_array(surface, tm, "s", 1, [s = s](Vertex v) { return s[v]; });
-    add_vertex_array(surface, tm, "texture_coordinates", 2, [&](Vertex v) { return uv[v]; });
-    surface->GetPointData()->SetTCoords(surface->GetPointData()->GetArray("texture_coordinates"));
-    auto face_mask = make_array("texture_mask", 1, vtkIdType(tm.number_of_faces()));
-    for (Face f : tm.faces())
-      face_mask->SetValue(vtkIdType(f.idx()), mask[f]);
-    surface->GetCellData()->AddArray(face_mask);
-    surface->GetCellData()->SetActiveScalars("texture_mask");
-    add_distribution_values(surface, pieces, in.field);
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->ShallowCopy(input_surface);
+  // The maps by value: C++17 lets no lambda capture a structured binding (clang refuses it).
+  add_vertex_array(surface, tm, "r", 1, [r = r](Vertex v) { return r[v]; });
+  add_vertex_array(surface, tm, "s", 1, [s = s](Vertex v) { return s[v]; });
+  add_vertex_array(surface, tm, "texture_coordinates", 2, [&](Vertex v) { return uv[v]; });
+  surface->GetPointData()->SetTCoords(surface->GetPointData()->GetArray("texture_coordinates"));
+  auto face_mask = make_array("texture_mask", 1, vtkIdType(tm.number_of_faces()));
+  for (Face f : tm.faces())
+    face_mask->SetValue(vtkIdType(f.idx()), mask[f]);
+  surface->GetCellData()->AddArray(face_mask);
+  surface->GetCellData()->SetActiveScalars("texture_mask");
+  add_distribution_values(surface, pieces, in.field);
 
-    vtkPolyData::GetData(outputVector, 0)->ShallowCopy(surface);
-    vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture);
-    in.kept.keep(outputVector);
-    return 1;
-  }
-  catch (const std::exception& e)
-  {
-    const bool kept = in.kept.restore(outputVector);
-    vtkErrorMacro(<< "Flow Texture: " << e.what() << (kept ? "; the previous output is kept" : ""));
-    // Without an earlier output the texture is given all the same (it does not depend on the
-    // flow): an empty image would not have the extent the pipeline asked for, a second error.
-    if (!kept)
-      try
-      {
-        vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture_piece());
-      }
-      catch (const std::exception&)
-      {
-        // a property of the texture itself is wrong: said above
-      }
-    return 1;
-  }
+  vtkPolyData::GetData(outputVector, 0)->ShallowCopy(surface);
+  vtkImageData::GetData(outputVector, 1)->ShallowCopy(texture);
+  return true;
 }
 
 void vtkFlowTexture::PrintSelf(ostream& os, vtkIndent indent)

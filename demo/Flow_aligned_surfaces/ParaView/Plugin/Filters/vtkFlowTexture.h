@@ -6,7 +6,7 @@
 #define vtkFlowTexture_h
 
 #include "FlowAlignedSurfacesFiltersModule.h"
-#include <vtkPolyDataAlgorithm.h>
+#include "vtkFlowAlignedFilter.h"
 
 /// Input port 0: any data set with a 3-component point or cell array (the velocity, chosen with
 /// `SetInputArrayToProcess(0, ...)`); input port 1: a triangulated surface, ideally a stream
@@ -22,11 +22,11 @@
 ///
 /// On bad input (no 3-component array, no triangles on port 1, a surface outside the data) it
 /// reports the error and keeps its previous outputs.
-class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkFlowTexture : public vtkPolyDataAlgorithm
+class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkFlowTexture : public vtkFlowAlignedFilter
 {
 public:
   static vtkFlowTexture* New();
-  vtkTypeMacro(vtkFlowTexture, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkFlowTexture, vtkFlowAlignedFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Textures
@@ -79,9 +79,12 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
+  const char* GetLabel() override;
+  bool Compute(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void SelectSteps(vtkInformationVector* outputVector) override;
+  void FillOtherRankOutputs(vtkInformationVector* outputVector) override;
+  void AfterFailure(vtkInformationVector* outputVector, bool kept) override;
 
   double Scale;
   double Offset;
@@ -98,9 +101,6 @@ protected:
 private:
   vtkFlowTexture(const vtkFlowTexture&) = delete;
   void operator=(const vtkFlowTexture&) = delete;
-
-  struct Internals;
-  Internals* Internal;
 };
 
 #endif

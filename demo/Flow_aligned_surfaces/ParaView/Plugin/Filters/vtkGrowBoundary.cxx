@@ -1,6 +1,6 @@
 #include "vtkGrowBoundary.h"
 
-#include "fas_distributed_field.h"
+#include "fas_flow_state.h"
 #include "fas_paraview_support.h"
 #include "fas_paraview_surface_input.h"
 
@@ -51,11 +51,6 @@ FAS::Alignment_report iterate(Deformation& deformation, const Distributed_veloci
 
 } // namespace
 
-struct vtkGrowBoundary::Internals {
-  Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
-  Temporal_flow_input steps;        // the time steps of input 0
-  Kept_outputs kept; // the outputs of the last successful run
-};
 
 vtkGrowBoundary::vtkGrowBoundary()
   : Distance(0.1)
@@ -67,146 +62,106 @@ vtkGrowBoundary::vtkGrowBoundary()
   , MaxDihedralAngle(vtkMath::Pi() / 2)
   , ConvergenceAngle(1e-6)
   , NumberOfIterations(100)
-  , Internal(new Internals)
 {
   this->SetNumberOfInputPorts(2);
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS, vtkDataSetAttributes::VECTORS);
 }
 
-vtkGrowBoundary::~vtkGrowBoundary()
-{
-  delete this->Internal;
-}
+vtkGrowBoundary::~vtkGrowBoundary() = default;
 
 int vtkGrowBoundary::FillInputPortInformation(int port, vtkInformation* info)
 {
   return fill_surface_filter_input_port(port, info);
 }
 
-int vtkGrowBoundary::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+const char* vtkGrowBoundary::GetLabel()
 {
-  this->Internal->steps.read_time_steps(inputVector[0]->GetInformationObject(0));
-  return 1;
+  return "Grow Boundary";
 }
 
-int vtkGrowBoundary::RequestUpdateExtent(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+bool vtkGrowBoundary::Compute(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  request_steps_around_requested_time(this->Internal->steps, inputVector, outputVector);
-  return 1;
-}
+  const Distributed_input& pieces = this->Flow->pieces;
+  const vtkSmartPointer<vtkPolyData>& surface = this->Flow->gathered;
+  require_property(std::isfinite(this->Distance) && this->Distance > 0, "Distance", this->Distance,
+                   "> 0 (the width of each grown strip, in the data's units)");
+  require_property(this->NumberOfGrowthSteps >= 1 && this->NumberOfGrowthSteps <= 1000, "Number Of Growth Steps",
+                   this->NumberOfGrowthSteps, "from 1 to 1,000");
+  require_alignment_properties(this->MaxRotationAngle, this->MaxDihedralAngle, this->ConvergenceAngle,
+                               this->NumberOfIterations);
+  pieces.require_samples();
+  const Distributed_velocity_field& field = this->Flow->field; // outlives the deformation, as tm does
+  Mesh tm = mesh_from_polydata(surface, "the surface (input 1)");
+  const std::size_t input_vertices = tm.number_of_vertices();
+  if (!FAS::normalized_flux(tm, field).value)
+    throw std::invalid_argument("the surface (input 1) has no flow sample: it lies outside the input "
+                                "data set (bounds " + bounds_text(pieces.bounds.data()) + "); move it into the data");
 
-int vtkGrowBoundary::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  Internals& in = *this->Internal;
-  // Every rank: the flow at the requested time (a temporal input: once its steps have come).
-  const std::optional<Distributed_input> update =
-    update_at_requested_time(in.steps, in.field, request, inputVector, outputVector, selected_velocity(this));
-  if (!update)
-    return 1; // the pipeline runs this filter again with the next time step
-  const Distributed_input& pieces = *update;
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  // Every rank: the surface's pieces go to rank 0, and every rank samples its piece of the flow
-  // for rank 0 (one process: the input's own field).
-  const vtkSmartPointer<vtkPolyData> surface = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
-  if (!in.field.is_root())
+  const FAS::Alignment alignment =
+    this->Alignment == ORTHOGONAL ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL;
+  Deformation deformation(tm, field, alignment,
+    FAS::parameters::max_rotation_angle(this->MaxRotationAngle,
+      FAS::parameters::max_dihedral_angle(this->MaxDihedralAngle,
+        FAS::parameters::convergence_angle(
+          this->ConvergenceAngle, FAS::parameters::use_parallelism(true)))));
+
+  FAS::Growth_report grown;
+  FAS::Alignment_report aligned;
+  std::size_t iterations = 0;
+  std::vector<double> growth_step(input_vertices, 0.);
+  // Progress per growth step; Abort (AbortExecute) stops before the next one, keeping the
+  // steps done.
+  int done = 0;
+  for (int step = 1; step <= this->NumberOfGrowthSteps; ++step)
   {
-    serve_rank_0(in.field, outputVector);
-    return 1;
-  }
-  try
-  {
-    Finish_probes finish_probes(in.field);
-    require_property(std::isfinite(this->Distance) && this->Distance > 0, "Distance", this->Distance,
-                     "> 0 (the width of each grown strip, in the data's units)");
-    require_property(this->NumberOfGrowthSteps >= 1 && this->NumberOfGrowthSteps <= 1000, "Number Of Growth Steps",
-                     this->NumberOfGrowthSteps, "from 1 to 1,000");
-    require_alignment_properties(this->MaxRotationAngle, this->MaxDihedralAngle, this->ConvergenceAngle,
-                                 this->NumberOfIterations);
-    pieces.require_samples();
-    const Distributed_velocity_field& field = in.field; // outlives the deformation, as tm does
-    Mesh tm = mesh_from_polydata(surface, "the surface (input 1)");
-    const std::size_t input_vertices = tm.number_of_vertices();
-    if (!FAS::normalized_flux(tm, field).value)
-      throw std::invalid_argument("the surface (input 1) has no flow sample: it lies outside the input "
-                                  "data set (bounds " + bounds_text(pieces.bounds.data()) + "); move it into the data");
-
-    const FAS::Alignment alignment =
-      this->Alignment == ORTHOGONAL ? FAS::Alignment::ORTHOGONAL : FAS::Alignment::TANGENTIAL;
-    Deformation deformation(tm, field, alignment,
-      FAS::parameters::max_rotation_angle(this->MaxRotationAngle,
-        FAS::parameters::max_dihedral_angle(this->MaxDihedralAngle,
-          FAS::parameters::convergence_angle(
-            this->ConvergenceAngle, FAS::parameters::use_parallelism(true)))));
-
-    FAS::Growth_report grown;
-    FAS::Alignment_report aligned;
-    std::size_t iterations = 0;
-    std::vector<double> growth_step(input_vertices, 0.);
-    // Progress per growth step; Abort (AbortExecute) stops before the next one, keeping the
-    // steps done.
-    int done = 0;
-    for (int step = 1; step <= this->NumberOfGrowthSteps; ++step)
+    if (this->GetAbortExecute())
     {
-      if (this->GetAbortExecute())
-      {
-        abort_handled(this);
-        vtkWarningMacro(<< "Grow Boundary: cancelled after growth step " << done << " of "
-                        << this->NumberOfGrowthSteps << "; the output shows the surface grown so far");
-        break;
-      }
-      FAS::Growth_report r;
-      if (this->GrowthMode == ACROSS_FLOW)
-        r = deformation.grow(this->Distance, FAS::parameters::across_flow(true));
-      else if (this->GrowthMode == DIRECTION)
-        r = deformation.grow(this->Distance,
-          FAS::parameters::growth_direction(
-            Vector(this->GrowthDirection[0], this->GrowthDirection[1], this->GrowthDirection[2])));
-      else
-        r = deformation.grow(this->Distance);
-      grown.number_of_new_vertices += r.number_of_new_vertices;
-      grown.number_of_new_faces += r.number_of_new_faces;
-      grown.number_of_grown_edges += r.number_of_grown_edges;
-      grown.grown_boundary_length += r.grown_boundary_length;
-      grown.added_area += r.added_area;
-      growth_step.resize(tm.number_of_vertices(), double(step));
-      aligned = iterate(deformation, field, std::size_t(this->NumberOfIterations));
-      iterations += aligned.number_of_iterations;
-      done = step;
-      this->UpdateProgress(double(step) / double(this->NumberOfGrowthSteps));
+      abort_handled(this);
+      vtkWarningMacro(<< "Grow Boundary: cancelled after growth step " << done << " of "
+                      << this->NumberOfGrowthSteps << "; the output shows the surface grown so far");
+      break;
     }
+    FAS::Growth_report r;
+    if (this->GrowthMode == ACROSS_FLOW)
+      r = deformation.grow(this->Distance, FAS::parameters::across_flow(true));
+    else if (this->GrowthMode == DIRECTION)
+      r = deformation.grow(this->Distance,
+        FAS::parameters::growth_direction(
+          Vector(this->GrowthDirection[0], this->GrowthDirection[1], this->GrowthDirection[2])));
+    else
+      r = deformation.grow(this->Distance);
+    grown.number_of_new_vertices += r.number_of_new_vertices;
+    grown.number_of_new_faces += r.number_of_new_faces;
+    grown.number_of_grown_edges += r.number_of_grown_edges;
+    grown.grown_boundary_length += r.grown_boundary_length;
+    grown.added_area += r.added_area;
+    growth_step.resize(tm.number_of_vertices(), double(step));
+    aligned = iterate(deformation, field, std::size_t(this->NumberOfIterations));
+    iterations += aligned.number_of_iterations;
+    done = step;
+    this->UpdateProgress(double(step) / double(this->NumberOfGrowthSteps));
+  }
 
-    const auto [result, flux] = aligned_surface_output(tm, field);
-    auto step_array = make_array("growth_step", 1, vtkIdType(growth_step.size()));
-    for (std::size_t i = 0; i < growth_step.size(); ++i)
-      step_array->SetValue(vtkIdType(i), growth_step[i]);
-    result->GetPointData()->AddArray(step_array);
-    add_field_value(result, "number_of_iterations", double(iterations));
-    add_field_value(result, "converged", aligned.converged ? 1. : 0.);
-    add_field_value(result, "max_rotation_angle", aligned.max_rotation_angle);
-    add_field_value(result, "number_of_factorizations", double(deformation.number_of_factorizations()));
-    add_field_value(result, "number_of_new_vertices", double(grown.number_of_new_vertices));
-    add_field_value(result, "number_of_new_faces", double(grown.number_of_new_faces));
-    add_field_value(result, "number_of_grown_edges", double(grown.number_of_grown_edges));
-    add_field_value(result, "grown_boundary_length", grown.grown_boundary_length);
-    add_field_value(result, "added_area", grown.added_area);
-    add_distribution_values(result, pieces, field);
-    if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
-      vtkWarningMacro(<< "Grow Boundary: " << warning);
-    output->ShallowCopy(result);
-    in.kept.keep(outputVector);
-    return 1;
-  }
-  catch (const std::exception& e)
-  {
-    const bool kept = in.kept.restore(outputVector);
-    vtkErrorMacro(<< "Grow Boundary: " << e.what() << (kept ? "; the previous output is kept" : ""));
-    return 1;
-  }
+  const auto [result, flux] = aligned_surface_output(tm, field);
+  auto step_array = make_array("growth_step", 1, vtkIdType(growth_step.size()));
+  for (std::size_t i = 0; i < growth_step.size(); ++i)
+    step_array->SetValue(vtkIdType(i), growth_step[i]);
+  result->GetPointData()->AddArray(step_array);
+  add_field_value(result, "number_of_iterations", double(iterations));
+  add_field_value(result, "converged", aligned.converged ? 1. : 0.);
+  add_field_value(result, "max_rotation_angle", aligned.max_rotation_angle);
+  add_field_value(result, "number_of_factorizations", double(deformation.number_of_factorizations()));
+  add_field_value(result, "number_of_new_vertices", double(grown.number_of_new_vertices));
+  add_field_value(result, "number_of_new_faces", double(grown.number_of_new_faces));
+  add_field_value(result, "number_of_grown_edges", double(grown.number_of_grown_edges));
+  add_field_value(result, "grown_boundary_length", grown.grown_boundary_length);
+  add_field_value(result, "added_area", grown.added_area);
+  add_distribution_values(result, pieces, field);
+  if (const std::string warning = unsampled_area_warning(flux); !warning.empty())
+    vtkWarningMacro(<< "Grow Boundary: " << warning);
+  vtkPolyData::GetData(outputVector, 0)->ShallowCopy(result);
+  return true;
 }
 
 void vtkGrowBoundary::PrintSelf(ostream& os, vtkIndent indent)

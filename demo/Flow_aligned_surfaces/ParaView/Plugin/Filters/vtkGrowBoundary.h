@@ -5,7 +5,7 @@
 #define vtkGrowBoundary_h
 
 #include "FlowAlignedSurfacesFiltersModule.h"
-#include <vtkPolyDataAlgorithm.h>
+#include "vtkFlowAlignedFilter.h"
 
 /// Input port 0: any data set with a 3-component point or cell array (the velocity, chosen with
 /// `SetInputArrayToProcess(0, ...)`).  Input port 1: a triangulated surface with a boundary,
@@ -25,11 +25,11 @@
 /// On bad input (no 3-component array, a surface that is closed, not a manifold triangle
 /// surface, outside the data, or a growth the library refuses) it reports the library's reason
 /// and keeps its previous output.
-class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkGrowBoundary : public vtkPolyDataAlgorithm
+class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkGrowBoundary : public vtkFlowAlignedFilter
 {
 public:
   static vtkGrowBoundary* New();
-  vtkTypeMacro(vtkGrowBoundary, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkGrowBoundary, vtkFlowAlignedFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum GrowthModes
@@ -76,9 +76,8 @@ protected:
   ~vtkGrowBoundary() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  const char* GetLabel() override;
+  bool Compute(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double Distance;
   int GrowthMode;
@@ -93,9 +92,6 @@ protected:
 private:
   vtkGrowBoundary(const vtkGrowBoundary&) = delete;
   void operator=(const vtkGrowBoundary&) = delete;
-
-  struct Internals;
-  Internals* Internal;
 };
 
 #endif

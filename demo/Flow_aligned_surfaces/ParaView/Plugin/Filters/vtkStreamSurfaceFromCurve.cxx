@@ -1,6 +1,6 @@
 #include "vtkStreamSurfaceFromCurve.h"
 
-#include "fas_distributed_field.h"
+#include "fas_flow_state.h"
 #include "fas_paraview_support.h"
 #include "fas_paraview_surface_input.h"
 
@@ -245,9 +245,13 @@ vtkSmartPointer<vtkPolyData> surfaces_output(vtkStreamSurfaceFromCurve* f, const
 } // namespace
 
 struct vtkStreamSurfaceFromCurve::Internals {
-  Distributed_velocity_field field; // the flow of input 0 (on several ranks: every rank's piece)
-  Temporal_flow_input steps;        // the time steps of input 0
-  Kept_outputs kept; // the outputs of the last successful run
+  explicit Internals(FlowState& flow)
+    : field(flow.field)
+    , steps(flow.steps)
+  {
+  }
+  const Distributed_velocity_field& field; // the flow of input 0 (vtkFlowAlignedFilter's)
+  const Temporal_flow_input& steps;        // its time steps
 
   std::vector<std::size_t> needed_steps(vtkStreamSurfaceFromCurve* f, vtkInformationVector* outputVector) const;
   void integrate_stream_surfaces(vtkStreamSurfaceFromCurve* f, const std::vector<Polyline>& curves,
@@ -271,7 +275,7 @@ vtkStreamSurfaceFromCurve::vtkStreamSurfaceFromCurve()
   , MaxNumberOfSteps(100000)
   , SurfaceType(STREAM_SURFACE)
   , StartTime(0)
-  , Internal(new Internals)
+  , Internal(new Internals(*this->Flow))
 {
   this->SetNumberOfInputPorts(2);
   this->SetInputArrayToProcess(
@@ -288,21 +292,14 @@ int vtkStreamSurfaceFromCurve::FillInputPortInformation(int port, vtkInformation
   return fill_surface_filter_input_port(port, info);
 }
 
-int vtkStreamSurfaceFromCurve::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+const char* vtkStreamSurfaceFromCurve::GetLabel()
 {
-  this->Internal->steps.read_time_steps(inputVector[0]->GetInformationObject(0));
-  return 1;
+  return "Stream Surface From Curve";
 }
 
-int vtkStreamSurfaceFromCurve::RequestUpdateExtent(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+void vtkStreamSurfaceFromCurve::SelectSteps(vtkInformationVector* outputVector)
 {
-  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  Internals& in = *this->Internal;
-  if (in.steps.temporal())
-    in.steps.request_next(inputVector[0]->GetInformationObject(0), in.needed_steps(this, outputVector));
-  return 1;
+  this->Flow->needed = this->Internal->needed_steps(this, outputVector);
 }
 
 std::vector<std::size_t> vtkStreamSurfaceFromCurve::Internals::needed_steps(
@@ -319,61 +316,35 @@ std::vector<std::size_t> vtkStreamSurfaceFromCurve::Internals::needed_steps(
   return steps.steps_around(t);
 }
 
-int vtkStreamSurfaceFromCurve::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+bool vtkStreamSurfaceFromCurve::Compute(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  Internals& in = *this->Internal;
-  // Every rank: the flow of the steps the surface needs (a temporal input: once they have come).
-  const std::optional<Distributed_input> update = update_with_steps(in.steps, in.field, request, inputVector,
-    outputVector, selected_velocity(this), in.needed_steps(this, outputVector));
-  if (!update)
-    return 1; // the pipeline runs this filter again with the next time step
-  const Distributed_input& pieces = *update;
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  // Every rank: the seed curves' pieces go to rank 0, and every rank samples its piece of the
-  // flow for rank 0 (one process: the input's own field).  The particles' positions depend on
-  // the samples before them: on several ranks every sample is an exchange of its own.
-  const vtkSmartPointer<vtkPolyData> seeds = gather_on_root(vtkPolyData::GetData(inputVector[1], 0));
-  if (!in.field.is_root())
+  const Internals& in = *this->Internal;
+  const Distributed_input& pieces = this->Flow->pieces;
+  const vtkSmartPointer<vtkPolyData>& seeds = this->Flow->gathered;
+  this->CheckProperties();
+  pieces.require_samples();
+  const std::vector<Polyline> curves = polylines_from_polydata(seeds);
+  if (curves.empty())
+    throw std::invalid_argument(
+      "the seed input (port 1) has no line or polyline of two points or more; give it seed "
+      "curves (Parametrize And Seed's, a Line source, a contour)");
+  Surfaces surfaces;
+  if (this->SurfaceType == PATH_SURFACE)
+    in.integrate_path_surfaces(this, curves, outputVector, surfaces);
+  else
+    in.integrate_stream_surfaces(this, curves, pieces, surfaces);
+  if (surfaces.cancelled)
   {
-    serve_rank_0(in.field, outputVector);
-    return 1;
+    abort_handled(this);
+    vtkWarningMacro(<< "Stream Surface From Curve: cancelled during seed curve " << surfaces.reports.size() - 1 << " of "
+                    << curves.size() << "; the output holds what was integrated until then");
   }
-  try
-  {
-    Finish_probes finish_probes(in.field);
-    this->CheckProperties();
-    pieces.require_samples();
-    const std::vector<Polyline> curves = polylines_from_polydata(seeds);
-    if (curves.empty())
-      throw std::invalid_argument(
-        "the seed input (port 1) has no line or polyline of two points or more; give it seed "
-        "curves (Parametrize And Seed's, a Line source, a contour)");
-    Surfaces surfaces;
-    if (this->SurfaceType == PATH_SURFACE)
-      in.integrate_path_surfaces(this, curves, outputVector, surfaces);
-    else
-      in.integrate_stream_surfaces(this, curves, pieces, surfaces);
-    if (surfaces.cancelled)
-    {
-      abort_handled(this);
-      vtkWarningMacro(<< "Stream Surface From Curve: cancelled during seed curve " << surfaces.reports.size() - 1 << " of "
-                      << curves.size() << "; the output holds what was integrated until then");
-    }
-    vtkSmartPointer<vtkPolyData> result = surfaces_output(this, surfaces, pieces);
-    add_distribution_values(result, pieces, in.field);
-    if (this->SurfaceType == PATH_SURFACE)
-      add_field_value(result, "start_time", surfaces.start_time);
-    output->ShallowCopy(result);
-    in.kept.keep(outputVector);
-    return 1;
-  }
-  catch (const std::exception& e)
-  {
-    const bool kept = in.kept.restore(outputVector);
-    vtkErrorMacro(<< "Stream Surface From Curve: " << e.what() << (kept ? "; the previous output is kept" : ""));
-    return 1;
-  }
+  vtkSmartPointer<vtkPolyData> result = surfaces_output(this, surfaces, pieces);
+  add_distribution_values(result, pieces, in.field);
+  if (this->SurfaceType == PATH_SURFACE)
+    add_field_value(result, "start_time", surfaces.start_time);
+  vtkPolyData::GetData(outputVector, 0)->ShallowCopy(result);
+  return true;
 }
 
 void vtkStreamSurfaceFromCurve::Internals::integrate_stream_surfaces(vtkStreamSurfaceFromCurve* f,

@@ -6,7 +6,7 @@
 #define vtkStreamSurfaceFromCurve_h
 
 #include "FlowAlignedSurfacesFiltersModule.h"
-#include <vtkPolyDataAlgorithm.h>
+#include "vtkFlowAlignedFilter.h"
 
 /// Input port 0: any data set with a 3-component point or cell array (the velocity, chosen with
 /// `SetInputArrayToProcess(0, ...)`).  Input port 1: polygonal data whose lines and polylines
@@ -25,11 +25,11 @@
 ///
 /// On bad input (no 3-component array, no seed line, a seed curve the library refuses, no seed
 /// curve inside the data) it reports the error and keeps its previous output.
-class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkStreamSurfaceFromCurve : public vtkPolyDataAlgorithm
+class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkStreamSurfaceFromCurve : public vtkFlowAlignedFilter
 {
 public:
   static vtkStreamSurfaceFromCurve* New();
-  vtkTypeMacro(vtkStreamSurfaceFromCurve, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkStreamSurfaceFromCurve, vtkFlowAlignedFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Directions
@@ -101,9 +101,9 @@ protected:
   ~vtkStreamSurfaceFromCurve() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  const char* GetLabel() override;
+  bool Compute(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void SelectSteps(vtkInformationVector* outputVector) override;
 
   int IntegrationDirection;
   double FrontSpacing;

@@ -1,0 +1,105 @@
+#include "vtkFlowAlignedFilter.h"
+
+#include "fas_flow_input.h"
+#include "fas_flow_state.h"
+
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkOutputWindow.h>
+
+#include <exception>
+#include <optional>
+#include <string>
+
+using namespace fas_paraview;
+
+vtkFlowAlignedFilter::vtkFlowAlignedFilter()
+  : Flow(new FlowState)
+{
+}
+
+vtkFlowAlignedFilter::~vtkFlowAlignedFilter()
+{
+  delete this->Flow;
+}
+
+int vtkFlowAlignedFilter::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  this->Flow->steps.read_time_steps(inputVector[0]->GetInformationObject(0));
+  return 1;
+}
+
+int vtkFlowAlignedFilter::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
+  FlowState& flow = *this->Flow;
+  if (flow.steps.temporal())
+  {
+    this->SelectSteps(outputVector);
+    flow.steps.request_next(inputVector[0]->GetInformationObject(0), flow.needed);
+  }
+  return 1;
+}
+
+void vtkFlowAlignedFilter::SelectSteps(vtkInformationVector* outputVector)
+{
+  FlowState& flow = *this->Flow;
+  flow.needed.clear();
+  if (flow.steps.temporal())
+    flow.needed = flow.steps.steps_around(flow.steps.requested_time(outputVector->GetInformationObject(0)));
+}
+
+void vtkFlowAlignedFilter::FillOtherRankOutputs(vtkInformationVector*) {}
+
+void vtkFlowAlignedFilter::AfterFailure(vtkInformationVector*, bool) {}
+
+int vtkFlowAlignedFilter::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  FlowState& flow = *this->Flow;
+  // Every rank: the flow of the steps the update needs (a temporal input: once they have come).
+  this->SelectSteps(outputVector);
+  const std::optional<Distributed_input> update = update_with_steps(
+    flow.steps, flow.field, request, inputVector, outputVector, selected_velocity(this), flow.needed);
+  if (!update)
+    return 1; // the pipeline runs this filter again with the next time step
+  flow.pieces = *update;
+  // Every rank: input 1's pieces go to rank 0, and every rank samples its piece of the flow for
+  // rank 0 (one process: the input's own field).
+  flow.gathered = this->GetNumberOfInputPorts() > 1
+    ? gather_on_root(vtkPolyData::GetData(inputVector[1], 0))
+    : vtkSmartPointer<vtkPolyData>();
+  if (!flow.field.is_root())
+  {
+    serve_rank_0(flow.field, outputVector);
+    this->FillOtherRankOutputs(outputVector);
+    return 1;
+  }
+  if (flow.pieces.ranks > 1 && flow.pieces.ranks_with_cells == 1 && !flow.said_one_rank)
+  {
+    flow.said_one_rank = true;
+    vtkOutputWindowDisplayText((std::string(this->GetLabel()) + ": the input's cells are all on one of the " +
+      std::to_string(flow.pieces.ranks) + " ranks, which samples the flow alone; redistributing the data "
+      "(Redistribute DataSet) would spread the sampling over the ranks\n").c_str());
+  }
+  try
+  {
+    Finish_probes finish_probes(flow.field);
+    if (this->Compute(request, inputVector, outputVector))
+      flow.kept.keep(outputVector);
+  }
+  catch (const std::exception& e)
+  {
+    const bool kept = flow.kept.restore(outputVector);
+    vtkErrorMacro(<< this->GetLabel() << ": " << e.what() << (kept ? "; the previous output is kept" : ""));
+    this->AfterFailure(outputVector, kept);
+  }
+  return 1;
+}
+
+void vtkFlowAlignedFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}
