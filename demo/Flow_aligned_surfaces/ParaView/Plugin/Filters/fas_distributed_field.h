@@ -77,8 +77,8 @@ using Piece_field = FAS::Time_slice_flow_field_3<FAS::Unsteady_flow_field_3<Velo
 
 /// A `FlowField_3` over a data set whose pieces live on the ranks of the global controller.  On
 /// one process it is the input's own field.  On several, only rank 0 samples it: at the points
-/// given to `probe()` beforehand (looked up by the exact point), and any other point in an
-/// exchange of its own.  Copies share their state.
+/// given to `probe()` beforehand (looked up by the exact point), a batch (`sample()`) in one
+/// exchange, and any other point in an exchange of its own.  Copies share their state.
 class Distributed_velocity_field {
 public:
   using Sample = std::optional<Vector>;
