@@ -16,7 +16,8 @@
 // patch size: the wake), the tangential one beside it (moved across d by the same amount, on
 // the side with more room); both at the vorticity maximum when there is no obstacle.  Each is
 // then tilted by `tilt` off its aligned orientation at that point: the tangential normal
-// (d x the obstacle's longest axis, or v x z) turned towards v, the orthogonal normal (v) turned
+// (d x the obstacle's axis, the lattice axis along which it fills most of the lattice, or v x z)
+// turned towards v, the orthogonal normal (v) turned
 // away from it.  A centre where the flow is not defined is moved towards the box's centre.
 
 #ifndef FAS_DEMO_FEATURE_PLACEMENT_H
@@ -24,6 +25,8 @@
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Kernel/global_functions.h>
+
+#include <CGAL/Flow_aligned_surfaces/internal/batched_sampling.h>
 
 #include <algorithm>
 #include <array>
@@ -47,6 +50,23 @@ struct Feature_placement {
   std::string description;       ///< one sentence for the user
 };
 
+/// The values of `field` at `points`: one call of `field.sample(points)` when the field answers
+/// batches (the concept's optional operation: a field whose pieces live on several processes
+/// answers them in one exchange), else one query per point.
+template <class Field, class Point>
+auto values_at(const Field& field, const std::vector<Point>& points)
+{
+  if constexpr (CGAL::Flow_aligned_surfaces::internal::has_batch_sampling_v<Field, Point>)
+    return field.sample(points);
+  else {
+    std::vector<decltype(field(points.front()))> values;
+    values.reserve(points.size());
+    for (const Point& p : points)
+      values.push_back(field(p));
+    return values;
+  }
+}
+
 /// See the file's comment.  `field(p)` returns an optional vector; `box` is its domain; `size`
 /// the patch size; `tilt` radians; `center`: both patches there (only tilted), instead of near the
 /// feature.  Returns nothing when no lattice point has a flow.
@@ -64,7 +84,14 @@ std::optional<Feature_placement<Point, Vector>> place_near_feature(const Field& 
     return Point(lo[0] + i * step[0], lo[1] + j * step[1], lo[2] + k * step[2]);
   };
   const auto index = [&](int i, int j, int k) { return (std::size_t(k) * n + j) * n + i; };
-  std::vector<std::optional<Vector>> samples(std::size_t(n) * n * n);
+  std::vector<Point> lattice;
+  lattice.reserve(std::size_t(n) * n * n);
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        lattice.push_back(point(i, j, k));
+  const auto values = values_at(field, lattice);
+  std::vector<std::optional<Vector>> samples(lattice.size());
   Vector mean(0, 0, 0);
   std::size_t defined = 0;
   std::array<double, 3> obstacle_lo{hi}, obstacle_hi{lo}, obstacle_sum{0, 0, 0};
@@ -72,8 +99,8 @@ std::optional<Feature_placement<Point, Vector>> place_near_feature(const Field& 
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        const Point p = point(i, j, k);
-        auto v = field(p);
+        const Point& p = lattice[index(i, j, k)];
+        std::optional<Vector> v = values[index(i, j, k)];
         if (v && !(std::isfinite(v->x()) && std::isfinite(v->y()) && std::isfinite(v->z())))
           v.reset();
         samples[index(i, j, k)] = v;
@@ -135,14 +162,19 @@ std::optional<Feature_placement<Point, Vector>> place_near_feature(const Field& 
         << ")";
   }
 
-  // The obstacle's longest axis (a cylinder's), else z; across the mean flow in the box's plane.
+  // The obstacle's axis: the lattice axis along which it fills most of the inner lattice (a
+  // cylinder between two walls fills it along its axis, whatever its diameter), else z; the
+  // first in that order that is not along the mean flow.
   const std::array<Vector, 3> axes{Vector(1, 0, 0), Vector(0, 1, 0), Vector(0, 0, 1)};
-  const int longest =
-      int(std::max_element(result.extent.begin(), result.extent.end()) - result.extent.begin());
-  Vector axis = result.found_obstacle ? axes[std::size_t(longest)] : axes[2];
-  Vector across = CGAL::cross_product(d, axis);
-  if (across.squared_length() < 0.01)
-    across = CGAL::cross_product(d, axis = axes[0]);
+  std::array<int, 3> order{2, 0, 1};
+  if (result.found_obstacle) {
+    const auto filled = [&](int a) { return result.extent[std::size_t(a)] / ((n - 2 * (n / 10)) * step[std::size_t(a)]); };
+    order = {0, 1, 2};
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return filled(a) > filled(b); });
+  }
+  Vector axis = axes[std::size_t(order[0])], across = CGAL::cross_product(d, axis);
+  for (int a = 1; a < 3 && across.squared_length() < 0.01; ++a)
+    across = CGAL::cross_product(d, axis = axes[std::size_t(order[std::size_t(a)])]);
   across = across / std::sqrt(across.squared_length());
   const auto half_extent_along = [&](const Vector& u) {
     return 0.5 * (std::abs(u.x()) * result.extent[0] + std::abs(u.y()) * result.extent[1] +

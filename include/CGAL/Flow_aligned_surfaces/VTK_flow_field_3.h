@@ -15,6 +15,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_utils.h>
 
+#include <CGAL/Flow_aligned_surfaces/internal/VTK_velocity_array.h>
 #include <CGAL/Flow_aligned_surfaces/internal/array_names.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -77,14 +78,16 @@ namespace Flow_aligned_surfaces {
 /// CYLINDER data 1.2 to 2.8 times an `Unstructured_flow_field_3` query, on an image 33 to 71
 /// times a `Regular_grid_flow_field_3` query on the same samples (which finds the voxel by
 /// arithmetic; benchmark/Flow_aligned_surfaces/RESULTS.md, "Sampling fields").  For a `vtkImageData`, a
-/// `Regular_grid_flow_field_3` of its array gives the same samples faster.
+/// `Regular_grid_flow_field_3` of its array gives the same samples faster; for a
+/// `vtkUnstructuredGrid` of the linear 3D cells, `make_unstructured_flow_field()` gives an
+/// `Unstructured_flow_field_3`.
 ///
 /// \tparam GeomTraits a model of `Kernel`; the coordinates are converted to `double` with
 ///         `CGAL::to_double()`.
 ///
 /// \cgalModels `FlowField_3`
 ///
-/// \sa `Regular_grid_flow_field_3`, `Unstructured_flow_field_3`
+/// \sa `Regular_grid_flow_field_3`, `Unstructured_flow_field_3`, `make_unstructured_flow_field()`
 template <typename GeomTraits>
 class VTK_flow_field_3 {
 public:
@@ -291,17 +294,11 @@ private:
       check_size(m_velocity, *name, m_on_cells);
       return;
     }
-    vtkDataSetAttributes* const data[2] = {m_data_set->GetPointData(), m_data_set->GetCellData()};
-    for (int d = 0; d < 2; ++d)
-      for (int i = 0; i < data[d]->GetNumberOfArrays(); ++i) {
-        vtkDataArray* a = data[d]->GetArray(i);
-        if (a != nullptr && a->GetNumberOfComponents() == 3) {
-          m_velocity = a;
-          m_on_cells = d == 1;
-          check_size(a, a->GetName() ? a->GetName() : "", m_on_cells);
-          return;
-        }
-      }
+    m_velocity = internal::first_velocity_array(m_data_set, m_on_cells);
+    if (m_velocity != nullptr) {
+      check_size(m_velocity, m_velocity->GetName() ? m_velocity->GetName() : "", m_on_cells);
+      return;
+    }
     fail(describe() + " has no 3-component point or cell array; expected a velocity array; its arrays: " +
          arrays_with(0));
   }

@@ -3,6 +3,8 @@
 // of ../shared/data), against closed forms (a linear field on tetrahedra is reproduced exactly,
 // cell data is the cell's value), its mask and its outside, its messages for bad input, and one
 // deformation on it that equals the one on Regular_grid_flow_field_3, serially and in parallel.
+// make_unstructured_flow_field(), the same grids as Unstructured_flow_field_3: the package's
+// reader of the same file as the peer, the closed form, and the grids it leaves to VTK.
 
 #include "expect_invalid_argument.h"
 
@@ -14,6 +16,7 @@
 #include <CGAL/Flow_aligned_surfaces/VTK_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
+#include <CGAL/Flow_aligned_surfaces/make_unstructured_flow_field.h>
 #include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -22,6 +25,7 @@
 #include <vtkDataSetReader.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
+#include <vtkIdList.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -446,6 +450,160 @@ TEST(VTKFlowField3, SharedCylinderDataReadByVTKAgreesWithThePackagesReaders)
   EXPECT_GT(both_grid, n / 2);
   EXPECT_GT(both_cells, n / 2);
   EXPECT_LE(disagree_cells, n / 100);
+}
+
+// The velocity array "U" of `mesh` as float values: the precision make_unstructured_flow_field()
+// keeps without loss.
+void velocity_as_float(vtkUnstructuredGrid* mesh)
+{
+  vtkDataArray* doubles = mesh->GetPointData()->GetArray("U");
+  vtkNew<vtkFloatArray> floats;
+  floats->SetName("U");
+  floats->DeepCopy(doubles);
+  mesh->GetPointData()->RemoveArray("U");
+  mesh->GetPointData()->AddArray(floats);
+}
+
+// The grid in memory gives the field the package's reader makes of the same file, sample for
+// sample (the same float arrays, the same cells); and VTK_flow_field_3's samples up to VTK's
+// tolerance.
+TEST(MakeUnstructuredFlowField, SharedCylinderCellsGiveTheReadersField)
+{
+  const std::string file = std::string(FAS_SHARED_DATA_DIR) + "/CYLINDER_cells.vtk";
+  if (!std::ifstream(file).good())
+    GTEST_SKIP() << "CYLINDER_cells.vtk not found in FAS_SHARED_DATA_DIR (" << FAS_SHARED_DATA_DIR << ")";
+  vtkNew<vtkDataSetReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  const std::optional<FAS::Unstructured_flow_field_3<K>> converted =
+      FAS::make_unstructured_flow_field<K>(reader->GetOutput());
+  ASSERT_TRUE(converted);
+  FAS::Unstructured_flow_field_3<K> read;
+  std::string error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, read, FAS::parameters::error_message(&error))) << error;
+  EXPECT_EQ(converted->number_of_cells(), read.number_of_cells());
+  EXPECT_EQ(converted->number_of_points(), read.number_of_points());
+  const Field through_VTK(reader->GetOutput());
+  CGAL::Random random(11);
+  int inside = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Point p = random_point(random, read.bbox());
+    const std::optional<Vector> a = (*converted)(p), b = read(p);
+    ASSERT_EQ(bool(a), bool(b)) << p;
+    if (!a)
+      continue;
+    ++inside;
+    EXPECT_EQ(*a, *b) << p;
+    if (const std::optional<Vector> c = through_VTK(p))
+      EXPECT_LE(distance(*a, *c), 1e-6 * (1 + std::sqrt(a->squared_length()))) << p;
+  }
+  EXPECT_GT(inside, 1000);
+}
+
+TEST(MakeUnstructuredFlowField, LinearFieldOnTetrahedraIsExact)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> mesh = linear_field_on_tetrahedra();
+  velocity_as_float(mesh);
+  const std::optional<FAS::Unstructured_flow_field_3<K>> field =
+      FAS::make_unstructured_flow_field<K>(mesh.Get(), FAS::parameters::array_name("U"));
+  ASSERT_TRUE(field);
+  EXPECT_EQ(field->number_of_cells(), std::size_t(mesh->GetNumberOfCells()));
+  CGAL::Random random(3);
+  for (int i = 0; i < 1000; ++i) {
+    const Point p = sheared(random.get_double(), random.get_double(), random.get_double());
+    const std::optional<Vector> got = (*field)(p);
+    ASSERT_TRUE(got) << p;
+    // The point values are rounded to float: a linear field up to that rounding.
+    EXPECT_LE(distance(*got, linear_velocity(p)), 1e-5) << p;
+  }
+  EXPECT_FALSE((*field)(sheared(-0.05, 0.5, 0.5)));
+}
+
+// The voxels of an image with its point mask "inside" (what RedistributeDataSet makes of an
+// image): the package's reader of the same file into Regular_grid_flow_field_3 is the peer, the
+// same trilinear samples and the same solid.
+TEST(MakeUnstructuredFlowField, MaskedVoxelsSampleAsTheRegularGrid)
+{
+  const std::string file = std::string(FAS_SHARED_DATA_DIR) + "/CYLINDER_grid.vtk";
+  if (!std::ifstream(file).good())
+    GTEST_SKIP() << "CYLINDER_grid.vtk not found in FAS_SHARED_DATA_DIR (" << FAS_SHARED_DATA_DIR << ")";
+  vtkNew<vtkDataSetReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkDataSet* image = reader->GetOutput();
+  auto voxels = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble(); // the image's nodes as they are, not rounded to float
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i)
+    points->InsertNextPoint(image->GetPoint(i));
+  voxels->SetPoints(points);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < image->GetNumberOfCells(); ++c) {
+    image->GetCellPoints(c, ids);
+    voxels->InsertNextCell(image->GetCellType(c), ids);
+  }
+  voxels->GetPointData()->ShallowCopy(image->GetPointData());
+  ASSERT_EQ(voxels->GetCellType(0), VTK_VOXEL);
+  const std::optional<FAS::Unstructured_flow_field_3<K>> field = FAS::make_unstructured_flow_field<K>(voxels.Get());
+  ASSERT_TRUE(field);
+  EXPECT_LT(field->number_of_cells(), std::size_t(image->GetNumberOfCells())) << "the solid cells left out";
+
+  Grid grid;
+  std::string error;
+  ASSERT_TRUE(FAS::IO::read_VTK_flow_field(file, grid, FAS::parameters::error_message(&error))) << error;
+  ASSERT_TRUE(grid.has_mask());
+  CGAL::Random random(17);
+  int fluid = 0, solid = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Point p = random_point(random, grid.bbox());
+    const std::optional<Vector> a = (*field)(p), b = grid(p);
+    ASSERT_EQ(bool(a), bool(b)) << p;
+    (a ? fluid : solid) += 1;
+    if (a)
+      EXPECT_LE(distance(*a, *b), 1e-9 * (1 + std::sqrt(b->squared_length()))) << p;
+  }
+  EXPECT_GT(fluid, 1000);
+  EXPECT_GT(solid, 10);
+}
+
+// What Unstructured_flow_field_3 cannot hold without a change of its samples stays with VTK.
+TEST(MakeUnstructuredFlowField, GridsItCannotHoldAreLeftToVTK)
+{
+  auto make = [](vtkDataSet* data_set) { return FAS::make_unstructured_flow_field<K>(data_set); };
+  vtkSmartPointer<vtkUnstructuredGrid> doubles = linear_field_on_tetrahedra();
+  EXPECT_FALSE(make(doubles.Get())) << "a double velocity array would be rounded";
+  EXPECT_FALSE(make(nullptr));
+  EXPECT_FALSE(make(vtkSmartPointer<vtkUnstructuredGrid>::New().Get())) << "no cell";
+  EXPECT_FALSE(make(to_image(point_source_grid({4, 4, 4})).Get())) << "not an unstructured grid";
+
+  vtkSmartPointer<vtkUnstructuredGrid> floats = linear_field_on_tetrahedra();
+  velocity_as_float(floats);
+  ASSERT_TRUE(make(floats.Get()));
+  EXPECT_FALSE(FAS::make_unstructured_flow_field<K>(floats.Get(), FAS::parameters::array_name("V")))
+      << "no such array";
+
+  vtkNew<vtkUnsignedCharArray> mask;
+  mask->SetName("inside");
+  mask->SetNumberOfTuples(floats->GetNumberOfPoints());
+  mask->Fill(0);
+  floats->GetPointData()->AddArray(mask);
+  EXPECT_FALSE(make(floats.Get())) << "every cell solid";
+  EXPECT_TRUE(FAS::make_unstructured_flow_field<K>(floats.Get(), FAS::parameters::mask_array_name("")))
+      << "a mask not asked for";
+  floats->GetPointData()->RemoveArray("inside");
+
+  vtkNew<vtkFloatArray> on_cells;
+  on_cells->SetName("W");
+  on_cells->SetNumberOfComponents(3);
+  on_cells->SetNumberOfTuples(floats->GetNumberOfCells());
+  on_cells->Fill(1);
+  floats->GetCellData()->AddArray(on_cells);
+  EXPECT_FALSE(FAS::make_unstructured_flow_field<K>(floats.Get(), FAS::parameters::array_name("W")))
+      << "cell data";
+
+  const vtkIdType quad[4] = {0, 1, 5, 4};
+  floats->InsertNextCell(VTK_QUAD, 4, quad);
+  EXPECT_FALSE(make(floats.Get())) << "a cell that is not a tetrahedron, hexahedron, wedge or pyramid";
 }
 
 } // namespace

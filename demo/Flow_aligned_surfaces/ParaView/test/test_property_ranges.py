@@ -25,7 +25,7 @@ for proxy, _ in filters.values():
     proxy.Velocity = ["POINTS", "velocity"]
 
 cases = [
-    ("Grow Boundary", "Distance", -0.05, "the property Distance is -0.05", "> 0"),
+    ("Grow Boundary", "Distance", -0.05, "the property Distance is -0.05", ">= 0"),
     ("Grow Boundary", "NumberOfGrowthSteps", 0, "the property Number Of Growth Steps is 0", "from 1 to 1,000"),
     ("Grow Boundary", "MaxRotationAngle", 4.0, "the property Max Rotation Angle is 4", "(0, pi]"),
     ("Parametrize And Seed", "NumberOfSeedCurves", -1, "the property Number Of Seed Curves is -1", "from 0 to 100,000"),

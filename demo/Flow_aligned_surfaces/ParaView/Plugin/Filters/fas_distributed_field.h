@@ -7,11 +7,11 @@
 // sum-reduction brings rank 0 each point's sample (the mean where pieces share the point, as on
 // the shared faces of image pieces) or "no sample" where no piece holds it: the semantics of
 // ResampleWithDataset.  Where rank 0 knows the points beforehand (an iteration's face
-// centroids, the vertices of a surface to parametrize) they go in one exchange (`probe()`,
-// `probe_points_of()`); the library's algorithms that sample in batches (the concept's
+// centroids, the vertices of a surface to parametrize) they go in one exchange (`probe()`); the
+// library's algorithms that sample in batches (the concept's
 // `sample()`: the measures, the parametrizations, the stages of a stream or path surface's time
-// line) get one exchange per batch; a point none of these announced (a boundary edge to grow) is
-// exchanged alone when the algorithm asks for it.  The other ranks answer until
+// line; the default patch's lattice) get one exchange per batch; a point none of these
+// announced (a boundary edge to grow) is exchanged alone when the algorithm asks for it.  The other ranks answer until
 // rank 0 says it has finished (`serve()`), so they take part in exactly as many exchanges as
 // rank 0 needs; a rank that fails sends its reason instead of hanging the others.
 //
@@ -41,7 +41,6 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -194,31 +193,6 @@ public:
       s.samples[key(points[i])] = samples[i];
   }
 
-  /// Rank 0: calls `evaluate()` once to learn the points it samples (the field answers a
-  /// placeholder velocity meanwhile, so that it runs through; `evaluate` must have no other
-  /// effect; what it throws is ignored), then probes them in one exchange.  Nothing on one
-  /// process.
-  template <class Evaluate>
-  void probe_points_of(const Evaluate& evaluate) const
-  {
-    State& s = *m_state;
-    if (!distributed())
-      return;
-    s.recorded.clear();
-    s.recording = true;
-    try
-    {
-      evaluate();
-    }
-    catch (...)
-    {
-      // The placeholder may make it fail early: the points not recorded are exchanged when
-      // asked for, and a real failure comes back when the algorithm runs on the samples.
-    }
-    s.recording = false;
-    probe(s.recorded);
-    s.recorded = std::vector<Point>();
-  }
 private:
   // Rank 0: the samples at `points`, from every rank (collective: the other ranks are in
   // `serve()`).  Throws std::runtime_error when a rank failed to sample its piece.
@@ -226,8 +200,6 @@ private:
   {
     State& s = *m_state;
     const int ranks = s.controller->GetNumberOfProcesses();
-    int header[2] = { PROBE, int(points.size()) };
-    s.controller->Broadcast(header, 2, 0);
     // (x, y, z, t) per point.
     std::vector<double> coordinates(4 * points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -236,7 +208,7 @@ private:
         coordinates[4 * i + std::size_t(d)] = points[i][d];
       coordinates[4 * i + 3] = times[i];
     }
-    s.controller->Broadcast(coordinates.data(), vtkIdType(coordinates.size()), 0);
+    send(PROBE, coordinates);
     const std::vector<double> mine = sample_local(coordinates, ranks, 0);
     std::vector<double> total(mine.size());
     s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
@@ -266,8 +238,7 @@ public:
   {
     if (!distributed())
       return;
-    int header[2] = { FINISH, 0 };
-    m_state->controller->Broadcast(header, 2, 0);
+    send(FINISH, {});
   }
 
   /// Ranks other than 0: answer rank 0's probes until it calls `finish()`.  Never throws.
@@ -280,12 +251,9 @@ public:
     const int rank = s.controller->GetLocalProcessId();
     for (;;)
     {
-      int header[2] = { FINISH, 0 };
-      s.controller->Broadcast(header, 2, 0);
-      if (header[0] != PROBE)
+      std::vector<double> coordinates;
+      if (receive(coordinates) != PROBE)
         return;
-      std::vector<double> coordinates(4 * std::size_t(header[1]));
-      s.controller->Broadcast(coordinates.data(), vtkIdType(coordinates.size()), 0);
       const std::vector<double> mine = sample_local(coordinates, ranks, rank);
       std::vector<double> total(mine.size());
       s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
@@ -301,12 +269,6 @@ public:
     State& s = *m_state;
     if (!distributed())
       return s.local ? (*s.local)(p) : Sample();
-    if (s.recording)
-    {
-      std::lock_guard<std::mutex> lock(s.record_mutex);
-      s.recorded.push_back(p);
-      return Vector(1, 0, 0);
-    }
     const auto found = s.samples.find(key(p));
     if (found != s.samples.end())
       return found->second;
@@ -361,12 +323,6 @@ private:
         for (std::size_t i = 0; i < points.size(); ++i)
           samples[i] = s.local->unsteady_field()(points[i], times[i]);
       return samples;
-    }
-    if (s.recording)
-    {
-      std::lock_guard<std::mutex> lock(s.record_mutex);
-      s.recorded.insert(s.recorded.end(), points.begin(), points.end());
-      return std::vector<Sample>(points.size(), Vector(1, 0, 0));
     }
     std::vector<std::size_t> asked;
     std::vector<Point> asked_points;
@@ -459,6 +415,43 @@ private:
     FINISH = 0,
     PROBE = 1
   };
+
+  // The first broadcast of an exchange: the command, the number of points and the (x, y, z, t)
+  // of the first `inline_points` of them, so that a small exchange (a Runge-Kutta stage of a few
+  // particles) costs one broadcast and one reduction; the other points follow in a second
+  // broadcast.
+  static constexpr std::size_t inline_points = 32;
+  using Message = std::array<double, 2 + 4 * inline_points>;
+
+  // Rank 0: broadcasts `command` and `coordinates` (4 per point).
+  void send(Command command, const std::vector<double>& coordinates) const
+  {
+    Message first{};
+    first[0] = command;
+    first[1] = double(coordinates.size() / 4);
+    const std::size_t inline_values = std::min(coordinates.size(), 4 * inline_points);
+    std::copy_n(coordinates.begin(), inline_values, first.begin() + 2);
+    m_state->controller->Broadcast(first.data(), vtkIdType(first.size()), 0);
+    if (coordinates.size() > inline_values)
+      m_state->controller->Broadcast(const_cast<double*>(coordinates.data()) + inline_values,
+                                     vtkIdType(coordinates.size() - inline_values), 0);
+  }
+
+  // Other ranks: receives what `send()` broadcasts into `coordinates`; returns the command.
+  Command receive(std::vector<double>& coordinates) const
+  {
+    Message first{};
+    m_state->controller->Broadcast(first.data(), vtkIdType(first.size()), 0);
+    if (first[0] != PROBE)
+      return FINISH;
+    coordinates.assign(4 * std::size_t(first[1]), 0.);
+    const std::size_t inline_values = std::min(coordinates.size(), 4 * inline_points);
+    std::copy_n(first.begin() + 2, inline_values, coordinates.begin());
+    if (coordinates.size() > inline_values)
+      m_state->controller->Broadcast(coordinates.data() + inline_values,
+                                     vtkIdType(coordinates.size() - inline_values), 0);
+    return PROBE;
+  }
 
   // The exact bits of the coordinates: the points are looked up as the library computes them.
   using Key = std::array<std::uint64_t, 3>;
@@ -588,9 +581,6 @@ private:
     std::optional<Piece_field> local;                // this rank's piece; none: no cells
     std::string local_error;
     std::unordered_map<Key, Sample, Key_hash> samples;
-    bool recording = false;
-    mutable std::mutex record_mutex;
-    mutable std::vector<Point> recorded;
     int failed_ranks = 0, supplying_ranks = 0;
     std::size_t exchanges = 0;
     std::thread::id owner;                           // the thread that may exchange

@@ -9,6 +9,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/VTK_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/make_unstructured_flow_field.h>
 #include <CGAL/Flow_aligned_surfaces/measure.h>
 
 #include "fas_flow_input.h"
@@ -52,12 +53,15 @@ using Polyline = std::vector<Point>;
 
 /// The velocity of a VTK data set as a `FlowField_3`: point data of an image is copied into a
 /// `Regular_grid_flow_field_3` (the same trilinear samples, 30-70 times faster than a cell
-/// locator; see benchmark/.../RESULTS.md, "Sampling fields"), every other case samples the data set through
-/// `VTK_flow_field_3`.  Safe to call concurrently.
+/// locator), float point data of an unstructured grid of tetrahedra, hexahedra, wedges and
+/// pyramids into an `Unstructured_flow_field_3` (1.2-2.8 times faster; benchmark/.../RESULTS.md,
+/// "Sampling fields"), every other case samples the data set through `VTK_flow_field_3`.  Safe to
+/// call concurrently.
 class Velocity_field {
 public:
   Velocity_field() = default;
   Velocity_field(FAS::Regular_grid_flow_field_3<Kernel> grid) : m_field(std::move(grid)) {}
+  Velocity_field(FAS::Unstructured_flow_field_3<Kernel> cells) : m_field(std::move(cells)) {}
   Velocity_field(FAS::VTK_flow_field_3<Kernel> cells) : m_field(std::move(cells)) {}
 
   std::optional<Vector> operator()(const Point& p) const
@@ -66,7 +70,9 @@ public:
   }
 
 private:
-  std::variant<FAS::Regular_grid_flow_field_3<Kernel>, FAS::VTK_flow_field_3<Kernel>> m_field;
+  std::variant<FAS::Regular_grid_flow_field_3<Kernel>, FAS::Unstructured_flow_field_3<Kernel>,
+               FAS::VTK_flow_field_3<Kernel>>
+      m_field;
 };
 
 /// The message for a *Velocity* property that names an array `data_set` does not have, with the
@@ -145,13 +151,18 @@ inline Velocity_field make_velocity_field(vtkDataSet* data_set, const Velocity_s
           grid_dimensions, first, dimensions, std::move(values), std::move(mask)));
     }
   }
-  if (array_name.empty())
+  if (array_name.empty()) {
+    if (auto cells = FAS::make_unstructured_flow_field<Kernel>(data_set))
+      return Velocity_field(std::move(*cells));
     return Velocity_field(FAS::VTK_flow_field_3<Kernel>(data_set));
+  }
   if (data_set->GetPointData()->GetArray(array_name.c_str()) == nullptr &&
       data_set->GetCellData()->GetArray(array_name.c_str()) == nullptr)
     throw std::invalid_argument(missing_velocity_message(data_set, array_name));
-  return Velocity_field(FAS::VTK_flow_field_3<Kernel>(with_selected_association(data_set, selection),
-                                                      FAS::parameters::array_name(array_name)));
+  const vtkSmartPointer<vtkDataSet> sampled = with_selected_association(data_set, selection);
+  if (auto cells = FAS::make_unstructured_flow_field<Kernel>(sampled, FAS::parameters::array_name(array_name)))
+    return Velocity_field(std::move(*cells));
+  return Velocity_field(FAS::VTK_flow_field_3<Kernel>(sampled, FAS::parameters::array_name(array_name)));
 }
 
 /// `tm` as polygonal data (points in vertex index order, one triangle per face), as the demo

@@ -13,6 +13,7 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMath.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
@@ -318,6 +319,12 @@ void vtkFlowAlignedSurface::OfferDefaultPatch(vtkInformation* input_information)
     info->SetNumberOfTuples(0);
   // This rank's piece, sampled here once for the update that follows as well.
   in.field.sample_piece(input_information, selection);
+  // On several processes a piece is not the data: a placement from rank 0's piece would differ
+  // with the number of ranks.  Size stays 0, so the update places the patch from all pieces, as
+  // one process places it here.
+  if (vtkMultiProcessController* c = vtkMultiProcessController::GetGlobalController();
+      c != nullptr && c->GetNumberOfProcesses() > 1)
+    return;
   const Piece_field* piece_field = in.field.piece_field();
   if (piece_field == nullptr || in.field.piece().data_set->GetNumberOfCells() == 0)
     return;
@@ -376,15 +383,14 @@ std::array<double, 7> vtkFlowAlignedSurface::Internals::requested_pose(vtkFlowAl
   if (f->Size > 0)
     return { f->Center[0], f->Center[1], f->Center[2], f->Normal[0], f->Normal[1],
       f->Normal[2], f->Size };
-  // Size 0: the default patch, placed once per input and alignment (its samples probed from
-  // every rank in one exchange), not at every time step played.
+  // Size 0: the default patch, placed once per input and alignment (its lattice sampled in one
+  // exchange, then a few points alone), not at every time step played.
   const bool orthogonal = f->Alignment == vtkFlowAlignedSurface::ORTHOGONAL;
   if (!in.placed || data_changed || in.placed_alignment != f->Alignment)
   {
     in.placed.reset();
     if (in.steps.temporal())
       in.field.set_time(in.steps.times().front()); // placed where following the flow starts
-    in.field.probe_points_of([&] { default_patch(in.field, pieces.bounds.data(), orthogonal); });
     in.placed = default_patch(in.field, pieces.bounds.data(), orthogonal);
     in.placed_alignment = f->Alignment;
     if (!in.placed)

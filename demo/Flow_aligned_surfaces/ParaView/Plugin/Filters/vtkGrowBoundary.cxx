@@ -11,6 +11,7 @@
 #include <vtkMath.h>
 #include <vtkObjectFactory.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <string>
@@ -49,11 +50,19 @@ FAS::Alignment_report iterate(Deformation& deformation, const Distributed_veloci
   return result;
 }
 
+// The largest side of the bounding box of `surface`.
+double largest_extent(vtkPolyData* surface)
+{
+  double b[6];
+  surface->GetBounds(b);
+  return std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
+}
+
 } // namespace
 
 
 vtkGrowBoundary::vtkGrowBoundary()
-  : Distance(0.1)
+  : Distance(0)
   , GrowthMode(ALL)
   , GrowthDirection{ 1, 0, 0 }
   , NumberOfGrowthSteps(1)
@@ -84,8 +93,8 @@ bool vtkGrowBoundary::Compute(vtkInformation*, vtkInformationVector**, vtkInform
 {
   const Distributed_input& pieces = this->Flow->pieces;
   const vtkSmartPointer<vtkPolyData>& surface = this->Flow->gathered;
-  require_property(std::isfinite(this->Distance) && this->Distance > 0, "Distance", this->Distance,
-                   "> 0 (the width of each grown strip, in the data's units)");
+  require_property(std::isfinite(this->Distance) && this->Distance >= 0, "Distance", this->Distance,
+                   ">= 0 (the width of each grown strip, in the data's units; 0: a tenth of the surface's largest extent)");
   require_property(this->NumberOfGrowthSteps >= 1 && this->NumberOfGrowthSteps <= 1000, "Number Of Growth Steps",
                    this->NumberOfGrowthSteps, "from 1 to 1,000");
   require_alignment_properties(this->MaxRotationAngle, this->MaxDihedralAngle, this->ConvergenceAngle,
@@ -93,6 +102,7 @@ bool vtkGrowBoundary::Compute(vtkInformation*, vtkInformationVector**, vtkInform
   pieces.require_samples();
   const Distributed_velocity_field& field = this->Flow->field; // outlives the deformation, as tm does
   Mesh tm = mesh_from_polydata(surface, "the surface (input 1)");
+  const double distance = this->Distance > 0 ? this->Distance : 0.1 * largest_extent(surface);
   const std::size_t input_vertices = tm.number_of_vertices();
   if (!FAS::normalized_flux(tm, field).value)
     throw std::invalid_argument("the surface (input 1) has no flow sample: it lies outside the input "
@@ -124,13 +134,13 @@ bool vtkGrowBoundary::Compute(vtkInformation*, vtkInformationVector**, vtkInform
     }
     FAS::Growth_report r;
     if (this->GrowthMode == ACROSS_FLOW)
-      r = deformation.grow(this->Distance, FAS::parameters::across_flow(true));
+      r = deformation.grow(distance, FAS::parameters::across_flow(true));
     else if (this->GrowthMode == DIRECTION)
-      r = deformation.grow(this->Distance,
+      r = deformation.grow(distance,
         FAS::parameters::growth_direction(
           Vector(this->GrowthDirection[0], this->GrowthDirection[1], this->GrowthDirection[2])));
     else
-      r = deformation.grow(this->Distance);
+      r = deformation.grow(distance);
     grown.number_of_new_vertices += r.number_of_new_vertices;
     grown.number_of_new_faces += r.number_of_new_faces;
     grown.number_of_grown_edges += r.number_of_grown_edges;
@@ -148,6 +158,7 @@ bool vtkGrowBoundary::Compute(vtkInformation*, vtkInformationVector**, vtkInform
   for (std::size_t i = 0; i < growth_step.size(); ++i)
     step_array->SetValue(vtkIdType(i), growth_step[i]);
   result->GetPointData()->AddArray(step_array);
+  add_field_value(result, "distance", distance);
   add_field_value(result, "number_of_iterations", double(iterations));
   add_field_value(result, "converged", aligned.converged ? 1. : 0.);
   add_field_value(result, "max_rotation_angle", aligned.max_rotation_angle);

@@ -10,7 +10,8 @@
 /// Input port 0: any data set with a 3-component point or cell array (the velocity, chosen with
 /// `SetInputArrayToProcess(0, ...)`).  Input port 1: a triangulated surface with a boundary,
 /// typically Flow-Aligned Surface's output; it is the reference mesh M0 of a new deformation.
-/// Each of NumberOfGrowthSteps steps grows the boundary by Distance (all of it, the edges across
+/// Each of NumberOfGrowthSteps steps grows the boundary by Distance (0: a tenth of the surface's
+/// largest extent; all of it, the edges across
 /// the flow, or the edges facing GrowthDirection) and iterates the alignment up to
 /// NumberOfIterations times (until converged).
 ///

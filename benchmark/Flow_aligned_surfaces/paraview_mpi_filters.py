@@ -1,0 +1,158 @@
+"""The five filters of the plugin on one process and on several, on the CYLINDER data.
+
+  pvbatch paraview_mpi_filters.py PLUGIN REFERENCE WORKDIR DATA FORM
+  mpiexec --allow-run-as-root --oversubscribe -n P pvbatch --mpi paraview_mpi_filters.py \
+      PLUGIN REFERENCE WORKDIR DATA FORM
+
+PLUGIN, REFERENCE: the plugin and paraview_reference of a build (the tests' arguments); DATA: the
+folder of CYLINDER_cells.vtk, CYLINDER_grid.vtk and CYLINDER_UNSTEADY_grid.pvd (../shared/data).
+FORM says how the flow comes in, the same pipeline on any number of ranks:
+  cells           CYLINDER_cells.vtk (185,344 hexahedra) by the legacy reader, spread over the
+                  ranks by RedistributeDataSet
+  image           CYLINDER_grid.vtk as a .vti (written into WORKDIR once), read piece-wise by the
+                  ranks (XMLImageDataReader)
+  unsteady_cells  CYLINDER_UNSTEADY_grid.pvd (34 images) through RedistributeDataSet: the
+                  unstructured pieces of a time series
+  unsteady_image  the same .pvd, each step's image read piece-wise
+
+The tutorial's chain (doc: fas_paraview_tutorial): Flow-Aligned Surface with its defaults, Grow
+Boundary, Parametrize And Seed (one seed curve), Stream Surface From Curve (both directions; on a
+time series a path surface from a line, released at the first step and integrated to the view's
+time, 0.1 s later), Flow Texture; on a steady flow at the surface's last iteration (100).  Each filter is created anew 3 times with its inputs up to
+date and timed to the end of its update (a first Apply); prints the median, the number of
+exchanges and the output's size, and writes each output's points into WORKDIR/FORM_P/FILTER.txt
+for compare_mpi_outputs.py.
+"""
+from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
+
+import os
+import statistics
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "demo", "Flow_aligned_surfaces", "ParaView", "test"))
+import fas_plugin_test as t
+
+if len(sys.argv) != 6:
+    raise RuntimeError("usage: pvbatch paraview_mpi_filters.py PLUGIN REFERENCE WORKDIR DATA FORM")
+setup = t.Setup(globals())
+data_folder, form = sys.argv[4], sys.argv[5]
+ranks = t.number_of_ranks()
+outputs = setup.path("%s_%d" % (form, ranks))
+os.makedirs(outputs, exist_ok=True)
+
+
+def image_file():
+    """CYLINDER_grid.vtk as a .vti, which the XML reader reads piece-wise on every rank."""
+    vti = setup.path("CYLINDER_grid.vti")
+    if not os.path.exists(vti):
+        from vtkmodules.vtkIOLegacy import vtkDataSetReader
+        from vtkmodules.vtkIOXML import vtkXMLImageDataWriter
+        reader = vtkDataSetReader()
+        reader.SetFileName(os.path.join(data_folder, "CYLINDER_grid.vtk"))
+        reader.Update()
+        writer = vtkXMLImageDataWriter()
+        writer.SetInputData(reader.GetOutput())
+        writer.SetFileName(vti + ".partial")
+        writer.Write()
+        os.replace(vti + ".partial", vti)
+    return vti
+
+
+def flow():
+    if form == "cells":
+        return RedistributeDataSet(Input=LegacyVTKReader(FileNames=[os.path.join(data_folder, "CYLINDER_cells.vtk")]))
+    if form == "image":
+        return XMLImageDataReader(FileName=[image_file()])
+    series = PVDReader(FileName=os.path.join(data_folder, "CYLINDER_UNSTEADY_grid.pvd"))
+    if form == "unsteady_cells":
+        return RedistributeDataSet(Input=series)
+    if form == "unsteady_image":
+        return series
+    raise RuntimeError("FORM is cells, image, unsteady_cells or unsteady_image, not %r" % form)
+
+
+data = flow()
+unsteady = form.startswith("unsteady")
+times = data.TimestepValues if unsteady else []
+# The view's time: on a time series about a third of the period after the first step; on a
+# steady flow the last of Flow-Aligned Surface's 100 iterations (its time steps; the other
+# filters have none and pass the time on).
+view_time = times[0] + 0.1 if unsteady else 100.0
+data.UpdatePipeline(view_time)
+
+
+def update(proxy):
+    proxy.UpdatePipeline(view_time)
+
+
+def timed(name, make, port=0):
+    """Creates the filter 3 times, each time updated and then deleted but the last; prints the
+    median time, and writes the points of the last one's output `port`."""
+    seconds = []
+    for run in range(3):
+        if run > 0:
+            Delete(proxy)
+        start = time.perf_counter()
+        proxy = make()
+        update(proxy)
+        seconds.append(time.perf_counter() - start)
+    out = servermanager.Fetch(proxy, idx=port)
+    exchanges = 0
+    if ranks > 1 and out.GetFieldData().GetArray("number_of_exchanges") is not None:
+        exchanges = t.field_value(out, "number_of_exchanges")
+    print("%-15s %-24s %d %8.3f %9d %8d" % (form, name, ranks, statistics.median(seconds), exchanges,
+                                          out.GetNumberOfPoints()))
+    sys.stdout.flush()
+    with open(os.path.join(outputs, name + ".txt"), "w") as f:
+        for i in range(out.GetNumberOfPoints()):
+            f.write("%.17g %.17g %.17g\n" % out.GetPoint(i))
+    return proxy
+
+
+print("form            filter                   ranks median_s exchanges   points")
+velocity = ["POINTS", "velocity"]
+
+
+def with_velocity(proxy):
+    proxy.Velocity = velocity
+    return proxy
+
+
+surface = timed("FlowAlignedSurface", lambda: with_velocity(FlowAlignedSurface(Input=data)))
+grown = timed("GrowBoundary", lambda: with_velocity(GrowBoundary(Input=data, Surface=surface)))
+
+
+def seeds_on_grown():
+    seeds = with_velocity(ParametrizeAndSeed(Input=data, Surface=grown))
+    seeds.NumberOfSeedCurves = 1
+    return seeds
+
+
+seeds = timed("ParametrizeAndSeed", seeds_on_grown, port=1)
+
+
+def stream_surface():
+    if unsteady:
+        line = Line(Point1=[0.55, 0.3, 0.05], Point2=[0.55, 0.3, 0.36], Resolution=30)
+        path = with_velocity(StreamSurfaceFromCurve(Input=data, Seeds=line))
+        path.SurfaceType = "Path Surface"
+        path.StartTime = times[0]
+        return path
+    stream = with_velocity(StreamSurfaceFromCurve(Input=data, Seeds=OutputPort(seeds, 1)))
+    stream.IntegrationDirection = "Both"
+    return stream
+
+
+stream = timed("StreamSurfaceFromCurve", stream_surface)
+
+
+def texture():
+    texture = with_velocity(FlowTexture(Input=data, Surface=stream))
+    if unsteady:
+        texture.PathSurface = 1
+    return texture
+
+
+timed("FlowTexture", texture)
