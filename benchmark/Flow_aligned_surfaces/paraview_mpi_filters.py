@@ -61,21 +61,22 @@ def image_file():
 
 
 def flow():
+    """The flow as the filters get it, and its time steps (none for a steady flow)."""
     if form == "cells":
-        return RedistributeDataSet(Input=LegacyVTKReader(FileNames=[os.path.join(data_folder, "CYLINDER_cells.vtk")]))
+        cells = LegacyVTKReader(FileNames=[os.path.join(data_folder, "CYLINDER_cells.vtk")])
+        return RedistributeDataSet(Input=cells), []
     if form == "image":
-        return XMLImageDataReader(FileName=[image_file()])
+        return XMLImageDataReader(FileName=[image_file()]), []
     series = PVDReader(FileName=os.path.join(data_folder, "CYLINDER_UNSTEADY_grid.pvd"))
     if form == "unsteady_cells":
-        return RedistributeDataSet(Input=series)
+        return RedistributeDataSet(Input=series), series.TimestepValues
     if form == "unsteady_image":
-        return series
+        return series, series.TimestepValues
     raise RuntimeError("FORM is cells, image, unsteady_cells or unsteady_image, not %r" % form)
 
 
-data = flow()
-unsteady = form.startswith("unsteady")
-times = data.TimestepValues if unsteady else []
+data, times = flow()
+unsteady = len(times) > 0
 # The view's time: on a time series about a third of the period after the first step; on a
 # steady flow the last of Flow-Aligned Surface's 100 iterations (its time steps; the other
 # filters have none and pass the time on).

@@ -81,7 +81,12 @@ namespace Flow_aligned_surfaces {
 /// loop, for instance), a copy shares the cache key of its original, and a thread alternating
 /// between two fields starts both afresh at each switch.  Whatever the hint and the cache say
 /// is checked before it is used (the cell must contain `p`, a neighbour must hold the face's
-/// points), so a stale entry costs time, never a wrong answer.
+/// points), so a stale entry costs time, never a wrong answer.  Nor a different one: the
+/// answer at `p` does not depend on the queries before it.  Where several cells contain `p`
+/// (within `1e-9` of a shared face in parametric coordinates) the cell of smallest index gives
+/// the value, and the map of the cell is always inverted from its parametric centre (Newton's
+/// last bits depend on where it starts), so the same point gets the same sample, bit for bit,
+/// from any thread, in any order, in any process.
 ///
 /// Memory: the arrays as given (points in the precision given, 32-bit indices), plus 4 bytes
 /// per cell for the cells' order in the leaves and 2 float boxes (48 bytes) per leaf, about 10
@@ -229,7 +234,7 @@ public:
   }
 
   /// returns the index of a cell containing `p`, or `std::nullopt` if there is none.  Where
-  /// several cells contain `p` (on shared faces), which one is returned depends on the hint.
+  /// several cells contain `p` (on shared faces), the one of smallest index.
   std::optional<std::size_t> locate(const Point_3& p) const
   {
     const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};

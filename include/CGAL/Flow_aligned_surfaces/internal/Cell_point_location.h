@@ -80,16 +80,45 @@ public:
       return true;
     };
     // The walk, else the hierarchy, nearest to the hint first.
-    const bool found =
-        w.has_hint ? walk(s, x, hit, w) || search_from(s, w.leaf, x, try_any) : search(s, 0, x, try_any);
-    if (found) {
-      w.has_hint = true;
-      w.cell = hit.cell;
-      w.leaf = hit.leaf;
-      for (int a = 0; a < 3; ++a)
-        w.xi[a] = hit.xi[a];
+    const bool walked = w.has_hint && walk(s, x, hit, w);
+    const bool found = walked || (w.has_hint ? search_from(s, w.leaf, x, try_any) : search(s, 0, x, try_any));
+    if (!found)
+      return false;
+    // The walk inverts the hint's cell from the hint's parametric point.
+    answer_whatever_came_before(s, x, hit, walked && hit.cell == w.cell);
+    w.has_hint = true;
+    w.cell = hit.cell;
+    w.leaf = hit.leaf;
+    for (int a = 0; a < 3; ++a)
+      w.xi[a] = hit.xi[a];
+    return true;
+  }
+
+  // Makes `hit`, a cell containing x, the answer that does not depend on the queries before it
+  // (on the thread's hint): on a shared face the cell of smallest index among those containing
+  // x, and its map inverted from the reference cell's centre (the last bits of Newton's method
+  // depend on where it starts; `from_hint` says the hit started elsewhere).  Then a field gives
+  // the same sample at a point whatever order, thread or process asks for it.
+  static void answer_whatever_came_before(const Cell_point_location& s, const double* x, Hit& hit, bool from_hint)
+  {
+    std::size_t cell = hit.cell, leaf = hit.leaf;
+    if (!in_reference_cell(s.cell_types[cell], hit.xi, -cell_interior_margin))
+      search(s, 0, x, [&](std::size_t c, std::size_t node) {
+        Hit other;
+        if (c < cell && try_cell(s, c, x, other)) {
+          cell = c;
+          leaf = node;
+        }
+        return false; // every cell whose box holds x
+      });
+    const bool started_at_centre = !from_hint || s.cell_types[cell] == VTK_cell_type::TETRA;
+    if (cell == hit.cell && started_at_centre)
+      return;
+    Hit canonical;
+    if (try_cell(s, cell, x, canonical)) {
+      canonical.leaf = leaf;
+      hit = canonical;
     }
-    return found;
   }
 
   // Whether cell c contains x (its box first), with the hit.

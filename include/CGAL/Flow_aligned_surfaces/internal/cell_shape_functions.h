@@ -36,6 +36,8 @@ struct Cell_parametric_point {
 // solution (~1e-15 for well-shaped cells) so that a point on a shared face is inside both
 // cells, and far below any distance that matters for sampling a flow.
 constexpr double cell_inside_tolerance = 1e-10;
+// A point farther than this inside a cell's reference cell is in no other conforming cell.
+constexpr double cell_interior_margin = 1e-9;
 
 inline int number_of_cell_points(unsigned char t)
 {
@@ -189,9 +191,9 @@ inline int cell_shape_functions(unsigned char type, const double* xi, double* N,
   }
 }
 
-inline bool in_reference_cell(unsigned char type, const double* xi)
+// Whether xi is in the reference cell of `type` grown by `e` on every side (shrunk for e < 0).
+inline bool in_reference_cell(unsigned char type, const double* xi, double e = cell_inside_tolerance)
 {
-  const double e = cell_inside_tolerance;
   const double r = xi[0], s = xi[1], t = xi[2];
   const bool t_ok = t >= -e && t <= 1. + e;
   switch (type) {

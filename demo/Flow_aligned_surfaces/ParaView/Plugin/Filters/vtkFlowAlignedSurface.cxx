@@ -319,11 +319,12 @@ void vtkFlowAlignedSurface::OfferDefaultPatch(vtkInformation* input_information)
     info->SetNumberOfTuples(0);
   // This rank's piece, sampled here once for the update that follows as well.
   in.field.sample_piece(input_information, selection);
-  // On several processes a piece is not the data: a placement from rank 0's piece would differ
-  // with the number of ranks.  Size stays 0, so the update places the patch from all pieces, as
-  // one process places it here.
-  if (vtkMultiProcessController* c = vtkMultiProcessController::GetGlobalController();
-      c != nullptr && c->GetNumberOfProcesses() > 1)
+  // Where the data at hand are not what the update places the patch in, nothing is offered and
+  // Size stays 0, so that the update places it: on several processes a piece is not the data (a
+  // placement from rank 0's piece would differ with the number of ranks); a time series is
+  // followed from its first step, and the step at hand is the view's.
+  vtkMultiProcessController* c = vtkMultiProcessController::GetGlobalController();
+  if ((c != nullptr && c->GetNumberOfProcesses() > 1) || in.steps.temporal())
     return;
   const Piece_field* piece_field = in.field.piece_field();
   if (piece_field == nullptr || in.field.piece().data_set->GetNumberOfCells() == 0)
