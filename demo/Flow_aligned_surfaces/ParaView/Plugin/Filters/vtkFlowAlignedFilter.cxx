@@ -6,6 +6,7 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkOutputWindow.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <exception>
 #include <optional>
@@ -24,9 +25,23 @@ vtkFlowAlignedFilter::~vtkFlowAlignedFilter()
 }
 
 int vtkFlowAlignedFilter::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   this->Flow->steps.read_time_steps(inputVector[0]->GetInformationObject(0));
+  // A steady flow: the output has the time steps of input 1 (a surface that plays Flow-Aligned
+  // Surface's iterations), at which the pipeline asks that input.  ParaView's time keeper leaves
+  // out the time steps of the inputs of a filter that has a TimestepValues property: without
+  // them the iterations vanish from the time controls once a filter takes the surface.
+  if (!this->Flow->steps.temporal() && this->GetNumberOfInputPorts() > 1 &&
+      inputVector[1]->GetNumberOfInformationObjects() > 0)
+  {
+    using Pipeline = vtkStreamingDemandDrivenPipeline;
+    vtkInformation* surface = inputVector[1]->GetInformationObject(0);
+    for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
+      for (vtkInformationDoubleVectorKey* key : { Pipeline::TIME_STEPS(), Pipeline::TIME_RANGE() })
+        if (surface->Has(key))
+          outputVector->GetInformationObject(port)->CopyEntry(surface, key);
+  }
   return 1;
 }
 
