@@ -75,7 +75,7 @@ namespace Flow_aligned_surfaces {
 /// it is (the algorithms treat it as no sample and count it).
 ///
 /// A query costs what VTK's locator and cell functions cost: on the solver cells of the
-/// CYLINDER data 1.2 to 2.8 times an `Unstructured_flow_field_3` query, on an image 33 to 71
+/// CYLINDER data 1.9 to 4 times an `Unstructured_flow_field_3` query, on an image 57 to 107
 /// times a `Regular_grid_flow_field_3` query on the same samples (which finds the voxel by
 /// arithmetic; benchmark/Flow_aligned_surfaces/RESULTS.md, "Sampling fields").  For a `vtkImageData`, a
 /// `Regular_grid_flow_field_3` of its array gives the same samples faster; for a

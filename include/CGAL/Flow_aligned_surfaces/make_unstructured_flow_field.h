@@ -101,7 +101,7 @@ vtkDataArray* mask_of(vtkUnstructuredGrid* grid, const NamedParameters& np, bool
 /// \ingroup PkgFlowAlignedSurfacesFlows
 /// returns the velocity of a `vtkUnstructuredGrid` in memory as an `Unstructured_flow_field_3`,
 /// whose queries cost less than those of a `VTK_flow_field_3` over the same grid (on the solver
-/// cells of the CYLINDER data, 1.2 to 2.8 times less: benchmark/Flow_aligned_surfaces/RESULTS.md,
+/// cells of the CYLINDER data, 1.9 to 4 times less: benchmark/Flow_aligned_surfaces/RESULTS.md,
 /// "Sampling fields"), or `std::nullopt` where the grid is not one that field can hold; the
 /// header needs VTK and the target `CGAL::Flow_aligned_surfaces_VTK`.
 ///

@@ -52,9 +52,9 @@ using Mesh = CGAL::Surface_mesh<Point>;
 using Polyline = std::vector<Point>;
 
 /// The velocity of a VTK data set as a `FlowField_3`: point data of an image is copied into a
-/// `Regular_grid_flow_field_3` (the same trilinear samples, 30-70 times faster than a cell
+/// `Regular_grid_flow_field_3` (the same trilinear samples, 57-107 times faster than a cell
 /// locator), float point data of an unstructured grid of tetrahedra, hexahedra, wedges and
-/// pyramids into an `Unstructured_flow_field_3` (1.2-2.8 times faster; benchmark/.../RESULTS.md,
+/// pyramids into an `Unstructured_flow_field_3` (1.9-4 times faster; benchmark/.../RESULTS.md,
 /// "Sampling fields"), every other case samples the data set through `VTK_flow_field_3`.  Safe to
 /// call concurrently.
 class Velocity_field {
