@@ -21,7 +21,7 @@ time series a path surface from a line, released at the first step and integrate
 time, 0.1 s later), Flow Texture; on a steady flow at the surface's last iteration (100).  Each filter is created anew 3 times with its inputs up to
 date and timed to the end of its update (a first Apply); prints the median, the number of
 exchanges and the output's size, and writes each output's points into WORKDIR/FORM_P/FILTER.txt
-for compare_mpi_outputs.py.
+for compare_mpi_outputs.py; at the end, the peak resident memory of every rank.
 """
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
@@ -157,3 +157,27 @@ def texture():
 
 
 timed("FlowTexture", texture)
+
+
+def peak_memory_of_ranks():
+    """The peak resident memory (VmHWM, MB) of every process running this script on this form
+    (the ranks, all on this machine), rank 0's first."""
+    mine = os.getpid()
+    peaks = []
+    for pid in [p for p in os.listdir("/proc") if p.isdigit()]:
+        try:
+            with open("/proc/%s/cmdline" % pid, "rb") as f:
+                words = f.read().split(b"\0")
+            ranks_command = os.path.basename(words[0]).startswith(b"pvbatch")  # not mpiexec
+            if not ranks_command or os.path.basename(sys.argv[0]).encode() not in b" ".join(words) or \
+                    form.encode() not in words:
+                continue
+            with open("/proc/%s/status" % pid) as f:
+                kb = next(int(line.split()[1]) for line in f if line.startswith("VmHWM:"))
+        except (OSError, StopIteration):
+            continue
+        peaks.append((int(pid) != mine, kb / 1024.0))
+    return [mb for _, mb in sorted(peaks)]
+
+
+print("%-15s %-24s %d peak MB per rank: %s" % (form, "memory", ranks, ", ".join("%.0f" % mb for mb in peak_memory_of_ranks())))
