@@ -56,7 +56,7 @@ namespace Flow_aligned_surfaces {
 /// float boxes (rounded outwards) whose leaves hold 8 cells each, built top down by splitting
 /// the cells at the median of their bounding boxes' centres along the longest axis (by the
 /// constructor, with TBB on the threads of the caller's arena: the same tree).  The walk
-/// inverts the hint cell's map at `p` (Newton's method from the previous parametric position);
+/// inverts the hint cell's map at `p` (Newton's method from the cell's parametric centre);
 /// if `p` is outside, it crosses the face through which the parametric point leaves the
 /// reference cell the most into the cell sharing that face, and so on, for at most 8 cells.
 /// It gives up at the mesh boundary, on a cell whose inversion diverges, and when `p` is not
@@ -84,9 +84,9 @@ namespace Flow_aligned_surfaces {
 /// points), so a stale entry costs time, never a wrong answer.  Nor a different one: the
 /// answer at `p` does not depend on the queries before it.  Where several cells contain `p`
 /// (within `1e-9` of a shared face in parametric coordinates) the cell of smallest index gives
-/// the value, and the map of the cell is always inverted from its parametric centre (Newton's
-/// last bits depend on where it starts), so the same point gets the same sample, bit for bit,
-/// from any thread, in any order, in any process.
+/// the value, and a cell's map is always inverted from its parametric centre (Newton's last
+/// bits depend on where it starts), so the same point gets the same sample, bit for bit, from
+/// any thread, in any order, in any process.
 ///
 /// Memory: the arrays as given (points in the precision given, 32-bit indices), plus 4 bytes
 /// per cell for the cells' order in the leaves and 2 float boxes (48 bytes) per leaf, about 10

@@ -75,7 +75,7 @@ namespace Flow_aligned_surfaces {
 /// it is (the algorithms treat it as no sample and count it).
 ///
 /// A query costs what VTK's locator and cell functions cost: on the solver cells of the
-/// CYLINDER data 1.9 to 4 times an `Unstructured_flow_field_3` query, on an image 57 to 107
+/// CYLINDER data 2 to 6 times an `Unstructured_flow_field_3` query, on an image 57 to 107
 /// times a `Regular_grid_flow_field_3` query on the same samples (which finds the voxel by
 /// arithmetic; benchmark/Flow_aligned_surfaces/RESULTS.md, "Sampling fields").  For a `vtkImageData`, a
 /// `Regular_grid_flow_field_3` of its array gives the same samples faster; for a
@@ -271,20 +271,10 @@ private:
     return list.empty() ? std::string("none") : list;
   }
 
-  // The array named `name` in the point data, else in the cell data; null if neither has it.
-  vtkDataArray* find_array(const std::string& name, bool& on_cells) const
-  {
-    on_cells = false;
-    if (vtkDataArray* a = m_data_set->GetPointData()->GetArray(name.c_str()))
-      return a;
-    on_cells = true;
-    return m_data_set->GetCellData()->GetArray(name.c_str());
-  }
-
   void find_velocity(const std::string* name)
   {
     if (name != nullptr) {
-      m_velocity = find_array(*name, m_on_cells);
+      m_velocity = internal::point_or_cell_array(m_data_set, *name, m_on_cells);
       if (m_velocity == nullptr)
         fail(describe() + " has no array named '" + *name + "'; its 3-component arrays: " + arrays_with(3));
       if (m_velocity->GetNumberOfComponents() != 3)
@@ -309,7 +299,7 @@ private:
     const std::string mask_name = named ? *name : std::string("inside");
     if (mask_name.empty())
       return; // no mask asked for
-    m_mask = find_array(mask_name, m_mask_on_cells);
+    m_mask = internal::point_or_cell_array(m_data_set, mask_name, m_mask_on_cells);
     if (m_mask == nullptr) {
       if (named)
         fail(describe() + " has no mask array named '" + mask_name + "'; its 1-component arrays: " +

@@ -23,7 +23,6 @@
 #include <vtkDataSet.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
-#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <cstdint>
@@ -88,12 +87,7 @@ vtkDataArray* mask_of(vtkUnstructuredGrid* grid, const NamedParameters& np, bool
   const Array_names names = array_names(np);
   const std::string name = names.mask_name() != nullptr ? *names.mask_name() : std::string("inside");
   on_cells = false;
-  if (name.empty())
-    return nullptr;
-  if (vtkDataArray* mask = grid->GetPointData()->GetArray(name.c_str()))
-    return mask;
-  on_cells = true;
-  return grid->GetCellData()->GetArray(name.c_str());
+  return name.empty() ? nullptr : point_or_cell_array(grid, name, on_cells);
 }
 
 } // namespace internal
@@ -101,7 +95,7 @@ vtkDataArray* mask_of(vtkUnstructuredGrid* grid, const NamedParameters& np, bool
 /// \ingroup PkgFlowAlignedSurfacesFlows
 /// returns the velocity of a `vtkUnstructuredGrid` in memory as an `Unstructured_flow_field_3`,
 /// whose queries cost less than those of a `VTK_flow_field_3` over the same grid (on the solver
-/// cells of the CYLINDER data, 1.9 to 4 times less: benchmark/Flow_aligned_surfaces/RESULTS.md,
+/// cells of the CYLINDER data, 2 to 6 times less: benchmark/Flow_aligned_surfaces/RESULTS.md,
 /// "Sampling fields"), or `std::nullopt` where the grid is not one that field can hold; the
 /// header needs VTK and the target `CGAL::Flow_aligned_surfaces_VTK`.
 ///

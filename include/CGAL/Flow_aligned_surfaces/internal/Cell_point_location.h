@@ -80,55 +80,43 @@ public:
       return true;
     };
     // The walk, else the hierarchy, nearest to the hint first.
-    const bool walked = w.has_hint && walk(s, x, hit, w);
-    const bool found = walked || (w.has_hint ? search_from(s, w.leaf, x, try_any) : search(s, 0, x, try_any));
+    const bool found =
+        w.has_hint ? walk(s, x, hit, w) || search_from(s, w.leaf, x, try_any) : search(s, 0, x, try_any);
     if (!found)
       return false;
-    // The walk inverts the hint's cell from the hint's parametric point.
-    answer_whatever_came_before(s, x, hit, walked && hit.cell == w.cell);
+    smallest_cell_on_shared_faces(s, x, hit);
     w.has_hint = true;
     w.cell = hit.cell;
     w.leaf = hit.leaf;
-    for (int a = 0; a < 3; ++a)
-      w.xi[a] = hit.xi[a];
     return true;
   }
 
   // Makes `hit`, a cell containing x, the answer that does not depend on the queries before it
   // (on the thread's hint): on a shared face the cell of smallest index among those containing
-  // x, and its map inverted from the reference cell's centre (the last bits of Newton's method
-  // depend on where it starts; `from_hint` says the hit started elsewhere).  Then a field gives
-  // the same sample at a point whatever order, thread or process asks for it.
-  static void answer_whatever_came_before(const Cell_point_location& s, const double* x, Hit& hit, bool from_hint)
+  // x.  Every inversion starts at the cell's parametric centre (the last bits of Newton's
+  // method depend on where it starts), so a field gives the same sample at a point whatever
+  // order, thread or process asks for it.
+  static void smallest_cell_on_shared_faces(const Cell_point_location& s, const double* x, Hit& hit)
   {
-    std::size_t cell = hit.cell, leaf = hit.leaf;
-    if (!in_reference_cell(s.cell_types[cell], hit.xi, -cell_interior_margin))
-      search(s, 0, x, [&](std::size_t c, std::size_t node) {
-        Hit other;
-        if (c < cell && try_cell(s, c, x, other)) {
-          cell = c;
-          leaf = node;
-        }
-        return false; // every cell whose box holds x
-      });
-    const bool started_at_centre = !from_hint || s.cell_types[cell] == VTK_cell_type::TETRA;
-    if (cell == hit.cell && started_at_centre)
+    if (in_reference_cell(s.cell_types[hit.cell], hit.xi, -cell_interior_margin))
       return;
-    Hit canonical;
-    if (try_cell(s, cell, x, canonical)) {
-      canonical.leaf = leaf;
-      hit = canonical;
-    }
+    search(s, 0, x, [&](std::size_t c, std::size_t node) {
+      Hit other;
+      if (c < hit.cell && try_cell(s, c, x, other)) {
+        other.leaf = node;
+        hit = other;
+      }
+      return false; // every cell whose box holds x
+    });
   }
 
   // Whether cell c contains x (its box first), with the hit.
-  static bool try_cell(const Cell_point_location& s, std::size_t c, const double* x, Hit& hit,
-                       const double* start = nullptr)
+  static bool try_cell(const Cell_point_location& s, std::size_t c, const double* x, Hit& hit)
   {
     double X[8][3], b[6];
     const int n = gather(s, c, X);
     cell_points_box(X, n, b);
-    if (!in_cell_box(b, x) || !invert_cell_map(s.cell_types[c], X, n, x, hit, start))
+    if (!in_cell_box(b, x) || !invert_cell_map(s.cell_types[c], X, n, x, hit))
       return false;
     hit.cell = c;
     return true;
@@ -183,7 +171,6 @@ private:
     std::uint64_t owner = 0; // the field storage's `id`; 0: none
     bool has_hint = false;
     std::size_t cell = 0, leaf = 0; // the hint: the last cell found, its leaf node
-    double xi[3];                   // where the last query was found in `cell`: Newton's start
     Slot slot[slots];
 
     void reset(std::uint64_t id)
@@ -481,11 +468,10 @@ private:
       near = (near - 1) / 2;
     if (!in_node_box(s, near, x))
       return false;
-    const double* start = w.xi;
     for (int step = 0;; ++step) {
       double X[8][3], xi[3], b[6];
       const int n = gather(s, c, X);
-      if (invert_cell_map(s.cell_types[c], X, n, x, hit, start, xi)) {
+      if (invert_cell_map(s.cell_types[c], X, n, x, hit, xi)) {
         cell_points_box(X, n, b);
         if (!in_cell_box(b, x)) // as try_cell(): points outside the cell's box are not in it
           return false;
@@ -507,7 +493,6 @@ private:
         return false;
       c = std::size_t(e.neighbour[f]);
       leaf = std::size_t(e.leaf[f]);
-      start = nullptr;
     }
   }
 };

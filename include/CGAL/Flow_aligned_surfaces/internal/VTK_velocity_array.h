@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Flow_aligned_surfaces developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The velocity array that VTK_flow_field_3 and make_unstructured_flow_field() take from a VTK
-// data set when no name is given.
+// How VTK_flow_field_3 and make_unstructured_flow_field() find their arrays in a VTK data set:
+// a named array in the point data, then in the cell data; the velocity when no name is given.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_VTK_VELOCITY_ARRAY_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_VTK_VELOCITY_ARRAY_H
@@ -11,6 +11,8 @@
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkPointData.h>
+
+#include <string>
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
@@ -28,6 +30,17 @@ inline vtkDataArray* first_velocity_array(vtkDataSet* data_set, bool& on_cells)
         return a;
       }
   return nullptr;
+}
+
+// The array named `name` in the point data of `data_set`, else in its cell data (`on_cells`);
+// null if neither has it.
+inline vtkDataArray* point_or_cell_array(vtkDataSet* data_set, const std::string& name, bool& on_cells)
+{
+  on_cells = false;
+  if (vtkDataArray* a = data_set->GetPointData()->GetArray(name.c_str()))
+    return a;
+  on_cells = true;
+  return data_set->GetCellData()->GetArray(name.c_str());
 }
 
 } // namespace internal

@@ -217,9 +217,9 @@ inline double cell_extent(const double (*X)[3], int n)
   return size;
 }
 
-// Where Newton's method starts: `start` if given (in the reference cell), else the cell's
-// parametric center.
-inline void newton_start(unsigned char type, const double* start, double (&xi)[3])
+// Where Newton's method starts: the cell's parametric centre, always, so that a point's
+// inversion in a cell gives the same bits whatever was inverted before.
+inline void newton_start(unsigned char type, double (&xi)[3])
 {
   switch (type) {
   case VTK_cell_type::TETRA:
@@ -236,9 +236,6 @@ inline void newton_start(unsigned char type, const double* start, double (&xi)[3
   default:
     xi[0] = xi[1] = xi[2] = 0.5;
   }
-  if (start != nullptr && type != VTK_cell_type::TETRA) // linear maps need no start
-    for (int a = 0; a < 3; ++a)
-      xi[a] = start[a];
 }
 
 // The determinant of a 3 x 3 matrix, expanded along its first row.
@@ -340,17 +337,16 @@ inline bool residual_at_rounding_level(unsigned char type, const double (*X)[3],
 }
 
 // Inverts the map x(xi) = p of the cell of type `type` with points X by Newton's method from
-// `start` (in the reference cell) or else from the cell's parametric center.  Returns whether
+// the cell's parametric center.  Returns whether
 // it converged and xi is in the reference cell, with the shape function values and xi in hit;
 // else, if `estimate` is not null, stores there the last iterate (exact where the iteration
 // converged outside the reference cell, NaN or huge where it diverged), for the walk.
 inline bool invert_cell_map(unsigned char type, const double (*X)[3], int n, const double* p,
-                            Cell_parametric_point& hit, const double* start = nullptr,
-                            double* estimate = nullptr)
+                            Cell_parametric_point& hit, double* estimate = nullptr)
 {
   const double size = cell_extent(X, n);
   double xi[3];
-  newton_start(type, start, xi);
+  newton_start(type, xi);
   auto reject = [&] {
     if (estimate != nullptr)
       for (int a = 0; a < 3; ++a)

@@ -54,7 +54,7 @@ using Polyline = std::vector<Point>;
 /// The velocity of a VTK data set as a `FlowField_3`: point data of an image is copied into a
 /// `Regular_grid_flow_field_3` (the same trilinear samples, 57-107 times faster than a cell
 /// locator), float point data of an unstructured grid of tetrahedra, hexahedra, wedges and
-/// pyramids into an `Unstructured_flow_field_3` (1.9-4 times faster; benchmark/.../RESULTS.md,
+/// pyramids into an `Unstructured_flow_field_3` (2-6 times faster; benchmark/.../RESULTS.md,
 /// "Sampling fields"), every other case samples the data set through `VTK_flow_field_3`.  Safe to
 /// call concurrently.
 class Velocity_field {
