@@ -2,7 +2,9 @@
 // the algorithms give the same results, bit for bit, as with the same field point by point,
 // and ask for every sample in batches: a stream surface around a cylinder (tears, lost and
 // inserted particles), the same surface with both directions, a path surface, the measures, the
-// parametrization, the growth across the flow, and the flow on a path surface.  The peer is the same field without `sample()`.
+// parametrization, the growth across the flow, and the flow on a path surface; a field in two
+// pieces that integrates ahead (integration_ahead.h) gives the same surfaces in fewer batches.
+// The peer is the same field without `sample()`.
 
 #include "test_kernel.h"
 
@@ -19,9 +21,11 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -84,6 +88,76 @@ struct Batched_unsteady {
     std::vector<std::optional<Vector_3>> answers;
     for (std::size_t i = 0; i < points.size(); ++i)
       answers.push_back(field(points[i], times[i]));
+    return answers;
+  }
+};
+
+// `Field` split into two pieces at the plane x = `cut`, as on two processes, with a batch
+// operation that integrates ahead: each piece integrates the waiting particles on while their
+// samples lie in it alone (farther than `margin` from the cut), as a distributed field's ranks do.
+template <class Field, bool unsteady>
+struct Two_pieces {
+  Field field;
+  double cut = 0, margin = 1e-3;
+  std::shared_ptr<Counts> counts = std::make_shared<Counts>();
+  std::shared_ptr<std::size_t> along_paths = std::make_shared<std::size_t>(0); // samples ahead
+
+  using Answer = std::optional<Vector_3>;
+  Answer at(const Point_3& p, double t) const
+  {
+    if constexpr (unsteady)
+      return field(p, t);
+    else
+      return field(p);
+  }
+  template <bool u = unsteady, std::enable_if_t<!u, int> = 0>
+  Answer operator()(const Point_3& p) const
+  {
+    ++counts->single;
+    return field(p);
+  }
+  template <bool u = unsteady, std::enable_if_t<u, int> = 0>
+  Answer operator()(const Point_3& p, double t) const
+  {
+    ++counts->single;
+    return field(p, t);
+  }
+  template <bool u = unsteady, std::enable_if_t<!u, int> = 0>
+  std::vector<Answer> sample(const std::vector<Point_3>& points) const
+  {
+    return sample(points, std::vector<double>(points.size(), 0.));
+  }
+  std::vector<Answer> sample(const std::vector<Point_3>& points, const std::vector<double>& times) const
+  {
+    std::vector<FAS::internal::Sample_ahead<Answer>> none;
+    return sample(points, times, FAS::internal::Integration_ahead(), none);
+  }
+  template <bool u = unsteady, std::enable_if_t<!u, int> = 0>
+  std::vector<Answer> sample(const std::vector<Point_3>& points,
+                             const FAS::internal::Integration_ahead& ahead,
+                             std::vector<FAS::internal::Sample_ahead<Answer>>& along) const
+  {
+    return sample(points, std::vector<double>(points.size(), 0.), ahead, along);
+  }
+  std::vector<Answer> sample(const std::vector<Point_3>& points, const std::vector<double>& times,
+                             const FAS::internal::Integration_ahead& ahead,
+                             std::vector<FAS::internal::Sample_ahead<Answer>>& along) const
+  {
+    ++counts->batches;
+    counts->points += points.size();
+    std::vector<Answer> answers;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      answers.push_back(at(points[i], times[i]));
+    // Through the numbers a process would receive.
+    const auto received = FAS::internal::Integration_ahead::from_numbers(ahead.to_numbers());
+    for (double side : {-1., 1.})
+      FAS::internal::integrate_ahead<Answer>(
+          received, [&](const Eigen::Vector3d& x, double t) { return at(Point_3(x[0], x[1], x[2]), t); },
+          [&](const Eigen::Vector3d& x) { return side * (x[0] - cut) > margin; },
+          [&](FAS::internal::Sample_ahead<Answer> a) {
+            ++*along_paths;
+            along.push_back(std::move(a));
+          });
     return answers;
   }
 };
@@ -201,7 +275,8 @@ TEST(BatchedSampling, BothDirectionsInALinearFlowAreTheSameBitForBit)
   const Batched<FAS::Linear_flow<K>> batched{linear};
   const Polyline seed = {Point_3(0.2, 0.1, 1.0), Point_3(0.4, 0.5, 0.8)};
   const auto np = FAS::parameters::integration_direction(
-      FAS::Integration_direction::BOTH, FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(linear_time)));
+      FAS::Integration_direction::BOTH,
+      FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(linear_time)));
   const Surface one_by_one(linear, seed, np);
   const Surface in_batches(batched, seed, np);
   expect_same_surface(one_by_one, in_batches);
@@ -300,6 +375,82 @@ TEST(BatchedSampling, ThePathSurfaceFlowPassesItsBatchesOn)
   EXPECT_EQ(batched.counts->batches, 1u);
   EXPECT_EQ(batched.counts->single, 0u);
   EXPECT_EQ(batched.counts->points, tm.number_of_faces());
+}
+
+TEST(BatchedSampling, IntegratingAheadInTwoPiecesIsTheSameBitForBitInFewerBatches)
+{
+  // The cylinder's surface of the first test, its flow in two pieces cut across the flow
+  // behind the cylinder: every particle crosses from one piece into the other.
+  const FAS::Cylinder_potential_flow<K> cylinder(1.0, 1.0);
+  const Batched<FAS::Cylinder_potential_flow<K>> batched{cylinder};
+  const Two_pieces<FAS::Cylinder_potential_flow<K>, false> pieces{cylinder, 1.5};
+  const Polyline seed = {Point_3(-3, -0.6, 0.2), Point_3(-3, 0.6, 0.2)};
+  const auto np = FAS::parameters::front_spacing(
+      0.05,
+      FAS::parameters::max_time(cylinder_time, FAS::parameters::max_number_of_time_lines(std::size_t(1000))));
+  const Surface one_by_one(cylinder, seed, np);
+  const Surface in_batches(batched, seed, np);
+  const Surface ahead(pieces, seed, np);
+  expect_same_surface(one_by_one, ahead);
+  expect_batched(*pieces.counts, ahead);
+  EXPECT_GE(ahead.report.number_of_inserted_particles, 1u);
+  EXPECT_GT(*pieces.along_paths, pieces.counts->points);
+  // A time line costs the stages of a step where a particle crosses the cut, not a round per
+  // stage of every path from the seed.
+  EXPECT_LE(5 * ahead.report.number_of_sample_batches, in_batches.report.number_of_sample_batches);
+  std::cout << "cylinder in two pieces: " << ahead.report.number_of_sample_batches << " batches against "
+            << in_batches.report.number_of_sample_batches << " over " << ahead.report.number_of_time_lines
+            << " time lines\n";
+}
+
+TEST(BatchedSampling, IntegratingAheadBothWaysAndOnAPathSurfaceIsTheSameBitForBit)
+{
+  const FAS::Linear_flow<K> linear;
+  const Two_pieces<FAS::Linear_flow<K>, false> pieces{linear, 0.3};
+  const Polyline seed = {Point_3(0.2, 0.1, 1.0), Point_3(0.4, 0.5, 0.8)};
+  const auto np = FAS::parameters::integration_direction(
+      FAS::Integration_direction::BOTH,
+      FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(linear_time)));
+  expect_same_surface(Surface(linear, seed, np), Surface(pieces, seed, np));
+  EXPECT_GT(*pieces.along_paths, 0u);
+
+  const Vector_3 U0(1, 0, 0), U1(1, 2, 0.5);
+  using Flow = FAS::Unsteady_flow_field_3<FAS::Uniform_flow<K>>;
+  const Flow flow({0., 2.}, {FAS::Uniform_flow<K>(U0), FAS::Uniform_flow<K>(U1)});
+  const Two_pieces<Flow, true> unsteady_pieces{flow, 0.4};
+  const Polyline path_seed = {Point_3(0, 0, 0), Point_3(0, 0, 1)};
+  const auto path_np = FAS::parameters::front_spacing(
+      0.1, FAS::parameters::start_time(0.5, FAS::parameters::time_line_step(0.1)));
+  const Surface path(flow, path_seed, path_np), path_ahead(unsteady_pieces, path_seed, path_np);
+  expect_same_surface(path, path_ahead);
+  expect_batched(*unsteady_pieces.counts, path_ahead);
+  EXPECT_GT(*unsteady_pieces.along_paths, 0u);
+}
+
+TEST(BatchedSampling, AnIntegratorGoesOnFromItsNumbers)
+{
+  // Written and read back, an integrator takes the same steps as the one that wrote it.
+  using Field = std::function<std::optional<Eigen::Vector3d>(const Eigen::Vector3d&, double)>;
+  const Field swirl = [](const Eigen::Vector3d& x, double t) {
+    return std::optional<Eigen::Vector3d>(Eigen::Vector3d(-x[1], x[0], 0.1 + t));
+  };
+  using Integrator = FAS::internal::Dormand_prince_integrator<Field>;
+  Integrator a(swirl, Eigen::Vector3d(1, 0, 0), 0.3, -1);
+  for (int i = 0; i < 3; ++i)
+    ASSERT_EQ(a.step(), FAS::internal::Step_result::ACCEPTED);
+  std::vector<double> numbers(Integrator::state_size);
+  a.write_state(numbers.data());
+  Integrator b(swirl, numbers.data());
+  for (int i = 0; i < 5; ++i) {
+    ASSERT_EQ(a.step(), b.step());
+    ASSERT_EQ(a.position(), b.position());
+    ASSERT_EQ(a.parameter(), b.parameter());
+    ASSERT_EQ(a.time(), b.time());
+    ASSERT_EQ(a.dense_output(a.parameter() - 1e-3), b.dense_output(b.parameter() - 1e-3));
+  }
+  EXPECT_EQ(a.number_of_evaluations(), b.number_of_evaluations());
+  EXPECT_THROW(FAS::internal::Integration_ahead::from_numbers(std::vector<double>(14, 0.)),
+               std::invalid_argument);
 }
 
 // A batch operation that answers a point less than asked.

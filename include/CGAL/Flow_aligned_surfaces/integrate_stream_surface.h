@@ -22,6 +22,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/Dormand_prince_integrator.h>
 #include <CGAL/Flow_aligned_surfaces/internal/batched_sampling.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
+#include <CGAL/Flow_aligned_surfaces/internal/integration_ahead.h>
 #include <CGAL/Flow_aligned_surfaces/internal/progress_callback.h>
 #include <CGAL/Flow_aligned_surfaces/parameters.h>
 
@@ -164,6 +165,8 @@ struct Front_field {
   static constexpr bool is_unsteady = std::is_invocable_v<const FlowField&, const Point_3&, double>;
   static constexpr bool is_batched = is_unsteady ? has_unsteady_batch_sampling_v<FlowField, Point_3>
                                                  : has_batch_sampling_v<FlowField, Point_3>;
+  using Answer = typename Field_answer<FlowField, Point_3, is_unsteady>::type;
+  static constexpr bool integrates_ahead = Integrates_ahead<FlowField, Point_3, Answer, is_unsteady>::value;
 
   Value operator()(const Eigen::Vector3d& x, double t) const
   {
@@ -180,6 +183,16 @@ struct Front_field {
   /// The values at the points (x, t) in one batch of the field.
   std::vector<Value> operator()(const std::vector<std::pair<Eigen::Vector3d, double>>& points) const
   {
+    return (*this)(points, Integration_ahead(), [](const Eigen::Vector3d&, double, const Value&) {});
+  }
+
+  /// The same; a field that integrates ahead
+  /// (integration_ahead.h) is also told of the particles `ahead`, and `add(x, t, value)` is
+  /// called for each sample it took along their paths.
+  template <class Add>
+  std::vector<Value> operator()(const std::vector<std::pair<Eigen::Vector3d, double>>& points,
+                                const Integration_ahead& ahead, const Add& add) const
+  {
     std::vector<Point_3> ps;
     std::vector<double> times;
     for (const auto& [x, t] : points) {
@@ -187,7 +200,16 @@ struct Front_field {
       times.push_back(t);
     }
     std::vector<Flow_sample> samples;
-    if constexpr (is_unsteady)
+    if constexpr (integrates_ahead) {
+      std::vector<Sample_ahead<Answer>> along;
+      if constexpr (is_unsteady)
+        samples = classified(field->sample(ps, times, ahead, along), ps.size());
+      else
+        samples = classified(field->sample(ps, ahead, along), ps.size());
+      for (const Sample_ahead<Answer>& a : along)
+        add(a.x, a.t, value(classified(a.answer)));
+    }
+    else if constexpr (is_unsteady)
       samples = sample_flow_at(*field, ps, times);
     else
       samples = sample_flow_at(*field, ps);
@@ -204,13 +226,21 @@ private:
     return Point_3{FT(x[0]), FT(x[1]), FT(x[2])};
   }
 
-  Value value(const Flow_sample& s) const
+  Value value(const Flow_sample& s) const { return integrand_value(s, normalize); }
+
+  static Flow_sample classified(const Answer& answer)
   {
-    if (s.kind == Sample_kind::OUTSIDE || s.kind == Sample_kind::INVALID)
-      return std::nullopt;
-    if (s.kind == Sample_kind::ZERO)
-      return Eigen::Vector3d::Zero();
-    return normalize ? s.direction : s.velocity;
+    Flow_sample s = unclassified_sample(answer);
+    classify_sample(s);
+    return s;
+  }
+  static std::vector<Flow_sample> classified(const std::vector<Answer>& answers, std::size_t asked)
+  {
+    check_batch_size(answers, asked);
+    std::vector<Flow_sample> samples;
+    for (const Answer& a : answers)
+      samples.push_back(classified(a));
+    return samples;
   }
 };
 
@@ -494,12 +524,16 @@ private:
     std::vector<std::optional<Particle>> released(us.size());
     std::vector<std::optional<Reach>> reach(us.size());
     std::vector<char> ok(us.size(), 0);
-    run_tasks(us.size(), [&](std::size_t i) {
-      if (!released[i])
-        released[i].emplace(us[i], Integrator(m_field, m_seed(us[i]), m_s.t0, m_s.direction, m_s.tolerances));
-      if (released[i]->integrator.is_start_inside())
-        ok[i] = advance(*released[i], reach[i]);
-    });
+    run_tasks(
+        us.size(),
+        [&](std::size_t i) {
+          if (!released[i])
+            released[i].emplace(us[i],
+                                Integrator(m_field, m_seed(us[i]), m_s.t0, m_s.direction, m_s.tolerances));
+          if (released[i]->integrator.is_start_inside())
+            ok[i] = advance(*released[i], reach[i]);
+        },
+        [&](std::size_t i, Integration_ahead& ahead) { add_ahead(released[i], us[i], reach[i], ahead); });
     for (std::size_t i = 0; i < us.size(); ++i)
       if (!ok[i])
         released[i].reset();
@@ -511,28 +545,69 @@ private:
   {
     std::vector<std::optional<Reach>> reach(ps.size());
     std::vector<char> ok(ps.size(), 0);
-    run_tasks(ps.size(), [&](std::size_t i) { ok[i] = advance(*ps[i], reach[i]); });
+    run_tasks(
+        ps.size(), [&](std::size_t i) { ok[i] = advance(*ps[i], reach[i]); },
+        [&](std::size_t i, Integration_ahead& ahead) {
+          if (!reach[i])
+            ahead.add_state(ps[i]->integrator);
+        });
     return ok;
+  }
+
+  // Adds a released particle (at `u` on the seed, not made yet when `p` is empty) to `ahead`
+  // while it has not reached the time line.
+  void add_ahead(const std::optional<Particle>& p, double u, const std::optional<Reach>& reach,
+                 Integration_ahead& ahead) const
+  {
+    if (reach)
+      return;
+    if (p)
+      ahead.add_state(p->integrator);
+    else
+      ahead.add_start(m_seed(u));
   }
 
   // Runs `task(i)` for i in [0, n).  With a field that answers batches, the tasks run in rounds,
   // one batch of samples per round (batched_sampling.h); a task must then commit its progress
-  // only where it can be resumed: `reach` and the integrators' whole steps.
-  template <class Task>
-  void run_tasks(std::size_t n, const Task& task)
+  // only where it can be resumed: `reach` and the integrators' whole steps.  A field that
+  // integrates ahead is told with each batch where the waiting tasks' particles stand
+  // (`add_ahead(i, ahead)`), and its samples along their paths are replayed too.
+  template <class Task, class Add_ahead>
+  void run_tasks(std::size_t n, const Task& task, const Add_ahead& add_ahead)
   {
     if constexpr (!Field::is_batched) {
       for (std::size_t i = 0; i < n; ++i)
         task(i);
     }
     else {
-      m_report.number_of_sample_batches += run_in_rounds(n, m_replay, task, [this](const auto& points) {
+      auto answer = [&](const auto& points, const std::vector<std::size_t>& waiting) {
+        Integration_ahead ahead = integration_ahead();
+        if constexpr (Field::integrates_ahead)
+          for (std::size_t i : waiting)
+            add_ahead(i, ahead);
         auto field = m_field;
         field.replay = nullptr;
-        return field(points);
-      });
+        return field(points, ahead,
+                     [this](const Eigen::Vector3d& x, double t, std::optional<Eigen::Vector3d> v) {
+                       m_replay.add(x, t, std::move(v));
+                     });
+      };
+      m_report.number_of_sample_batches += run_in_rounds(n, m_replay, task, answer);
       m_replay.clear();
     }
+  }
+
+  // The settings of the particles integrated ahead to the current time line.
+  Integration_ahead integration_ahead() const
+  {
+    Integration_ahead ahead;
+    ahead.t0 = m_s.t0;
+    ahead.direction = m_s.direction;
+    ahead.normalize = m_field.normalize;
+    ahead.target = m_parameter;
+    ahead.max_steps = double(m_s.max_steps);
+    ahead.tolerances = m_s.tolerances;
+    return ahead;
   }
 
   // Advances `p` to the current time line, or to where it leaves the domain before it (then
@@ -606,14 +681,17 @@ private:
     std::vector<std::optional<Particle>> particles(n + 1);
     std::vector<char> inside(n + 1, 0), moving(n + 1, 0);
     std::vector<std::optional<Reach>> reach(n + 1);
-    run_tasks(n + 1, [&](std::size_t i) {
-      const double u = us[i];
-      if (!particles[i])
-        particles[i].emplace(u, Integrator(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances));
-      inside[i] = particles[i]->integrator.is_start_inside();
-      if (inside[i])
-        moving[i] = advance(*particles[i], reach[i]); // τ = 0: the flow direction at the seed point
-    });
+    run_tasks(
+        n + 1,
+        [&](std::size_t i) {
+          const double u = us[i];
+          if (!particles[i])
+            particles[i].emplace(u, Integrator(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances));
+          inside[i] = particles[i]->integrator.is_start_inside();
+          if (inside[i])
+            moving[i] = advance(*particles[i], reach[i]); // τ = 0: the flow direction at the seed point
+        },
+        [&](std::size_t i, Integration_ahead& ahead) { add_ahead(particles[i], us[i], reach[i], ahead); });
     std::vector<Particle> piece;
     for (std::size_t i = 0; i <= n; ++i) {
       if (moving[i]) {
@@ -755,7 +833,8 @@ private:
   }
 
   // The piece's strip to the new time line, which its particles reached where `reached` says.
-  void advance_piece(std::vector<Particle>& piece, const char* reached, std::vector<std::vector<Particle>>& next)
+  void advance_piece(std::vector<Particle>& piece, const char* reached,
+                     std::vector<std::vector<Particle>>& next)
   {
     std::vector<std::pair<double, std::size_t>> old_line; // (u, node) of the last meshed time line
     for (const Particle& p : piece)
@@ -847,7 +926,8 @@ private:
   // The triangle from an end particle's old node to its new one and the node where its
   // neighbour left the domain: a fan around that node, over the time lines until the particle
   // leaves too or is more than 2h away, fills the notch between the two exits.
-  void close_towards_boundary_neighbours(std::vector<Particle>& piece, const std::vector<std::size_t>& old_chain)
+  void close_towards_boundary_neighbours(std::vector<Particle>& piece,
+                                         const std::vector<std::size_t>& old_chain)
   {
     for (std::size_t end = 0; end < std::min<std::size_t>(piece.size(), 2); ++end) {
       Particle* p = end == 0 ? &piece.front() : &piece.back();
@@ -870,7 +950,8 @@ private:
   // The runs of particles of `piece` that did not leave the domain go on; their ends next to a
   // particle that left remember where it left.  A run needs two particles, or one that fans out
   // from such an exit.
-  void continue_without_boundary_particles(std::vector<Particle>&& piece, std::vector<std::vector<Particle>>& next)
+  void continue_without_boundary_particles(std::vector<Particle>&& piece,
+                                           std::vector<std::vector<Particle>>& next)
   {
     const auto goes_on = [](const std::vector<Particle>& run) {
       return run.size() >= 2 || (run.size() == 1 && run.front().boundary_neighbour);

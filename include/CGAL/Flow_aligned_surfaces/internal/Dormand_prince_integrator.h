@@ -28,6 +28,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 namespace CGAL {
 namespace Flow_aligned_surfaces {
@@ -42,7 +43,7 @@ struct Integration_tolerances {
   /// the τ no step goes beyond (the end of the integration): a step is shortened to end there,
   /// so that no stage samples the field after it (an unsteady field may end there)
   double max_parameter = std::numeric_limits<double>::infinity();
-  double min_step = 1e-14;                                   ///< smallest step in τ before `STEP_UNDERFLOW`
+  double min_step = 1e-14; ///< smallest step in τ before `STEP_UNDERFLOW`
   /// the distance (along the path) within which the exit point is located when the line
   /// leaves the domain; 0: `absolute + relative |x|` at the current point
   double boundary = 0;
@@ -72,6 +73,24 @@ public:
       return;
     m_stagnation_speed = m_tol.stagnation_speed >= 0 ? m_tol.stagnation_speed : 1e-10 * m_k1.norm();
     m_dense[0] = m_x;
+  }
+
+  /// The number of values `write_state()` writes.
+  static constexpr std::size_t state_size = 44;
+
+  /// The integrator that `write_state()` wrote into `state` (`state_size` values), sampling `f`:
+  /// it steps exactly as the one that wrote it, for integrating on where another process holds
+  /// the field.
+  Dormand_prince_integrator(const Field& f, const double* state) : m_f(f)
+  {
+    for_each_state_value(*this, [&state](auto& v) { v = static_cast<std::decay_t<decltype(v)>>(*state++); });
+  }
+
+  /// Writes everything but the field into `state` (`state_size` values, the exact bits; the
+  /// counters are below 2^53).
+  void write_state(double* state) const
+  {
+    for_each_state_value(*this, [&state](const auto& v) { *state++ = static_cast<double>(v); });
   }
 
   /// whether f(x0, t0) exists; when not, `step()` must not be called.
@@ -309,7 +328,8 @@ private:
     m_x_prev = m_x;
     m_tau_prev = m_tau;
     m_x = t.x;
-    m_tau = t.h == m_tol.max_parameter - m_tau ? m_tol.max_parameter : m_tau + t.h; // lands on the end exactly
+    m_tau =
+        t.h == m_tol.max_parameter - m_tau ? m_tol.max_parameter : m_tau + t.h; // lands on the end exactly
     m_k1 = t.k[6];
     ++m_number_of_accepted;
   }
@@ -339,6 +359,29 @@ private:
     const double der12 = std::max(der2, std::sqrt(dnf));
     const double h1 = der12 <= 1e-15 ? std::max(1e-6, 1e-3 * h) : std::pow(0.01 / der12, 0.2);
     return std::max(std::min({100. * h, h1, m_tol.max_step}), m_tol.min_step);
+  }
+
+  // Calls `fn` on every member but the field, in one order for writing and reading.
+  template <class Self, class Fn>
+  static void for_each_state_value(Self& self, const Fn& fn)
+  {
+    fn(self.m_t0);
+    fn(self.m_sigma);
+    for (auto* v : {&self.m_tol.relative, &self.m_tol.absolute, &self.m_tol.initial_step,
+                    &self.m_tol.max_step, &self.m_tol.max_parameter, &self.m_tol.min_step,
+                    &self.m_tol.boundary, &self.m_tol.stagnation_speed})
+      fn(*v);
+    fn(self.m_start_inside);
+    fn(self.m_stagnation_speed);
+    for (auto* x : {&self.m_x, &self.m_x_prev, &self.m_k1, &self.m_dense[0], &self.m_dense[1],
+                    &self.m_dense[2], &self.m_dense[3], &self.m_dense[4]})
+      for (int i = 0; i < 3; ++i)
+        fn((*x)[i]);
+    for (auto* v : {&self.m_tau, &self.m_tau_prev, &self.m_h, &self.m_error_prev})
+      fn(*v);
+    fn(self.m_confirming);
+    for (auto* n : {&self.m_number_of_accepted, &self.m_number_of_rejected, &self.m_number_of_evaluations})
+      fn(*n);
   }
 
   Field m_f;

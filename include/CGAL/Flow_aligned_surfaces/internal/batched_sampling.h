@@ -174,8 +174,10 @@ private:
 
 /// Runs tasks 0 … n-1 to their end: `resume(i)` runs task i on from where it last committed its
 /// progress, and either ends it or throws `Sample_not_ready` (from `samples.at()`).  After each
-/// round over the unfinished tasks, `answer(missing)` gives the values at the points they asked
-/// for, in one batch, and they are added to `samples`.  Returns the number of batches.
+/// round over the unfinished tasks, `answer(missing, waiting)` gives the values at the points they
+/// asked for, in one batch, and they are added to `samples`; `waiting` are the tasks that wait
+/// (an answer may add more samples along their way: integration_ahead.h).  Returns the number of
+/// batches.
 template <class Value, class Resume, class Answer>
 std::size_t run_in_rounds(std::size_t n, Replay_samples<Value>& samples, const Resume& resume,
                           const Answer& answer)
@@ -198,7 +200,7 @@ std::size_t run_in_rounds(std::size_t n, Replay_samples<Value>& samples, const R
     const std::vector<std::pair<Eigen::Vector3d, double>> missing = samples.take_missing();
     if (missing.empty())
       throw std::logic_error("run_in_rounds: a task waits for a sample it did not ask for");
-    std::vector<Value> values = answer(missing);
+    std::vector<Value> values = answer(missing, still);
     check_batch_size(values, missing.size());
     for (std::size_t k = 0; k < missing.size(); ++k)
       samples.add(missing[k].first, missing[k].second, std::move(values[k]));

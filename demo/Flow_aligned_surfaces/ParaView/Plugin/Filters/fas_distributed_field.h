@@ -15,6 +15,11 @@
 // rank 0 says it has finished (`serve()`), so they take part in exactly as many exchanges as
 // rank 0 needs; a rank that fails sends its reason instead of hanging the others.
 //
+// A stream or path surface's rounds also tell where their waiting particles stand
+// (integration_ahead.h): every rank integrates them on while it alone decides their samples
+// (no other piece's bounds hold the point), and rank 0 gets those samples with the round's, so
+// a path costs a round where it crosses from piece to piece, not one per Runge-Kutta stage.
+//
 // A temporal input is sampled at a time: each rank interpolates its piece's steps around it
 // linearly in time (Unsteady_flow_field_3), and rank 0 sends the time with every exchange.
 //
@@ -27,10 +32,12 @@
 
 #include <CGAL/Flow_aligned_surfaces/Time_slice_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/internal/integration_ahead.h>
 
 #include <vtkAppendPolyData.h>
 #include <vtkCleanPolyData.h>
 #include <vtkCommunicator.h>
+#include <vtkDoubleArray.h>
 #include <vtkMultiProcessController.h>
 #include <vtkMultiProcessStream.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
@@ -39,7 +46,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -74,6 +83,17 @@ struct Distributed_input {
 /// in time.
 using Piece_field = FAS::Time_slice_flow_field_3<FAS::Unsteady_flow_field_3<Velocity_field>>;
 
+/// The time at which the ranks sample integrating ahead: NaN for each sample's own time.
+constexpr double unsteady_time = std::numeric_limits<double>::quiet_NaN();
+
+/// What a batch asks of the ranks besides its points: the particles to integrate ahead, the time
+/// at which a steady field samples them (or `unsteady_time`) and where their samples go.
+struct Ahead_request {
+  const FAS::internal::Integration_ahead* ahead = nullptr;
+  double time = unsteady_time;
+  std::vector<FAS::internal::Sample_ahead<std::optional<Vector>>>* along = nullptr;
+};
+
 /// A `FlowField_3` over a data set whose pieces live on the ranks of the global controller.  On
 /// one process it is the input's own field.  On several, only rank 0 samples it: at the points
 /// given to `probe()` beforehand (looked up by the exact point), a batch (`sample()`) in one
@@ -81,6 +101,8 @@ using Piece_field = FAS::Time_slice_flow_field_3<FAS::Unsteady_flow_field_3<Velo
 class Distributed_velocity_field {
 public:
   using Sample = std::optional<Vector>;
+  using Integration_ahead = FAS::internal::Integration_ahead;
+  using Sample_ahead = FAS::internal::Sample_ahead<Sample>;
 
   Distributed_velocity_field() : m_state(std::make_shared<State>()) {}
 
@@ -196,7 +218,8 @@ public:
 private:
   // Rank 0: the samples at `points`, from every rank (collective: the other ranks are in
   // `serve()`).  Throws std::runtime_error when a rank failed to sample its piece.
-  std::vector<Sample> exchange(const std::vector<Point>& points, const std::vector<double>& times) const
+  std::vector<Sample> exchange(const std::vector<Point>& points, const std::vector<double>& times,
+    const Ahead_request& request = {}) const
   {
     State& s = *m_state;
     const int ranks = s.controller->GetNumberOfProcesses();
@@ -208,20 +231,20 @@ private:
         coordinates[4 * i + std::size_t(d)] = points[i][d];
       coordinates[4 * i + 3] = times[i];
     }
-    send(PROBE, coordinates);
+    const std::vector<double> ahead =
+      request.ahead != nullptr && !request.ahead->empty() ? request.ahead->to_numbers() : std::vector<double>();
+    send(PROBE, coordinates, ahead, request.time);
     const std::vector<double> mine = sample_local(coordinates, ranks, 0);
     std::vector<double> total(mine.size());
     s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
+    if (!ahead.empty())
+      gather_ahead(ahead, request.time, request.along);
 
     ++s.exchanges;
     const std::size_t n = points.size();
     std::vector<Sample> samples(n);
     for (std::size_t i = 0; i < n; ++i)
-    {
-      const double* t = &total[4 * i];
-      if (t[3] > 0)
-        samples[i] = Vector(t[0] / t[3], t[1] / t[3], t[2] / t[3]);
-    }
+      samples[i] = combined(&total[4 * i]);
     s.failed_ranks = int(total[4 * n]);
     s.supplying_ranks = 0;
     for (int r = 0; r < ranks; ++r)
@@ -251,12 +274,15 @@ public:
     const int rank = s.controller->GetLocalProcessId();
     for (;;)
     {
-      std::vector<double> coordinates;
-      if (receive(coordinates) != PROBE)
+      std::vector<double> coordinates, ahead;
+      double ahead_time = unsteady_time;
+      if (receive(coordinates, ahead, ahead_time) != PROBE)
         return;
       const std::vector<double> mine = sample_local(coordinates, ranks, rank);
       std::vector<double> total(mine.size());
       s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
+      if (!ahead.empty())
+        gather_ahead(ahead, ahead_time, nullptr);
     }
   }
 
@@ -291,6 +317,22 @@ public:
     return batch(points, times, false);
   }
 
+  /// `sample(points)`, integrating the particles `ahead` on where a rank alone decides their
+  /// samples, which are put in `along` (integration_ahead.h).
+  std::vector<Sample> sample(const std::vector<Point>& points, const Integration_ahead& ahead,
+    std::vector<Sample_ahead>& along) const
+  {
+    const double t = m_state->time;
+    return batch(points, std::vector<double>(points.size(), t), true, Ahead_request{ &ahead, t, &along });
+  }
+
+  /// `sample(points, times)`, integrating the particles `ahead` on in the same way.
+  std::vector<Sample> sample(const std::vector<Point>& points, const std::vector<double>& times,
+    const Integration_ahead& ahead, std::vector<Sample_ahead>& along) const
+  {
+    return batch(points, times, false, Ahead_request{ &ahead, unsteady_time, &along });
+  }
+
   /// The velocity at `p` at time `t` (within the times of the steps of the update), for an
   /// algorithm that samples the flow at times of its own (a path surface): the input's own field
   /// on one process; on rank 0 of several, a sample exchanged for `p` and `t` alone (the
@@ -313,7 +355,8 @@ public:
 private:
   // The samples at (points[i], times[i]); with `probed`, those probed before at the current time
   // are taken from the probes.  On rank 0 of several the others come in one exchange.
-  std::vector<Sample> batch(const std::vector<Point>& points, const std::vector<double>& times, bool probed) const
+  std::vector<Sample> batch(const std::vector<Point>& points, const std::vector<double>& times, bool probed,
+    const Ahead_request& request = {}) const
   {
     State& s = *m_state;
     std::vector<Sample> samples(points.size());
@@ -343,7 +386,7 @@ private:
       return samples;
     if (std::this_thread::get_id() != s.owner)
       throw std::logic_error("the field was asked for a batch in a parallel loop");
-    const std::vector<Sample> answers = exchange(asked_points, asked_times);
+    const std::vector<Sample> answers = exchange(asked_points, asked_times, request);
     for (std::size_t k = 0; k < asked.size(); ++k)
       samples[asked[k]] = answers[k];
     return samples;
@@ -382,6 +425,7 @@ private:
       mine << b;
     std::vector<vtkMultiProcessStream> all;
     s.controller->Gather(mine, all, 0);
+    share_piece_bounds(local_bounds);
     input.ranks = s.controller->GetNumberOfProcesses();
     for (std::size_t r = 0; r < all.size(); ++r)
     {
@@ -410,35 +454,71 @@ private:
   }
 
 
+  // Every rank learns the bounds of every rank's piece (collective), for `decides_here()`; the
+  // margin is 1e-6 of the largest extent of them all.
+  void share_piece_bounds(const std::array<double, 6>& local_bounds)
+  {
+    State& s = *m_state;
+    const int ranks = s.controller->GetNumberOfProcesses();
+    std::vector<double> all(6 * std::size_t(ranks));
+    s.controller->AllGather(local_bounds.data(), all.data(), 6);
+    s.piece_bounds.assign(std::size_t(ranks), std::array<double, 6>());
+    std::array<double, 6> whole{ { 1, -1, 1, -1, 1, -1 } };
+    for (std::size_t r = 0; r < s.piece_bounds.size(); ++r)
+    {
+      std::copy_n(all.begin() + std::ptrdiff_t(6 * r), 6, s.piece_bounds[r].begin());
+      const std::array<double, 6>& b = s.piece_bounds[r];
+      if (b[0] > b[1])
+        continue;
+      const bool first = whole[0] > whole[1];
+      for (int d = 0; d < 3; ++d)
+      {
+        whole[2 * d] = first ? b[2 * d] : std::min(whole[2 * d], b[2 * d]);
+        whole[2 * d + 1] = first ? b[2 * d + 1] : std::max(whole[2 * d + 1], b[2 * d + 1]);
+      }
+    }
+    s.bounds_margin = 0;
+    for (int d = 0; d < 3 && whole[0] <= whole[1]; ++d)
+      s.bounds_margin = std::max(s.bounds_margin, 1e-6 * (whole[2 * d + 1] - whole[2 * d]));
+  }
+
   enum Command
   {
     FINISH = 0,
     PROBE = 1
   };
 
-  // The first broadcast of an exchange: the command, the number of points and the (x, y, z, t)
-  // of the first `inline_points` of them, so that a small exchange (a Runge-Kutta stage of a few
-  // particles) costs one broadcast and one reduction; the other points follow in a second
-  // broadcast.
+  // The first broadcast of an exchange: the command, the number of points, the number of values
+  // of the particles to integrate ahead and the time of their samples, and the (x, y, z, t) of
+  // the first `inline_points` points, so that a small exchange (a Runge-Kutta stage of a few
+  // particles) costs one broadcast and one reduction; the other points, then the particles,
+  // follow in broadcasts of their own.
   static constexpr std::size_t inline_points = 32;
-  using Message = std::array<double, 2 + 4 * inline_points>;
+  static constexpr std::size_t header_size = 4;
+  using Message = std::array<double, header_size + 4 * inline_points>;
 
-  // Rank 0: broadcasts `command` and `coordinates` (4 per point).
-  void send(Command command, const std::vector<double>& coordinates) const
+  // Rank 0: broadcasts `command`, `coordinates` (4 per point) and `ahead` (Integration_ahead's
+  // numbers, sampled at `ahead_time`).
+  void send(Command command, const std::vector<double>& coordinates, const std::vector<double>& ahead = {},
+    double ahead_time = unsteady_time) const
   {
     Message first{};
     first[0] = command;
     first[1] = double(coordinates.size() / 4);
+    first[2] = double(ahead.size());
+    first[3] = ahead_time;
     const std::size_t inline_values = std::min(coordinates.size(), 4 * inline_points);
-    std::copy_n(coordinates.begin(), inline_values, first.begin() + 2);
+    std::copy_n(coordinates.begin(), inline_values, first.begin() + header_size);
     m_state->controller->Broadcast(first.data(), vtkIdType(first.size()), 0);
     if (coordinates.size() > inline_values)
       m_state->controller->Broadcast(const_cast<double*>(coordinates.data()) + inline_values,
                                      vtkIdType(coordinates.size() - inline_values), 0);
+    if (!ahead.empty())
+      m_state->controller->Broadcast(const_cast<double*>(ahead.data()), vtkIdType(ahead.size()), 0);
   }
 
-  // Other ranks: receives what `send()` broadcasts into `coordinates`; returns the command.
-  Command receive(std::vector<double>& coordinates) const
+  // Other ranks: receives what `send()` broadcasts; returns the command.
+  Command receive(std::vector<double>& coordinates, std::vector<double>& ahead, double& ahead_time) const
   {
     Message first{};
     m_state->controller->Broadcast(first.data(), vtkIdType(first.size()), 0);
@@ -446,11 +526,91 @@ private:
       return FINISH;
     coordinates.assign(4 * std::size_t(first[1]), 0.);
     const std::size_t inline_values = std::min(coordinates.size(), 4 * inline_points);
-    std::copy_n(first.begin() + 2, inline_values, coordinates.begin());
+    std::copy_n(first.begin() + header_size, inline_values, coordinates.begin());
     if (coordinates.size() > inline_values)
       m_state->controller->Broadcast(coordinates.data() + inline_values,
                                      vtkIdType(coordinates.size() - inline_values), 0);
+    ahead.assign(std::size_t(first[2]), 0.);
+    ahead_time = first[3];
+    if (!ahead.empty())
+      m_state->controller->Broadcast(ahead.data(), vtkIdType(ahead.size()), 0);
     return PROBE;
+  }
+
+  // Rank 0's sample from the sum of the ranks' replies at a point (`sample_local()`): the mean of
+  // the pieces that hold it, or none.
+  static Sample combined(const double* total)
+  {
+    if (!(total[3] > 0))
+      return Sample();
+    return Vector(total[0] / total[3], total[1] / total[3], total[2] / total[3]);
+  }
+
+  // Every rank: integrates the particles `ahead` (Integration_ahead's numbers) on while this rank
+  // alone decides their samples, at `time` (NaN: at each sample's time), and gathers the samples
+  // on rank 0, into `along` there, as the exchange would have given them: (x, y, z, t, the
+  // reply of `sample_local()`) each.  A rank that fails to integrate sends none.
+  void gather_ahead(const std::vector<double>& ahead, double time, std::vector<Sample_ahead>* along) const
+  {
+    const State& s = *m_state;
+    auto mine = vtkSmartPointer<vtkDoubleArray>::New();
+    if (s.local && s.local_error.empty())
+    {
+      std::vector<double> samples;
+      try
+      {
+        const auto& unsteady = s.local->unsteady_field();
+        FAS::internal::integrate_ahead<Sample>(
+          Integration_ahead::from_numbers(ahead),
+          [&](const Eigen::Vector3d& x, double t) {
+            return unsteady(Point(x[0], x[1], x[2]), std::isnan(time) ? t : time);
+          },
+          [&](const Eigen::Vector3d& x) { return decides_here(x); },
+          [&](const FAS::internal::Sample_ahead<Sample>& a) {
+            const double reply[8] = { a.x[0], a.x[1], a.x[2], a.t, a.answer ? a.answer->x() : 0.,
+              a.answer ? a.answer->y() : 0., a.answer ? a.answer->z() : 0., a.answer ? 1. : 0. };
+            samples.insert(samples.end(), reply, reply + 8);
+          });
+      }
+      catch (...)
+      {
+        samples.clear();
+      }
+      mine->SetArray(nullptr, 0, 1);
+      mine->SetNumberOfValues(vtkIdType(samples.size()));
+      std::copy(samples.begin(), samples.end(), mine->GetPointer(0));
+    }
+    auto all = vtkSmartPointer<vtkDoubleArray>::New();
+    s.controller->GatherV(mine, all, 0);
+    if (along == nullptr)
+      return;
+    for (vtkIdType i = 0; i + 8 <= all->GetNumberOfValues(); i += 8)
+    {
+      const double* r = all->GetPointer(i);
+      // The sum of this reply and the zeros of the other ranks, as the exchange computes it.
+      const double total[4] = { 0. + r[4], 0. + r[5], 0. + r[6], 0. + r[7] };
+      along->push_back(Sample_ahead{ Eigen::Vector3d(r[0], r[1], r[2]), r[3], combined(total) });
+    }
+  }
+
+  // Whether this rank's piece alone decides the exchange's sample at `x`: no other rank's piece
+  // with cells has bounds (widened by a margin beyond the locators' tolerances) that hold it.
+  bool decides_here(const Eigen::Vector3d& x) const
+  {
+    const State& s = *m_state;
+    const int rank = s.controller->GetLocalProcessId();
+    for (std::size_t r = 0; r < s.piece_bounds.size(); ++r)
+    {
+      const std::array<double, 6>& b = s.piece_bounds[r];
+      if (int(r) == rank || b[0] > b[1])
+        continue;
+      bool inside = true;
+      for (int d = 0; d < 3 && inside; ++d)
+        inside = x[d] >= b[2 * d] - s.bounds_margin && x[d] <= b[2 * d + 1] + s.bounds_margin;
+      if (inside)
+        return false;
+    }
+    return true;
   }
 
   // The exact bits of the coordinates: the points are looked up as the library computes them.
@@ -583,6 +743,8 @@ private:
     std::unordered_map<Key, Sample, Key_hash> samples;
     int failed_ranks = 0, supplying_ranks = 0;
     std::size_t exchanges = 0;
+    std::vector<std::array<double, 6>> piece_bounds; // of every rank's piece (empty: no cells)
+    double bounds_margin = 0;
     std::thread::id owner;                           // the thread that may exchange
     double time = 0;                                 // at which rank 0 samples
     std::vector<Sampled_step> sampled;               // the steps `local` interpolates
@@ -719,6 +881,12 @@ struct Unsteady_view {
                                                          const std::vector<double>& times) const
   {
     return field.sample(points, times);
+  }
+  std::vector<Distributed_velocity_field::Sample> sample(const std::vector<Point>& points,
+    const std::vector<double>& times, const Distributed_velocity_field::Integration_ahead& ahead,
+    std::vector<Distributed_velocity_field::Sample_ahead>& along) const
+  {
+    return field.sample(points, times, ahead, along);
   }
 };
 
