@@ -92,15 +92,18 @@ struct Batched_unsteady {
   }
 };
 
-// `Field` split into two pieces at the plane x = `cut`, as on two processes, with a batch
-// operation that integrates ahead: each piece integrates the waiting particles on while their
-// samples lie in it alone (farther than `margin` from the cut), as a distributed field's ranks do.
+// `Field` split into two pieces at the plane x = `cut`, as on two processes, the algorithm on the
+// process of the piece x < cut: it answers the samples that its piece alone decides (farther
+// than `margin` from the cut) at once (`sample_here()`), and the batch operation integrates the
+// waiting particles on in the other piece while their samples lie in it alone, as the ranks of a
+// distributed field do.
 template <class Field, bool unsteady>
 struct Two_pieces {
   Field field;
   double cut = 0, margin = 1e-3;
   std::shared_ptr<Counts> counts = std::make_shared<Counts>();
   std::shared_ptr<std::size_t> along_paths = std::make_shared<std::size_t>(0); // samples ahead
+  std::shared_ptr<std::size_t> here = std::make_shared<std::size_t>(0);        // answered at once
 
   using Answer = std::optional<Vector_3>;
   Answer at(const Point_3& p, double t) const
@@ -121,6 +124,19 @@ struct Two_pieces {
   {
     ++counts->single;
     return field(p, t);
+  }
+  bool decides(double side, const Eigen::Vector3d& x) const { return side * (x[0] - cut) > margin; }
+  template <bool u = unsteady, std::enable_if_t<!u, int> = 0>
+  std::optional<Answer> sample_here(const Point_3& p) const
+  {
+    return sample_here(p, 0.);
+  }
+  std::optional<Answer> sample_here(const Point_3& p, double t) const
+  {
+    if (!decides(-1, Eigen::Vector3d(p.x(), p.y(), p.z())))
+      return std::nullopt;
+    ++*here;
+    return at(p, t);
   }
   template <bool u = unsteady, std::enable_if_t<!u, int> = 0>
   std::vector<Answer> sample(const std::vector<Point_3>& points) const
@@ -150,14 +166,13 @@ struct Two_pieces {
       answers.push_back(at(points[i], times[i]));
     // Through the numbers a process would receive.
     const auto received = FAS::internal::Integration_ahead::from_numbers(ahead.to_numbers());
-    for (double side : {-1., 1.})
-      FAS::internal::integrate_ahead<Answer>(
-          received, [&](const Eigen::Vector3d& x, double t) { return at(Point_3(x[0], x[1], x[2]), t); },
-          [&](const Eigen::Vector3d& x) { return side * (x[0] - cut) > margin; },
-          [&](FAS::internal::Sample_ahead<Answer> a) {
-            ++*along_paths;
-            along.push_back(std::move(a));
-          });
+    FAS::internal::integrate_ahead<Answer>(
+        received, [&](const Eigen::Vector3d& x, double t) { return at(Point_3(x[0], x[1], x[2]), t); },
+        [&](const Eigen::Vector3d& x) { return decides(1, x); },
+        [&](FAS::internal::Sample_ahead<Answer> a) {
+          ++*along_paths;
+          along.push_back(std::move(a));
+        });
     return answers;
   }
 };
@@ -395,6 +410,7 @@ TEST(BatchedSampling, IntegratingAheadInTwoPiecesIsTheSameBitForBitInFewerBatche
   expect_batched(*pieces.counts, ahead);
   EXPECT_GE(ahead.report.number_of_inserted_particles, 1u);
   EXPECT_GT(*pieces.along_paths, pieces.counts->points);
+  EXPECT_GT(*pieces.here, pieces.counts->points);
   // A time line costs the stages of a step where a particle crosses the cut, not a round per
   // stage of every path from the seed.
   EXPECT_LE(5 * ahead.report.number_of_sample_batches, in_batches.report.number_of_sample_batches);
@@ -425,6 +441,7 @@ TEST(BatchedSampling, IntegratingAheadBothWaysAndOnAPathSurfaceIsTheSameBitForBi
   expect_same_surface(path, path_ahead);
   expect_batched(*unsteady_pieces.counts, path_ahead);
   EXPECT_GT(*unsteady_pieces.along_paths, 0u);
+  EXPECT_GT(*unsteady_pieces.here, 0u);
 }
 
 TEST(BatchedSampling, AnIntegratorGoesOnFromItsNumbers)

@@ -167,11 +167,16 @@ struct Front_field {
                                                  : has_batch_sampling_v<FlowField, Point_3>;
   using Answer = typename Field_answer<FlowField, Point_3, is_unsteady>::type;
   static constexpr bool integrates_ahead = Integrates_ahead<FlowField, Point_3, Answer, is_unsteady>::value;
+  static constexpr bool answers_here = Answers_here<FlowField, Point_3, Answer, is_unsteady>::value;
 
   Value operator()(const Eigen::Vector3d& x, double t) const
   {
-    if (replay != nullptr)
+    if (replay != nullptr) {
+      if constexpr (answers_here)
+        if (std::optional<Answer> here = sample_here(x, t))
+          return value(classified(*here));
       return replay->at(x, t);
+    }
     Flow_sample s;
     if constexpr (is_unsteady)
       s = sample_flow([&](const Point_3& q) { return (*field)(q, t); }, point(x));
@@ -227,6 +232,15 @@ private:
   }
 
   Value value(const Flow_sample& s) const { return integrand_value(s, normalize); }
+
+  // The sample at (x, t) of a field that integrates ahead, when this process alone decides it.
+  std::optional<Answer> sample_here(const Eigen::Vector3d& x, double t) const
+  {
+    if constexpr (is_unsteady)
+      return field->sample_here(point(x), t);
+    else
+      return field->sample_here(point(x));
+  }
 
   static Flow_sample classified(const Answer& answer)
   {

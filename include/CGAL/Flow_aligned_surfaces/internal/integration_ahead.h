@@ -171,6 +171,26 @@ struct Integrates_ahead<
     : std::true_type {
 };
 
+/// Whether a field that integrates ahead also answers where this process alone decides a sample,
+/// without an exchange: `field.sample_here(p)` (`field.sample_here(p, t)` for an unsteady
+/// field) is the sample its batch operation would answer at p, or nothing when other processes
+/// have a say.
+template <class FlowField, class Point_3, class Answer, bool unsteady, class = void>
+struct Answers_here : std::false_type {
+};
+template <class FlowField, class Point_3, class Answer>
+struct Answers_here<FlowField, Point_3, Answer, false,
+                    std::enable_if_t<std::is_same_v<decltype(std::declval<const FlowField&>().sample_here(
+                                                        std::declval<const Point_3&>())),
+                                                    std::optional<Answer>>>> : std::true_type {
+};
+template <class FlowField, class Point_3, class Answer>
+struct Answers_here<FlowField, Point_3, Answer, true,
+                    std::enable_if_t<std::is_same_v<decltype(std::declval<const FlowField&>().sample_here(
+                                                        std::declval<const Point_3&>(), 0.)),
+                                                    std::optional<Answer>>>> : std::true_type {
+};
+
 /// Integrates the particles of `ahead` on, each until its next sample is not decided here
 /// (`decides(x)` false), it reaches the target or leaves the domain, and calls
 /// `record(Sample_ahead<Answer>)` for every sample taken, also the one at the particle's end (at

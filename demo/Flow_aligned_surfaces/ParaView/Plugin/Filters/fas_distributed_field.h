@@ -317,6 +317,22 @@ public:
     return batch(points, times, false);
   }
 
+  /// The sample at `p` when this process alone decides it (the input's own field on one process;
+  /// on rank 0 of several, a point no other rank's piece may hold), as an exchange would give it;
+  /// nothing when other ranks have a say.
+  std::optional<Sample> sample_here(const Point& p) const { return sample_here(p, m_state->time); }
+
+  /// The same at time `t`.
+  std::optional<Sample> sample_here(const Point& p, double t) const
+  {
+    const State& s = *m_state;
+    if (!distributed())
+      return s.local ? s.local->unsteady_field()(p, t) : Sample();
+    if (!s.local_error.empty() || !decides_here(Eigen::Vector3d(p.x(), p.y(), p.z())))
+      return std::nullopt;
+    return as_exchanged(s.local ? s.local->unsteady_field()(p, t) : Sample());
+  }
+
   /// `sample(points)`, integrating the particles `ahead` on where a rank alone decides their
   /// samples, which are put in `along` (integration_ahead.h).
   std::vector<Sample> sample(const std::vector<Point>& points, const Integration_ahead& ahead,
@@ -546,15 +562,26 @@ private:
     return Vector(total[0] / total[3], total[1] / total[3], total[2] / total[3]);
   }
 
-  // Every rank: integrates the particles `ahead` (Integration_ahead's numbers) on while this rank
-  // alone decides their samples, at `time` (NaN: at each sample's time), and gathers the samples
-  // on rank 0, into `along` there, as the exchange would have given them: (x, y, z, t, the
-  // reply of `sample_local()`) each.  A rank that fails to integrate sends none.
+  // A sample of this rank's piece that no other piece may hold as rank 0 gets it from an
+  // exchange: the sum of it and the other ranks' zeros, divided by the one piece that has it.
+  static Sample as_exchanged(const Sample& v)
+  {
+    if (!v)
+      return Sample();
+    const double total[4] = { 0. + v->x(), 0. + v->y(), 0. + v->z(), 1. };
+    return combined(total);
+  }
+
+  // Every rank: the ranks other than 0 integrate the particles `ahead` (Integration_ahead's
+  // numbers) on while they alone decide their samples, at `time` (NaN: at each sample's time),
+  // and the samples are gathered on rank 0, into `along` there, as the exchange would have given
+  // them.  Rank 0 answers those of its own piece when its tasks ask (`sample_here()`).  A rank
+  // that fails to integrate sends none.
   void gather_ahead(const std::vector<double>& ahead, double time, std::vector<Sample_ahead>* along) const
   {
     const State& s = *m_state;
     auto mine = vtkSmartPointer<vtkDoubleArray>::New();
-    if (s.local && s.local_error.empty())
+    if (s.local && s.local_error.empty() && !is_root())
     {
       std::vector<double> samples;
       try
@@ -587,9 +614,8 @@ private:
     for (vtkIdType i = 0; i + 8 <= all->GetNumberOfValues(); i += 8)
     {
       const double* r = all->GetPointer(i);
-      // The sum of this reply and the zeros of the other ranks, as the exchange computes it.
-      const double total[4] = { 0. + r[4], 0. + r[5], 0. + r[6], 0. + r[7] };
-      along->push_back(Sample_ahead{ Eigen::Vector3d(r[0], r[1], r[2]), r[3], combined(total) });
+      const Sample v = r[7] > 0 ? Sample(Vector(r[4], r[5], r[6])) : Sample();
+      along->push_back(Sample_ahead{ Eigen::Vector3d(r[0], r[1], r[2]), r[3], as_exchanged(v) });
     }
   }
 
@@ -881,6 +907,10 @@ struct Unsteady_view {
                                                          const std::vector<double>& times) const
   {
     return field.sample(points, times);
+  }
+  std::optional<Distributed_velocity_field::Sample> sample_here(const Point& p, double t) const
+  {
+    return field.sample_here(p, t);
   }
   std::vector<Distributed_velocity_field::Sample> sample(const std::vector<Point>& points,
     const std::vector<double>& times, const Distributed_velocity_field::Integration_ahead& ahead,
