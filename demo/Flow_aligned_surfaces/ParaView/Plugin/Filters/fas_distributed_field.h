@@ -37,7 +37,6 @@
 #include <vtkAppendPolyData.h>
 #include <vtkCleanPolyData.h>
 #include <vtkCommunicator.h>
-#include <vtkDoubleArray.h>
 #include <vtkMultiProcessController.h>
 #include <vtkMultiProcessStream.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
@@ -231,14 +230,11 @@ private:
         coordinates[4 * i + std::size_t(d)] = points[i][d];
       coordinates[4 * i + 3] = times[i];
     }
-    const std::vector<double> ahead =
-      request.ahead != nullptr && !request.ahead->empty() ? request.ahead->to_numbers() : std::vector<double>();
-    send(PROBE, coordinates, ahead, request.time);
-    const std::vector<double> mine = sample_local(coordinates, ranks, 0);
-    std::vector<double> total(mine.size());
-    s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
-    if (!ahead.empty())
-      gather_ahead(ahead, request.time, request.along);
+    Round round{ std::move(coordinates), std::vector<double>(), request.time };
+    if (request.ahead != nullptr && !request.ahead->empty())
+      round.ahead = request.ahead->to_numbers();
+    send(PROBE, round);
+    const std::vector<double> total = reply(round, request.along);
 
     ++s.exchanges;
     const std::size_t n = points.size();
@@ -261,28 +257,20 @@ public:
   {
     if (!distributed())
       return;
-    send(FINISH, {});
+    send(FINISH, Round());
   }
 
   /// Ranks other than 0: answer rank 0's probes until it calls `finish()`.  Never throws.
   void serve() const
   {
-    State& s = *m_state;
     if (!distributed())
       return;
-    const int ranks = s.controller->GetNumberOfProcesses();
-    const int rank = s.controller->GetLocalProcessId();
     for (;;)
     {
-      std::vector<double> coordinates, ahead;
-      double ahead_time = unsteady_time;
-      if (receive(coordinates, ahead, ahead_time) != PROBE)
+      Round round;
+      if (receive(round) != PROBE)
         return;
-      const std::vector<double> mine = sample_local(coordinates, ranks, rank);
-      std::vector<double> total(mine.size());
-      s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
-      if (!ahead.empty())
-        gather_ahead(ahead, ahead_time, nullptr);
+      reply(round, nullptr);
     }
   }
 
@@ -504,53 +492,88 @@ private:
     PROBE = 1
   };
 
-  // The first broadcast of an exchange: the command, the number of points, the number of values
-  // of the particles to integrate ahead and the time of their samples, and the (x, y, z, t) of
-  // the first `inline_points` points, so that a small exchange (a Runge-Kutta stage of a few
-  // particles) costs one broadcast and one reduction; the other points, then the particles,
-  // follow in broadcasts of their own.
-  static constexpr std::size_t inline_points = 32;
-  static constexpr std::size_t header_size = 4;
-  using Message = std::array<double, header_size + 4 * inline_points>;
+  // What rank 0 asks of every rank in an exchange.
+  struct Round {
+    std::vector<double> coordinates;   // (x, y, z, t) per point to sample
+    std::vector<double> ahead;         // the particles to integrate ahead (Integration_ahead's numbers)
+    double ahead_time = unsteady_time; // at which a steady field samples them
+  };
 
-  // Rank 0: broadcasts `command`, `coordinates` (4 per point) and `ahead` (Integration_ahead's
-  // numbers, sampled at `ahead_time`).
-  void send(Command command, const std::vector<double>& coordinates, const std::vector<double>& ahead = {},
-    double ahead_time = unsteady_time) const
+  // The first broadcast of an exchange: the command, the number of points, the number of values
+  // of the particles to integrate ahead, the time of their samples, and the first values of the
+  // points followed by the particles, so that a small exchange costs one broadcast; the rest
+  // follows in a second one.
+  static constexpr std::size_t header_size = 4;
+  using Message = std::array<double, 1024>;
+
+  // Rank 0: broadcasts `command` and `round`.
+  void send(Command command, const Round& round) const
   {
     Message first{};
     first[0] = command;
-    first[1] = double(coordinates.size() / 4);
-    first[2] = double(ahead.size());
-    first[3] = ahead_time;
-    const std::size_t inline_values = std::min(coordinates.size(), 4 * inline_points);
-    std::copy_n(coordinates.begin(), inline_values, first.begin() + header_size);
+    first[1] = double(round.coordinates.size() / 4);
+    first[2] = double(round.ahead.size());
+    first[3] = round.ahead_time;
+    std::vector<double> values = round.coordinates;
+    values.insert(values.end(), round.ahead.begin(), round.ahead.end());
+    const std::size_t inline_values = std::min(values.size(), first.size() - header_size);
+    std::copy_n(values.begin(), inline_values, first.begin() + header_size);
     m_state->controller->Broadcast(first.data(), vtkIdType(first.size()), 0);
-    if (coordinates.size() > inline_values)
-      m_state->controller->Broadcast(const_cast<double*>(coordinates.data()) + inline_values,
-                                     vtkIdType(coordinates.size() - inline_values), 0);
-    if (!ahead.empty())
-      m_state->controller->Broadcast(const_cast<double*>(ahead.data()), vtkIdType(ahead.size()), 0);
+    if (values.size() > inline_values)
+      m_state->controller->Broadcast(values.data() + inline_values, vtkIdType(values.size() - inline_values), 0);
   }
 
-  // Other ranks: receives what `send()` broadcasts; returns the command.
-  Command receive(std::vector<double>& coordinates, std::vector<double>& ahead, double& ahead_time) const
+  // Other ranks: receives what `send()` broadcasts into `round`; returns the command.
+  Command receive(Round& round) const
   {
     Message first{};
     m_state->controller->Broadcast(first.data(), vtkIdType(first.size()), 0);
     if (first[0] != PROBE)
       return FINISH;
-    coordinates.assign(4 * std::size_t(first[1]), 0.);
-    const std::size_t inline_values = std::min(coordinates.size(), 4 * inline_points);
-    std::copy_n(first.begin() + header_size, inline_values, coordinates.begin());
-    if (coordinates.size() > inline_values)
-      m_state->controller->Broadcast(coordinates.data() + inline_values,
-                                     vtkIdType(coordinates.size() - inline_values), 0);
-    ahead.assign(std::size_t(first[2]), 0.);
-    ahead_time = first[3];
-    if (!ahead.empty())
-      m_state->controller->Broadcast(ahead.data(), vtkIdType(ahead.size()), 0);
+    const std::size_t n = 4 * std::size_t(first[1]);
+    std::vector<double> values(n + std::size_t(first[2]));
+    const std::size_t inline_values = std::min(values.size(), first.size() - header_size);
+    std::copy_n(first.begin() + header_size, inline_values, values.begin());
+    if (values.size() > inline_values)
+      m_state->controller->Broadcast(values.data() + inline_values, vtkIdType(values.size() - inline_values), 0);
+    round.coordinates.assign(values.begin(), values.begin() + std::ptrdiff_t(n));
+    round.ahead.assign(values.begin() + std::ptrdiff_t(n), values.end());
+    round.ahead_time = first[3];
     return PROBE;
+  }
+
+  // Every rank's answer to `round` (collective): the sum of the ranks' replies on rank 0
+  // (`sample_local()`, followed by the number of values each rank integrated ahead), and there
+  // the samples integrated ahead in `along`.
+  std::vector<double> reply(const Round& round, std::vector<Sample_ahead>* along) const
+  {
+    const State& s = *m_state;
+    const std::size_t ranks = std::size_t(s.controller->GetNumberOfProcesses());
+    const int rank = s.controller->GetLocalProcessId();
+    std::vector<double> mine = sample_local(round.coordinates, int(ranks), rank);
+    const std::vector<double> ahead = round.ahead.empty() ? std::vector<double>() : integrate_here(round);
+    mine.resize(mine.size() + ranks, 0.);
+    mine[mine.size() - ranks + std::size_t(rank)] = double(ahead.size());
+    std::vector<double> total(mine.size());
+    s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
+    if (round.ahead.empty())
+      return total;
+    std::vector<vtkIdType> lengths(ranks), offsets(ranks);
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+      lengths[r] = vtkIdType(total[total.size() - ranks + r]);
+      offsets[r] = r == 0 ? 0 : offsets[r - 1] + lengths[r - 1];
+    }
+    std::vector<double> all(std::size_t(offsets.back() + lengths.back()));
+    s.controller->GatherV(ahead.data(), all.data(), vtkIdType(ahead.size()), lengths.data(), offsets.data(), 0);
+    if (along != nullptr)
+      for (std::size_t i = 0; i + 8 <= all.size(); i += 8)
+      {
+        const double* r = &all[i];
+        const Sample v = r[7] > 0 ? Sample(Vector(r[4], r[5], r[6])) : Sample();
+        along->push_back(Sample_ahead{ Eigen::Vector3d(r[0], r[1], r[2]), r[3], as_exchanged(v) });
+      }
+    return total;
   }
 
   // Rank 0's sample from the sum of the ranks' replies at a point (`sample_local()`): the mean of
@@ -572,51 +595,37 @@ private:
     return combined(total);
   }
 
-  // Every rank: the ranks other than 0 integrate the particles `ahead` (Integration_ahead's
-  // numbers) on while they alone decide their samples, at `time` (NaN: at each sample's time),
-  // and the samples are gathered on rank 0, into `along` there, as the exchange would have given
-  // them.  Rank 0 answers those of its own piece when its tasks ask (`sample_here()`).  A rank
-  // that fails to integrate sends none.
-  void gather_ahead(const std::vector<double>& ahead, double time, std::vector<Sample_ahead>* along) const
+  // A rank other than 0: the samples of the particles of `round` integrated on while this rank
+  // alone decides them, (x, y, z, t, vx, vy, vz, 1 or 0 for no sample) each.  Rank 0 answers
+  // those of its own piece when its tasks ask (`sample_here()`).  A rank that fails to integrate
+  // gives none.
+  std::vector<double> integrate_here(const Round& round) const
   {
     const State& s = *m_state;
-    auto mine = vtkSmartPointer<vtkDoubleArray>::New();
-    if (s.local && s.local_error.empty() && !is_root())
+    std::vector<double> samples;
+    if (!s.local || !s.local_error.empty() || is_root())
+      return samples;
+    try
     {
-      std::vector<double> samples;
-      try
-      {
-        const auto& unsteady = s.local->unsteady_field();
-        FAS::internal::integrate_ahead<Sample>(
-          Integration_ahead::from_numbers(ahead),
-          [&](const Eigen::Vector3d& x, double t) {
-            return unsteady(Point(x[0], x[1], x[2]), std::isnan(time) ? t : time);
-          },
-          [&](const Eigen::Vector3d& x) { return decides_here(x); },
-          [&](const FAS::internal::Sample_ahead<Sample>& a) {
-            const double reply[8] = { a.x[0], a.x[1], a.x[2], a.t, a.answer ? a.answer->x() : 0.,
-              a.answer ? a.answer->y() : 0., a.answer ? a.answer->z() : 0., a.answer ? 1. : 0. };
-            samples.insert(samples.end(), reply, reply + 8);
-          });
-      }
-      catch (...)
-      {
-        samples.clear();
-      }
-      mine->SetArray(nullptr, 0, 1);
-      mine->SetNumberOfValues(vtkIdType(samples.size()));
-      std::copy(samples.begin(), samples.end(), mine->GetPointer(0));
+      const auto& unsteady = s.local->unsteady_field();
+      const double time = round.ahead_time;
+      FAS::internal::integrate_ahead<Sample>(
+        Integration_ahead::from_numbers(round.ahead),
+        [&](const Eigen::Vector3d& x, double t) {
+          return unsteady(Point(x[0], x[1], x[2]), std::isnan(time) ? t : time);
+        },
+        [&](const Eigen::Vector3d& x) { return decides_here(x); },
+        [&](const FAS::internal::Sample_ahead<Sample>& a) {
+          const double values[8] = { a.x[0], a.x[1], a.x[2], a.t, a.answer ? a.answer->x() : 0.,
+            a.answer ? a.answer->y() : 0., a.answer ? a.answer->z() : 0., a.answer ? 1. : 0. };
+          samples.insert(samples.end(), values, values + 8);
+        });
     }
-    auto all = vtkSmartPointer<vtkDoubleArray>::New();
-    s.controller->GatherV(mine, all, 0);
-    if (along == nullptr)
-      return;
-    for (vtkIdType i = 0; i + 8 <= all->GetNumberOfValues(); i += 8)
+    catch (...)
     {
-      const double* r = all->GetPointer(i);
-      const Sample v = r[7] > 0 ? Sample(Vector(r[4], r[5], r[6])) : Sample();
-      along->push_back(Sample_ahead{ Eigen::Vector3d(r[0], r[1], r[2]), r[3], as_exchanged(v) });
+      samples.clear();
     }
+    return samples;
   }
 
   // Whether this rank's piece alone decides the exchange's sample at `x`: no other rank's piece
