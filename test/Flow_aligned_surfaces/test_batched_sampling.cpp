@@ -239,14 +239,24 @@ constexpr double cylinder_time = 4.0, linear_time = 1.0;
 constexpr double cylinder_time = 10.0, linear_time = 1.5;
 #endif
 
+// A surface around a cylinder of radius 1 on the z-axis: tears, lost and inserted particles.
+Polyline cylinder_seed()
+{
+  return {Point_3(-3, -0.6, 0.2), Point_3(-3, 0.6, 0.2)};
+}
+auto cylinder_surface_parameters()
+{
+  return FAS::parameters::front_spacing(
+      0.05,
+      FAS::parameters::max_time(cylinder_time, FAS::parameters::max_number_of_time_lines(std::size_t(1000))));
+}
+
 TEST(BatchedSampling, StreamSurfaceAroundACylinderIsTheSameBitForBit)
 {
   const FAS::Cylinder_potential_flow<K> cylinder(1.0, 1.0);
   const Batched<FAS::Cylinder_potential_flow<K>> batched{cylinder};
-  const Polyline seed = {Point_3(-3, -0.6, 0.2), Point_3(-3, 0.6, 0.2)};
-  const auto np = FAS::parameters::front_spacing(
-      0.05,
-      FAS::parameters::max_time(cylinder_time, FAS::parameters::max_number_of_time_lines(std::size_t(1000))));
+  const Polyline seed = cylinder_seed();
+  const auto np = cylinder_surface_parameters();
   const Surface one_by_one(cylinder, seed, np);
   const Surface in_batches(batched, seed, np);
   expect_same_surface(one_by_one, in_batches);
@@ -399,10 +409,8 @@ TEST(BatchedSampling, IntegratingAheadInTwoPiecesIsTheSameBitForBitInFewerBatche
   const FAS::Cylinder_potential_flow<K> cylinder(1.0, 1.0);
   const Batched<FAS::Cylinder_potential_flow<K>> batched{cylinder};
   const Two_pieces<FAS::Cylinder_potential_flow<K>, false> pieces{cylinder, 1.5};
-  const Polyline seed = {Point_3(-3, -0.6, 0.2), Point_3(-3, 0.6, 0.2)};
-  const auto np = FAS::parameters::front_spacing(
-      0.05,
-      FAS::parameters::max_time(cylinder_time, FAS::parameters::max_number_of_time_lines(std::size_t(1000))));
+  const Polyline seed = cylinder_seed();
+  const auto np = cylinder_surface_parameters();
   const Surface one_by_one(cylinder, seed, np);
   const Surface in_batches(batched, seed, np);
   const Surface ahead(pieces, seed, np);
