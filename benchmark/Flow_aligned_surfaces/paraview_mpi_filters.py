@@ -105,6 +105,14 @@ def timed(name, make, port=0):
         exchanges = t.field_value(out, "number_of_exchanges")
     print("%-15s %-24s %d %8.3f %9d %8d" % (form, name, ranks, statistics.median(seconds), exchanges,
                                           out.GetNumberOfPoints()))
+    lines = out.GetFieldData().GetArray("number_of_time_lines")
+    if name == "StreamSurfaceFromCurve" and ranks > 1:
+        backward = out.GetFieldData().GetArray("backward_number_of_time_lines")
+        total = sum(lines.GetValue(i) for i in range(lines.GetNumberOfTuples()))
+        if backward is not None:
+            total += sum(backward.GetValue(i) for i in range(backward.GetNumberOfTuples()))
+        print("%-15s %-24s %d time lines: %d, exchanges per time line: %.1f" % (
+            form, name, ranks, total, exchanges / max(total, 1)))
     sys.stdout.flush()
     with open(os.path.join(outputs, name + ".txt"), "w") as f:
         for i in range(out.GetNumberOfPoints()):

@@ -83,6 +83,12 @@ def expect_same_terminations(out, terminations, what):
         backward = field_strings(out, "backward_termination")
         if backward != [row[1] for row in terminations]:
             raise AssertionError("%s: backward terminations %s, the library's %s" % (what, backward, terminations))
+        # Every time line of the backward halves is at a negative t of its own (fewer where a
+        # thin strip is left out).
+        lines = sum(field_strings(out, "backward_number_of_time_lines"))
+        negative = len({t for t in point_array(out, "t") if t < 0})
+        if not 1 <= negative <= lines:
+            raise AssertionError("%s: %d backward time lines, %d negative t on the surface" % (what, lines, negative))
     messages = field_strings(out, "termination_message")
     if len(messages) != len(expected) or not all(messages):
         raise AssertionError("%s: termination messages %s" % (what, messages))

@@ -231,6 +231,8 @@ vtkSmartPointer<vtkPolyData> surfaces_output(vtkStreamSurfaceFromCurve* f, const
     per_curve("backward_termination",
       [](const R& r) { return std::string(r.backward ? FAS::to_string(r.backward->termination) : ""); });
     per_curve("backward_termination_message", [](const R& r) { return r.backward ? r.backward->message : std::string(); });
+    per_curve("backward_number_of_time_lines",
+      [](const R& r) { return double(r.backward ? r.backward->number_of_time_lines : 0); });
   }
   per_curve("number_of_time_lines", [](const R& r) { return double(r.number_of_time_lines); });
   per_curve("final_parameter", [](const R& r) { return r.final_parameter; });
