@@ -429,7 +429,7 @@ private:
       mine << b;
     std::vector<vtkMultiProcessStream> all;
     s.controller->Gather(mine, all, 0);
-    share_piece_bounds(local_bounds);
+    share_piece_bounds(bounds_of_steps());
     input.ranks = s.controller->GetNumberOfProcesses();
     for (std::size_t r = 0; r < all.size(); ++r)
     {
@@ -444,19 +444,39 @@ private:
       if (!piece_error.empty())
         input.errors += (input.errors.empty() ? "" : "; ") + ("rank " + std::to_string(r) + ": " + piece_error);
       if (has_cells)
-      {
-        if (input.ranks_with_cells == 1)
-          input.bounds = b;
-        for (int d = 0; d < 3; ++d)
-        {
-          input.bounds[2 * d] = std::min(input.bounds[2 * d], b[2 * d]);
-          input.bounds[2 * d + 1] = std::max(input.bounds[2 * d + 1], b[2 * d + 1]);
-        }
-      }
+        grow_bounds(input.bounds, b);
     }
     return input;
   }
 
+
+  // The bounds of this rank's piece over all the steps it samples (they may be cut differently
+  // at each step); empty (1, -1, ...) without cells.
+  std::array<double, 6> bounds_of_steps() const
+  {
+    std::array<double, 6> bounds{ { 1, -1, 1, -1, 1, -1 } };
+    for (const Sampled_step& step : m_state->sampled)
+    {
+      vtkDataSet* data = step.flow.data_set;
+      if (data == nullptr || data->GetNumberOfCells() == 0)
+        continue;
+      std::array<double, 6> b;
+      data->GetBounds(b.data());
+      grow_bounds(bounds, b);
+    }
+    return bounds;
+  }
+
+  // Grows `bounds` (empty: 1, -1, ...) to hold the bounds `b`.
+  static void grow_bounds(std::array<double, 6>& bounds, const std::array<double, 6>& b)
+  {
+    const bool empty = bounds[0] > bounds[1];
+    for (int d = 0; d < 3; ++d)
+    {
+      bounds[2 * d] = empty ? b[2 * d] : std::min(bounds[2 * d], b[2 * d]);
+      bounds[2 * d + 1] = empty ? b[2 * d + 1] : std::max(bounds[2 * d + 1], b[2 * d + 1]);
+    }
+  }
 
   // Every rank learns the bounds of every rank's piece (collective), for `decides_here()`; the
   // margin is 1e-6 of the largest extent of them all.
@@ -471,15 +491,8 @@ private:
     for (std::size_t r = 0; r < s.piece_bounds.size(); ++r)
     {
       std::copy_n(all.begin() + std::ptrdiff_t(6 * r), 6, s.piece_bounds[r].begin());
-      const std::array<double, 6>& b = s.piece_bounds[r];
-      if (b[0] > b[1])
-        continue;
-      const bool first = whole[0] > whole[1];
-      for (int d = 0; d < 3; ++d)
-      {
-        whole[2 * d] = first ? b[2 * d] : std::min(whole[2 * d], b[2 * d]);
-        whole[2 * d + 1] = first ? b[2 * d + 1] : std::max(whole[2 * d + 1], b[2 * d + 1]);
-      }
+      if (s.piece_bounds[r][0] <= s.piece_bounds[r][1])
+        grow_bounds(whole, s.piece_bounds[r]);
     }
     s.bounds_margin = 0;
     for (int d = 0; d < 3 && whole[0] <= whole[1]; ++d)
