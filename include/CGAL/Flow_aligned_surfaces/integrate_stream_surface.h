@@ -191,9 +191,8 @@ struct Front_field {
     return (*this)(points, Integration_ahead(), [](const Eigen::Vector3d&, double, const Value&) {});
   }
 
-  /// The same; a field that integrates ahead
-  /// (integration_ahead.h) is also told of the particles `ahead`, and `add(x, t, value)` is
-  /// called for each sample it took along their paths.
+  /// The same; a field that integrates ahead (integration_ahead.h) is also told of the particles
+  /// `ahead`, and `add(x, t, value)` is called for each sample it took along their paths.
   template <class Add>
   std::vector<Value> operator()(const std::vector<std::pair<Eigen::Vector3d, double>>& points,
                                 const Integration_ahead& ahead, const Add& add) const

@@ -9,7 +9,8 @@
 // them (`integrate_ahead()`) and sends those samples back with the round's.  The task on the
 // algorithm's process then finds them when it replays the path: the same integrator from the
 // same state asks for the same points and gets the same values, so the results stay the same,
-// bit for bit, in fewer rounds.
+// bit for bit, in fewer rounds.  What the algorithm's own process alone decides, its tasks sample
+// at once (`Answers_here`), without a round.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_INTEGRATION_AHEAD_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_INTEGRATION_AHEAD_H
