@@ -16,9 +16,10 @@
 // rank 0 needs; a rank that fails sends its reason instead of hanging the others.
 //
 // A stream or path surface's rounds also tell where their waiting particles stand
-// (integration_ahead.h): every rank integrates them on while it alone decides their samples
-// (no other piece's bounds hold the point), and rank 0 gets those samples with the round's, so
-// a path costs a round where it crosses from piece to piece, not one per Runge-Kutta stage.
+// (integration_ahead.h): the ranks other than 0 integrate them on while they alone decide their
+// samples (no other piece's bounds hold the point), rank 0 gets those samples with the round's,
+// and rank 0 samples at once what its own piece alone decides (`sample_here()`), so a path costs
+// a round where it crosses from piece to piece, not one per Runge-Kutta stage.
 //
 // A temporal input is sampled at a time: each rank interpolates its piece's steps around it
 // linearly in time (Unsteady_flow_field_3), and rank 0 sends the time with every exchange.
