@@ -103,6 +103,9 @@ struct Two_pieces {
   double cut = 0, margin = 1e-3;
   std::shared_ptr<Counts> counts = std::make_shared<Counts>();
   std::shared_ptr<std::size_t> along_paths = std::make_shared<std::size_t>(0); // samples ahead
+  std::shared_ptr<std::size_t> sent_back = std::make_shared<std::size_t>(0);   // of those, returned
+  std::shared_ptr<std::size_t> states = std::make_shared<std::size_t>(0);      // particles taken on
+  std::shared_ptr<std::size_t> meanwhile = std::make_shared<std::size_t>(0);   // first rounds
   std::shared_ptr<std::size_t> here = std::make_shared<std::size_t>(0);        // answered at once
 
   using Answer = std::optional<Vector_3>;
@@ -145,35 +148,50 @@ struct Two_pieces {
   }
   std::vector<Answer> sample(const std::vector<Point_3>& points, const std::vector<double>& times) const
   {
-    std::vector<FAS::internal::Sample_ahead<Answer>> none;
+    FAS::internal::Integrated_ahead<Answer> none;
     return sample(points, times, FAS::internal::Integration_ahead(), none);
   }
   template <bool u = unsteady, std::enable_if_t<!u, int> = 0>
   std::vector<Answer> sample(const std::vector<Point_3>& points,
                              const FAS::internal::Integration_ahead& ahead,
-                             std::vector<FAS::internal::Sample_ahead<Answer>>& along) const
+                             FAS::internal::Integrated_ahead<Answer>& along) const
   {
     return sample(points, std::vector<double>(points.size(), 0.), ahead, along);
   }
   std::vector<Answer> sample(const std::vector<Point_3>& points, const std::vector<double>& times,
                              const FAS::internal::Integration_ahead& ahead,
-                             std::vector<FAS::internal::Sample_ahead<Answer>>& along) const
+                             FAS::internal::Integrated_ahead<Answer>& along) const
   {
     ++counts->batches;
     counts->points += points.size();
     std::vector<Answer> answers;
     for (std::size_t i = 0; i < points.size(); ++i)
       answers.push_back(at(points[i], times[i]));
-    // Through the numbers a process would receive.
-    const auto received = FAS::internal::Integration_ahead::from_numbers(ahead.to_numbers());
-    FAS::internal::integrate_ahead<Answer>(
-        received, [&](const Eigen::Vector3d& x, double t) { return at(Point_3(x[0], x[1], x[2]), t); },
-        [&](const Eigen::Vector3d& x) { return decides(1, x); },
-        [&](FAS::internal::Sample_ahead<Answer> a) {
-          ++*along_paths;
-          along.push_back(std::move(a));
-        });
+    integrate_ahead(ahead, along);
     return answers;
+  }
+  // The other piece integrates while the algorithm's runs its first round of tasks.
+  template <class Work>
+  void integrate_ahead_meanwhile(const FAS::internal::Integration_ahead& ahead,
+                                 FAS::internal::Integrated_ahead<Answer>& along, const Work& work) const
+  {
+    ++*meanwhile;
+    integrate_ahead(ahead, along);
+    work();
+  }
+  // The other piece integrates the particles `ahead` on, through the numbers it would receive.
+  void integrate_ahead(const FAS::internal::Integration_ahead& ahead,
+                       FAS::internal::Integrated_ahead<Answer>& along) const
+  {
+    FAS::internal::integrate_ahead<Answer>(
+        FAS::internal::Integration_ahead::from_numbers(ahead.to_numbers()),
+        [&](const Eigen::Vector3d& x, double t) {
+          ++*along_paths;
+          return at(Point_3(x[0], x[1], x[2]), t);
+        },
+        [&](const Eigen::Vector3d& x) { return decides(1, x); }, along);
+    *sent_back += along.samples.size();
+    *states += along.states.size();
   }
 };
 
@@ -420,6 +438,10 @@ TEST(BatchedSampling, IntegratingAheadInTwoPiecesIsTheSameBitForBitInFewerBatche
   EXPECT_GE(ahead.report.number_of_inserted_particles, 1u);
   EXPECT_GT(*pieces.along_paths, pieces.counts->points);
   EXPECT_GT(*pieces.here, pieces.counts->points);
+  // The tasks go on from where the particles got to: the paths are not sent back to be replayed.
+  EXPECT_GT(*pieces.states, 0u);
+  EXPECT_LE(5 * *pieces.sent_back, *pieces.along_paths);
+  EXPECT_GE(*pieces.meanwhile, ahead.report.number_of_time_lines);
   // A time line costs the stages of a step where a particle crosses the cut, not a round per
   // stage of every path from the seed.
   EXPECT_LE(5 * ahead.report.number_of_sample_batches, in_batches.report.number_of_sample_batches);

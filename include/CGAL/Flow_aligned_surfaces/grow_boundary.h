@@ -350,11 +350,8 @@ Growth_report grow_boundary(TriangleMesh& tm, double distance,
         tm, vim, x, nullptr, distance, options,
         [&](const Eigen::Vector3d& p) {
           if constexpr (batched)
-            try {
-              return midpoints.at(p, 0.);
-            }
-            catch (const internal::Sample_not_ready&) {
-            }
+            if (const internal::Flow_sample* known = midpoints.known(p, 0.))
+              return *known;
           return internal::sample_flow(field, construct_point(p.x(), p.y(), p.z()));
         },
         caller);

@@ -154,7 +154,8 @@ namespace internal {
 // The field seen by the integrator: std::optional<Eigen::Vector3d>(x, t); zero at critical
 // points (the integrator stagnates there), std::nullopt outside the domain or for NaN vectors.
 // A field that answers batches (`sample()`) is seen through `replay`: the samples the front's
-// particles asked for in earlier rounds (batched_sampling.h).
+// particles asked for in earlier rounds (batched_sampling.h); where it has none yet, the task
+// waits (`waiting()`) and the integrator stops its step.
 template <class FlowField, class Point_3>
 struct Front_field {
   using Value = std::optional<Eigen::Vector3d>;
@@ -168,6 +169,8 @@ struct Front_field {
   using Answer = typename Field_answer<FlowField, Point_3, is_unsteady>::type;
   static constexpr bool integrates_ahead = Integrates_ahead<FlowField, Point_3, Answer, is_unsteady>::value;
   static constexpr bool answers_here = Answers_here<FlowField, Point_3, Answer, is_unsteady>::value;
+  static constexpr bool integrates_ahead_meanwhile =
+      integrates_ahead && Integrates_ahead_meanwhile<FlowField, Answer>::value;
 
   Value operator()(const Eigen::Vector3d& x, double t) const
   {
@@ -175,7 +178,9 @@ struct Front_field {
       if constexpr (answers_here)
         if (std::optional<Answer> here = sample_here(x, t))
           return value(classified(*here));
-      return replay->at(x, t);
+      if (const Value* known = replay->ask(x, t))
+        return *known;
+      return std::nullopt;
     }
     Flow_sample s;
     if constexpr (is_unsteady)
@@ -185,17 +190,22 @@ struct Front_field {
     return value(s);
   }
 
+  /// Whether the running task waits for a sample asked for in this round.
+  bool waiting() const { return replay != nullptr && replay->waiting(); }
+
   /// The values at the points (x, t) in one batch of the field.
   std::vector<Value> operator()(const std::vector<std::pair<Eigen::Vector3d, double>>& points) const
   {
-    return (*this)(points, Integration_ahead(), [](const Eigen::Vector3d&, double, const Value&) {});
+    return (*this)(points, Integration_ahead(), [](const Eigen::Vector3d&, double, const Value&) {},
+                   [](std::size_t, const double*) {});
   }
 
   /// The same; a field that integrates ahead (integration_ahead.h) is also told of the particles
-  /// `ahead`, and `add(x, t, value)` is called for each sample it took along their paths.
-  template <class Add>
+  /// `ahead`: `go_on(k, state)` is called with the state that the k-th of them reached, and
+  /// `add(x, t, value)` for each sample taken after those states.
+  template <class Add, class Go_on>
   std::vector<Value> operator()(const std::vector<std::pair<Eigen::Vector3d, double>>& points,
-                                const Integration_ahead& ahead, const Add& add) const
+                                const Integration_ahead& ahead, const Add& add, const Go_on& go_on) const
   {
     std::vector<Point_3> ps;
     std::vector<double> times;
@@ -205,13 +215,12 @@ struct Front_field {
     }
     std::vector<Flow_sample> samples;
     if constexpr (integrates_ahead) {
-      std::vector<Sample_ahead<Answer>> along;
+      Integrated_ahead<Answer> along;
       if constexpr (is_unsteady)
         samples = classified(field->sample(ps, times, ahead, along), ps.size());
       else
         samples = classified(field->sample(ps, ahead, along), ps.size());
-      for (const Sample_ahead<Answer>& a : along)
-        add(a.x, a.t, value(classified(a.answer)));
+      take_up(ahead, along, add, go_on);
     }
     else if constexpr (is_unsteady)
       samples = sample_flow_at(*field, ps, times);
@@ -223,7 +232,32 @@ struct Front_field {
     return values;
   }
 
+  /// Has the field integrate the particles `ahead` while `work()` runs, then calls `go_on` and
+  /// `add` as the batch operation above does.
+  template <class Work, class Add, class Go_on>
+  void integrate_ahead_meanwhile(const Integration_ahead& ahead, const Work& work, const Add& add,
+                                 const Go_on& go_on) const
+  {
+    Integrated_ahead<Answer> along;
+    field->integrate_ahead_meanwhile(ahead, along, work);
+    take_up(ahead, along, add, go_on);
+  }
+
 private:
+  template <class Add, class Go_on>
+  void take_up(const Integration_ahead& ahead, const Integrated_ahead<Answer>& along, const Add& add,
+               const Go_on& go_on) const
+  {
+    for (const State_ahead& reached : along.states) {
+      if (reached.particle >= ahead.size())
+        throw std::logic_error("a flow field integrated ahead particle " + std::to_string(reached.particle) +
+                               " of " + std::to_string(ahead.size()));
+      go_on(reached.particle, reached.state.data());
+    }
+    for (const Sample_ahead<Answer>& a : along.samples)
+      add(a.x, a.t, value(classified(a.answer)));
+  }
+
   static Point_3 point(const Eigen::Vector3d& x)
   {
     using FT = typename CGAL::Kernel_traits<Point_3>::Kernel::FT;
@@ -540,13 +574,13 @@ private:
     run_tasks(
         us.size(),
         [&](std::size_t i) {
-          if (!released[i])
-            released[i].emplace(us[i],
-                                Integrator(m_field, m_seed(us[i]), m_s.t0, m_s.direction, m_s.tolerances));
+          if (!released[i] && !make_particle(released[i], us[i]))
+            return;
           if (released[i]->integrator.is_start_inside())
             ok[i] = advance(*released[i], reach[i]);
         },
-        [&](std::size_t i, Integration_ahead& ahead) { add_ahead(released[i], us[i], reach[i], ahead); });
+        [&](std::size_t i, Integration_ahead& ahead) { add_ahead(released[i], us[i], reach[i], ahead); },
+        [&](std::size_t i, const double* state) { go_on(released[i], us[i], state); });
     for (std::size_t i = 0; i < us.size(); ++i)
       if (!ok[i])
         released[i].reset();
@@ -563,8 +597,30 @@ private:
         [&](std::size_t i, Integration_ahead& ahead) {
           if (!reach[i])
             ahead.add_state(ps[i]->integrator);
-        });
+        },
+        [&](std::size_t i, const double* state) { ps[i]->integrator = Integrator(m_field, state); });
     return ok;
+  }
+
+  // Makes the particle released at c(u) into `p`; false when its task waits for the sample there.
+  bool make_particle(std::optional<Particle>& p, double u) const
+  {
+    Integrator it(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances);
+    if (m_field.waiting())
+      return false;
+    p.emplace(u, std::move(it));
+    return true;
+  }
+
+  // A released particle (at `u` on the seed, not made yet when `p` is empty) goes on from the
+  // `state` that a field integrating ahead took it to.
+  void go_on(std::optional<Particle>& p, double u, const double* state) const
+  {
+    Integrator it(m_field, state);
+    if (p)
+      p->integrator = std::move(it);
+    else
+      p.emplace(u, std::move(it));
   }
 
   // Adds a released particle (at `u` on the seed, not made yet when `p` is empty) to `ahead`
@@ -584,28 +640,50 @@ private:
   // one batch of samples per round (batched_sampling.h); a task must then commit its progress
   // only where it can be resumed: `reach` and the integrators' whole steps.  A field that
   // integrates ahead is told with each batch where the waiting tasks' particles stand
-  // (`add_ahead(i, ahead)`), and its samples along their paths are replayed too.
-  template <class Task, class Add_ahead>
-  void run_tasks(std::size_t n, const Task& task, const Add_ahead& add_ahead)
+  // (`add_ahead(i, ahead)`); task i goes on from the state its particle reached there
+  // (`go_on(i, state)`), and the samples taken after it are replayed.  A field that integrates
+  // ahead meanwhile is told of every task's particle while the first round runs.
+  template <class Task, class Add_ahead, class Go_on>
+  void run_tasks(std::size_t n, const Task& task, const Add_ahead& add_ahead, const Go_on& go_on)
   {
     if constexpr (!Field::is_batched) {
       for (std::size_t i = 0; i < n; ++i)
         task(i);
     }
     else {
-      auto answer = [&](const auto& points, const std::vector<std::size_t>& waiting) {
+      std::vector<std::size_t> task_of_particle;
+      auto particles_of = [&](const std::vector<std::size_t>& tasks) {
         Integration_ahead ahead = integration_ahead();
-        if constexpr (Field::integrates_ahead)
-          for (std::size_t i : waiting)
-            add_ahead(i, ahead);
+        task_of_particle.clear();
+        for (std::size_t i : tasks) {
+          add_ahead(i, ahead);
+          task_of_particle.resize(ahead.size(), i);
+        }
+        return ahead;
+      };
+      auto add = [this](const Eigen::Vector3d& x, double t, std::optional<Eigen::Vector3d> v) {
+        m_replay.add(x, t, std::move(v));
+      };
+      auto go_on_task = [&](std::size_t k, const double* state) { go_on(task_of_particle[k], state); };
+      auto answer = [&](const auto& points, const std::vector<std::size_t>& waiting) {
         auto field = m_field;
         field.replay = nullptr;
-        return field(points, ahead,
-                     [this](const Eigen::Vector3d& x, double t, std::optional<Eigen::Vector3d> v) {
-                       m_replay.add(x, t, std::move(v));
-                     });
+        if constexpr (Field::integrates_ahead)
+          return field(points, particles_of(waiting), add, go_on_task);
+        else
+          return field(points);
       };
-      m_report.number_of_sample_batches += run_in_rounds(n, m_replay, task, answer);
+      auto first = [&](const auto& round) {
+        if constexpr (Field::integrates_ahead_meanwhile) {
+          std::vector<std::size_t> all(n);
+          for (std::size_t i = 0; i < n; ++i)
+            all[i] = i;
+          m_field.integrate_ahead_meanwhile(particles_of(all), round, add, go_on_task);
+        }
+        else
+          round();
+      };
+      m_report.number_of_sample_batches += run_in_rounds(n, m_replay, task, answer, first);
       m_replay.clear();
     }
   }
@@ -635,6 +713,8 @@ private:
       return false;
     if (!reach)
       reach = integrate_to_line(p.integrator);
+    if (!reach) // waits for a sample
+      return false;
     if (*reach == Reach::LOST)
       return false;
     const Integrator& it = p.integrator;
@@ -642,6 +722,8 @@ private:
     const double tau = exit ? it.parameter() : m_parameter;
     const Eigen::Vector3d x = exit ? it.position() : it.dense_output(m_parameter);
     const std::optional<Eigen::Vector3d> v = m_field(x, m_s.t0 + m_s.direction * tau);
+    if (m_field.waiting())
+      return false;
     p.at_boundary = exit;
     p.tau = tau;
     p.x = x;
@@ -652,13 +734,16 @@ private:
     return speed > 0;
   }
 
-  // Integrates to the current time line, a whole step at a time (resumable after each).
-  Reach integrate_to_line(Integrator& it)
+  // Integrates to the current time line, a whole step at a time (resumable after each); nothing
+  // when the task waits for a sample.
+  std::optional<Reach> integrate_to_line(Integrator& it)
   {
     while (it.parameter() < m_parameter) {
       if (it.number_of_accepted_steps() >= m_s.max_steps)
         return Reach::LOST;
       const Step_result r = whole_step(it);
+      if (r == Step_result::SUSPENDED)
+        return std::nullopt;
       if (r == Step_result::LEFT_DOMAIN)
         return it.parameter() <= m_previous_parameter + 1e-3 * m_s.step ? Reach::LOST : Reach::EXIT;
       if (r != Step_result::ACCEPTED)
@@ -667,8 +752,8 @@ private:
     return Reach::LINE;
   }
 
-  // One step of `it`; with samples in rounds on a copy, so that a step interrupted for its
-  // samples starts again from where it began.
+  // One step of `it`; with samples in rounds on a copy, so that a step suspended for its samples
+  // starts again from where it began.
   Step_result whole_step(Integrator& it) const
   {
     if constexpr (!Field::is_batched)
@@ -676,7 +761,8 @@ private:
     else {
       Integrator trial = it;
       const Step_result r = trial.step();
-      it = std::move(trial);
+      if (r != Step_result::SUSPENDED)
+        it = std::move(trial);
       return r;
     }
   }
@@ -697,14 +783,14 @@ private:
     run_tasks(
         n + 1,
         [&](std::size_t i) {
-          const double u = us[i];
-          if (!particles[i])
-            particles[i].emplace(u, Integrator(m_field, m_seed(u), m_s.t0, m_s.direction, m_s.tolerances));
+          if (!particles[i] && !make_particle(particles[i], us[i]))
+            return;
           inside[i] = particles[i]->integrator.is_start_inside();
           if (inside[i])
             moving[i] = advance(*particles[i], reach[i]); // τ = 0: the flow direction at the seed point
         },
-        [&](std::size_t i, Integration_ahead& ahead) { add_ahead(particles[i], us[i], reach[i], ahead); });
+        [&](std::size_t i, Integration_ahead& ahead) { add_ahead(particles[i], us[i], reach[i], ahead); },
+        [&](std::size_t i, const double* state) { go_on(particles[i], us[i], state); });
     std::vector<Particle> piece;
     for (std::size_t i = 0; i <= n; ++i) {
       if (moving[i]) {

@@ -16,6 +16,10 @@
 // The field may leave its domain (returns std::nullopt): a step with a stage outside is
 // shortened by bisection on its length until the end point is inside and within the boundary
 // tolerance (along the path) of the first rejected length; that shortened step is accepted.
+//
+// A field whose samples come in rounds (batched_sampling.h) may have none yet at a point: it has
+// `bool waiting() const`, true once it answered such a point; the step then stops there
+// (`SUSPENDED`), and the integrator is to be dropped for a copy taken before the step.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_DORMAND_PRINCE_INTEGRATOR_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_DORMAND_PRINCE_INTEGRATOR_H
@@ -55,12 +59,20 @@ struct Integration_tolerances {
 enum class Step_result {
   ACCEPTED,      ///< one step within tolerance, inside the domain
   LEFT_DOMAIN,   ///< the last (shortened) step ends within the boundary tolerance of the exit
+  SUSPENDED,     ///< the field has no sample yet at a point of the step; drop this integrator
   STAGNATION,    ///< the speed at the current point is at most the stagnation speed; no step
   STEP_UNDERFLOW ///< the step needed for the tolerance is below `min_step`; no step
 };
 
 // See the top of the file.  `Field`: std::optional<Eigen::Vector3d>(const Eigen::Vector3d& x,
 // double t); std::nullopt (or a non-finite vector) means outside the domain.
+template <class Field, class = void>
+struct Field_may_wait : std::false_type {
+};
+template <class Field>
+struct Field_may_wait<Field, std::void_t<decltype(std::declval<const Field&>().waiting())>> : std::true_type {
+};
+
 template <class Field>
 class Dormand_prince_integrator {
 public:
@@ -96,6 +108,16 @@ public:
   /// whether f(x0, t0) exists; when not, `step()` must not be called.
   bool is_start_inside() const { return m_start_inside; }
 
+  /// Whether the field waits for a sample that this integrator asked for (a field with
+  /// `waiting()`; false for any other): it is then to be dropped.
+  bool waiting() const
+  {
+    if constexpr (Field_may_wait<Field>::value)
+      return m_f.waiting();
+    else
+      return false;
+  }
+
   /// one accepted step; see `Step_result`.  Leaving the domain takes two calls: the first
   /// returns `ACCEPTED` with the step shortened to end within the boundary tolerance of the exit,
   /// the second confirms it from there with a step of twice the bracket and returns
@@ -107,6 +129,8 @@ public:
       return Step_result::STAGNATION;
     if (m_h == 0)
       m_h = m_tol.initial_step > 0 ? m_tol.initial_step : starting_step();
+    if (waiting())
+      return Step_result::SUSPENDED;
     const bool confirming = m_confirming;
     m_confirming = false;
 
@@ -148,6 +172,8 @@ public:
         return Step_result::STEP_UNDERFLOW;
       Trial trial;
       if (!attempt(h, trial, speed)) {
+        if (waiting())
+          return Step_result::SUSPENDED;
         outside = h;
         continue;
       }
@@ -351,7 +377,7 @@ private:
     Eigen::Vector3d k;
     // An explicit Euler step; halve it while it leaves the domain (bounded).
     bool in = false;
-    for (int i = 0; i < 60 && !(in = evaluate(m_x + h * m_k1, m_tau + h, k)); ++i)
+    for (int i = 0; i < 60 && !(in = evaluate(m_x + h * m_k1, m_tau + h, k)) && !waiting(); ++i)
       h *= 0.5;
     if (!in)
       return std::max(h, m_tol.min_step);

@@ -7,9 +7,10 @@
 // the points they know beforehand in one batch (`sample_flow_at()`), and run the work whose
 // next point depends on the last sample (the stages of a Runge-Kutta step) as resumable tasks
 // in rounds (`run_in_rounds()`): each round runs every task until it asks for a sample not known
-// yet (`Replay_samples` throws `Sample_not_ready`), and one batch answers all of them.  A task
-// commits its progress only at points where it can be taken up again, so it computes exactly
-// what it computes with samples at hand: batched or not, the results are the same, bit for bit.
+// yet (`Replay_samples::ask()` answers nothing and the task returns, waiting), and one batch
+// answers all of them.  A task commits its progress only at points where it can be taken up
+// again, so it computes exactly what it computes with samples at hand: batched or not, the
+// results are the same, bit for bit.
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_BATCHED_SAMPLING_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_BATCHED_SAMPLING_H
@@ -110,25 +111,37 @@ std::vector<Flow_sample> sample_flow_at(const FlowField& field, const std::vecto
   return samples;
 }
 
-/// Thrown by `Replay_samples::at()` for a point whose sample is not known yet.
-struct Sample_not_ready {};
-
 /// The samples known so far at points (x, t), and the points asked for that are not.  `Value`
 /// is what the tasks are answered (their field's view of a sample).
 template <class Value>
 class Replay_samples {
 public:
-  /// The sample at (x, t); when it is not known, records the point and throws `Sample_not_ready`.
-  const Value& at(const Eigen::Vector3d& x, double t)
+  /// The sample at (x, t), or null when it is not known.
+  const Value* known(const Eigen::Vector3d& x, double t) const
+  {
+    const auto found = m_known.find(key(x, t));
+    return found != m_known.end() ? &found->second : nullptr;
+  }
+
+  /// The sample at (x, t) for the running task; when it is not known, records the point, marks
+  /// the task as waiting (`waiting()`) and returns null: the task must then return without
+  /// committing what it computed from the missing sample.
+  const Value* ask(const Eigen::Vector3d& x, double t)
   {
     const Key k = key(x, t);
     const auto found = m_known.find(k);
     if (found != m_known.end())
-      return found->second;
+      return &found->second;
     if (m_asked.emplace(k, m_missing.size()).second)
       m_missing.emplace_back(x, t);
-    throw Sample_not_ready();
+    m_waiting = true;
+    return nullptr;
   }
+
+  /// Whether the running task asked for a sample not known yet.
+  bool waiting() const { return m_waiting; }
+  /// A task starts (or resumes): it waits for nothing yet.
+  void start_task() { m_waiting = false; }
 
   /// The points asked for since the last call, each once, in the order first asked.
   std::vector<std::pair<Eigen::Vector3d, double>> take_missing()
@@ -145,6 +158,7 @@ public:
     m_known.clear();
     m_asked.clear();
     m_missing.clear();
+    m_waiting = false;
   }
 
 private:
@@ -170,33 +184,35 @@ private:
   std::unordered_map<Key, Value, Key_hash> m_known;
   std::unordered_map<Key, std::size_t, Key_hash> m_asked;
   std::vector<std::pair<Eigen::Vector3d, double>> m_missing;
+  bool m_waiting = false;
 };
 
 /// Runs tasks 0 … n-1 to their end: `resume(i)` runs task i on from where it last committed its
-/// progress, and either ends it or throws `Sample_not_ready` (from `samples.at()`).  After each
+/// progress, and either ends it or returns waiting for a sample (`samples.ask()`).  After each
 /// round over the unfinished tasks, `answer(missing, waiting)` gives the values at the points they
 /// asked for, in one batch, and they are added to `samples`; `waiting` are the tasks that wait
-/// (an answer may add more samples along their way: integration_ahead.h).  Returns the number of
-/// batches.
-template <class Value, class Resume, class Answer>
+/// (an answer may add more samples along their way: integration_ahead.h).  The first round runs
+/// within `first(round)`, which calls `round()` once and may have other processes work for the
+/// tasks meanwhile.  Returns the number of batches.
+template <class Value, class Resume, class Answer, class First>
 std::size_t run_in_rounds(std::size_t n, Replay_samples<Value>& samples, const Resume& resume,
-                          const Answer& answer)
+                          const Answer& answer, const First& first)
 {
   std::vector<std::size_t> waiting(n);
   for (std::size_t i = 0; i < n; ++i)
     waiting[i] = i;
-  std::size_t batches = 0;
-  while (!waiting.empty()) {
-    std::vector<std::size_t> still;
+  std::vector<std::size_t> still;
+  auto round = [&] {
+    still.clear();
     for (std::size_t i : waiting) {
-      try {
-        resume(i);
-      } catch (const Sample_not_ready&) {
+      samples.start_task();
+      resume(i);
+      if (samples.waiting())
         still.push_back(i);
-      }
     }
-    if (still.empty())
-      break;
+  };
+  std::size_t batches = 0;
+  for (first(round); !still.empty(); round()) {
     const std::vector<std::pair<Eigen::Vector3d, double>> missing = samples.take_missing();
     if (missing.empty())
       throw std::logic_error("run_in_rounds: a task waits for a sample it did not ask for");
@@ -205,9 +221,17 @@ std::size_t run_in_rounds(std::size_t n, Replay_samples<Value>& samples, const R
     for (std::size_t k = 0; k < missing.size(); ++k)
       samples.add(missing[k].first, missing[k].second, std::move(values[k]));
     ++batches;
-    waiting = std::move(still);
+    waiting.swap(still);
   }
   return batches;
+}
+
+/// The same, the first round run like the others.
+template <class Value, class Resume, class Answer>
+std::size_t run_in_rounds(std::size_t n, Replay_samples<Value>& samples, const Resume& resume,
+                          const Answer& answer)
+{
+  return run_in_rounds(n, samples, resume, answer, [](const auto& round) { round(); });
 }
 
 } // namespace internal

@@ -6,11 +6,14 @@
 // a round per stage.  A field whose pieces live on several processes can do better when it is
 // told, with the points of a round, where the waiting particles stand (`Integration_ahead`): the
 // process that alone decides a path's samples integrates the particle on as far as it decides
-// them (`integrate_ahead()`) and sends those samples back with the round's.  The task on the
-// algorithm's process then finds them when it replays the path: the same integrator from the
+// them (`integrate_ahead()`) and sends back, with the round's samples, the state of the
+// particle's integrator after its last whole step there and the samples it took after that
+// state.  The task on the algorithm's process goes on from that state: the same integrator in the
 // same state asks for the same points and gets the same values, so the results stay the same,
-// bit for bit, in fewer rounds.  What the algorithm's own process alone decides, its tasks sample
-// at once (`Answers_here`), without a round.
+// bit for bit, and each stretch of a path is integrated once, on the process that holds it.
+// What the algorithm's own process alone decides, its tasks sample at once (`Answers_here`),
+// without a round; the other processes may integrate the particles of a batch of tasks while it
+// does (`Integrates_ahead_meanwhile`).
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_INTEGRATION_AHEAD_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_INTEGRATION_AHEAD_H
@@ -21,6 +24,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <stdexcept>
@@ -139,6 +143,22 @@ struct Sample_ahead {
   Answer answer;
 };
 
+/// Where `integrate_ahead()` took a particle: its index in the `Integration_ahead`, and the
+/// state of its integrator after its last whole step (`Dormand_prince_integrator::write_state()`).
+struct State_ahead {
+  std::size_t particle;
+  std::array<double, Integration_ahead::record_size - 1> state;
+};
+
+/// What `integrate_ahead()` gives back: the states the particles reached, and the samples taken
+/// after them (of a particle that took no whole step, all its samples), which the tasks ask for
+/// when they go on from those states.
+template <class Answer>
+struct Integrated_ahead {
+  std::vector<State_ahead> states;
+  std::vector<Sample_ahead<Answer>> samples;
+};
+
 /// The type of `FlowField`'s answer at a point (and a time, for an unsteady field).
 template <class FlowField, class Point_3, bool unsteady>
 struct Field_answer {
@@ -151,8 +171,7 @@ struct Field_answer<FlowField, Point_3, true> {
 
 /// Whether `FlowField` integrates ahead: its batch operation takes the waiting particles too,
 /// `field.sample(points, ahead, along)` (`field.sample(points, times, ahead, along)` for an
-/// unsteady field), and fills `along` (a `std::vector<Sample_ahead<Answer>>`) with the samples
-/// taken along their paths.
+/// unsteady field), and fills `along` (an `Integrated_ahead<Answer>`) with where they got to.
 template <class FlowField, class Point_3, class Answer, bool unsteady, class = void>
 struct Integrates_ahead : std::false_type {
 };
@@ -161,14 +180,14 @@ struct Integrates_ahead<
     FlowField, Point_3, Answer, false,
     std::void_t<decltype(std::declval<const FlowField&>().sample(
         std::declval<const std::vector<Point_3>&>(), std::declval<const Integration_ahead&>(),
-        std::declval<std::vector<Sample_ahead<Answer>>&>()))>> : std::true_type {
+        std::declval<Integrated_ahead<Answer>&>()))>> : std::true_type {
 };
 template <class FlowField, class Point_3, class Answer>
 struct Integrates_ahead<
     FlowField, Point_3, Answer, true,
     std::void_t<decltype(std::declval<const FlowField&>().sample(
         std::declval<const std::vector<Point_3>&>(), std::declval<const std::vector<double>&>(),
-        std::declval<const Integration_ahead&>(), std::declval<std::vector<Sample_ahead<Answer>>&>()))>>
+        std::declval<const Integration_ahead&>(), std::declval<Integrated_ahead<Answer>&>()))>>
     : std::true_type {
 };
 
@@ -192,52 +211,93 @@ struct Answers_here<FlowField, Point_3, Answer, true,
                                                     std::optional<Answer>>>> : std::true_type {
 };
 
-/// Integrates the particles of `ahead` on, each until its next sample is not decided here
-/// (`decides(x)` false), it reaches the target or leaves the domain, and calls
-/// `record(Sample_ahead<Answer>)` for every sample taken, also the one at the particle's end (at
-/// the target, or where it left).  `answer(x, t)` is the field's answer at (x, t): what its
-/// batch operation answers there.  The records are the samples that the integrating tasks ask
-/// for when they replay these paths (integrate_stream_surface.h: `advance()`).
-template <class Answer, class Sampler, class Decides, class Record>
-void integrate_ahead(const Integration_ahead& ahead, const Sampler& answer, const Decides& decides,
-                     const Record& record)
+/// Whether a field that integrates ahead can also have the other processes integrate while this
+/// one works: `field.integrate_ahead_meanwhile(ahead, along, work)` tells them of the particles
+/// `ahead`, calls `work()` (which must not sample the field but where this process alone decides:
+/// `Answers_here`) and then fills `along` as the batch operation does.
+template <class FlowField, class Answer, class = void>
+struct Integrates_ahead_meanwhile : std::false_type {
+};
+template <class FlowField, class Answer>
+struct Integrates_ahead_meanwhile<FlowField, Answer,
+                                  std::void_t<decltype(std::declval<const FlowField&>().integrate_ahead_meanwhile(
+                                      std::declval<const Integration_ahead&>(),
+                                      std::declval<Integrated_ahead<Answer>&>(), std::declval<void (*)()>()))>>
+    : std::true_type {
+};
+
+// Integrates the particle `i` of `ahead` (integrator `it`, sampling `field`) on as
+// `integrate_ahead()` does; returns its state after its last whole step, if it took one, and
+// keeps in `taken` the samples after it.
+template <class Integrator, class Field, class Taken>
+std::optional<State_ahead> integrate_particle_ahead(Integrator& it, const Field& field, std::size_t i,
+                                                    const Integration_ahead& ahead, Taken& taken)
 {
+  std::optional<State_ahead> reached;
+  Step_result result = Step_result::ACCEPTED;
+  while (result == Step_result::ACCEPTED && it.parameter() < ahead.target &&
+         double(it.number_of_accepted_steps()) < ahead.max_steps) {
+    result = it.step();
+    if (result == Step_result::ACCEPTED) {
+      reached = State_ahead{i, {}};
+      it.write_state(reached->state.data());
+      taken.clear();
+    }
+  }
+  if (result == Step_result::LEFT_DOMAIN)
+    field(it.position(), ahead.t0 + ahead.direction * it.parameter());
+  else if (result == Step_result::ACCEPTED && it.parameter() >= ahead.target)
+    field(it.dense_output(ahead.target), ahead.t0 + ahead.direction * ahead.target);
+  return reached;
+}
+
+/// Integrates the particles of `ahead` on, each until its next sample is not decided here
+/// (`decides(x)` false), it reaches the target or leaves the domain, also sampling the field at
+/// the particle's end (at the target, or where it left), and adds to `along` where each one got
+/// to.  `answer(x, t)` is the field's answer at (x, t): what its batch operation answers there.
+/// The integrating tasks go on from those states and ask for those samples
+/// (integrate_stream_surface.h: `advance()`).
+template <class Answer, class Sampler, class Decides>
+void integrate_ahead(const Integration_ahead& ahead, const Sampler& answer, const Decides& decides,
+                     Integrated_ahead<Answer>& along)
+{
+  std::vector<Sample_ahead<Answer>> taken; // by the current particle since its last whole step
+  bool stopped = false;                     // at a sample not decided here
   struct Field {
     const Integration_ahead* ahead;
     const Sampler* answer;
     const Decides* decides;
-    const Record* record;
+    std::vector<Sample_ahead<Answer>>* taken;
+    bool* stopped;
+    bool waiting() const { return *stopped; }
     std::optional<Eigen::Vector3d> operator()(const Eigen::Vector3d& x, double t) const
     {
-      if (!(*decides)(x))
-        throw Sample_not_ready();
+      if (*stopped || !(*decides)(x)) {
+        *stopped = true;
+        return std::nullopt;
+      }
       Answer a = (*answer)(x, t);
       Flow_sample s = unclassified_sample(a);
       classify_sample(s);
-      (*record)(Sample_ahead<Answer>{x, t, std::move(a)});
+      taken->push_back(Sample_ahead<Answer>{x, t, std::move(a)});
       return integrand_value(s, ahead->normalize);
     }
   };
   using Integrator = Dormand_prince_integrator<Field>;
-  const Field field{&ahead, &answer, &decides, &record};
+  const Field field{&ahead, &answer, &decides, &taken, &stopped};
   for (std::size_t i = 0; i < ahead.size(); ++i) {
     const double* r = ahead.particles.data() + i * Integration_ahead::record_size;
-    try {
-      Integrator it = r[0] == 0 ? Integrator(field, Eigen::Vector3d(r[1], r[2], r[3]), ahead.t0,
-                                             ahead.direction, ahead.tolerances)
-                                : Integrator(field, r + 1);
-      if (!it.is_start_inside())
-        continue;
-      Step_result result = Step_result::ACCEPTED;
-      while (result == Step_result::ACCEPTED && it.parameter() < ahead.target &&
-             double(it.number_of_accepted_steps()) < ahead.max_steps)
-        result = it.step();
-      if (result == Step_result::LEFT_DOMAIN)
-        field(it.position(), ahead.t0 + ahead.direction * it.parameter());
-      else if (result == Step_result::ACCEPTED && it.parameter() >= ahead.target)
-        field(it.dense_output(ahead.target), ahead.t0 + ahead.direction * ahead.target);
-    } catch (const Sample_not_ready&) {
-    }
+    std::optional<State_ahead> reached;
+    taken.clear();
+    stopped = false;
+    Integrator it = r[0] == 0 ? Integrator(field, Eigen::Vector3d(r[1], r[2], r[3]), ahead.t0, ahead.direction,
+                                           ahead.tolerances)
+                              : Integrator(field, r + 1);
+    if (it.is_start_inside())
+      reached = integrate_particle_ahead(it, field, i, ahead, taken);
+    if (reached)
+      along.states.push_back(*reached);
+    along.samples.insert(along.samples.end(), taken.begin(), taken.end());
   }
 }
 

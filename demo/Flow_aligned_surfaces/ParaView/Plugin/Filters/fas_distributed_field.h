@@ -17,9 +17,10 @@
 //
 // A stream or path surface's rounds also tell where their waiting particles stand
 // (integration_ahead.h): the ranks other than 0 integrate them on while they alone decide their
-// samples (no other piece's bounds hold the point), rank 0 gets those samples with the round's,
-// and rank 0 samples at once what its own piece alone decides (`sample_here()`), so a path costs
-// a round where it crosses from piece to piece, not one per Runge-Kutta stage.
+// samples (no other piece's bounds hold the point) and send rank 0, with the round's samples,
+// the states the particles reached, from which its tasks go on; rank 0 samples at once what its
+// own piece alone decides (`sample_here()`).  So a path costs a round where it crosses from piece
+// to piece, not one per Runge-Kutta stage, and each stretch of it is integrated once.
 //
 // A temporal input is sampled at a time: each rank interpolates its piece's steps around it
 // linearly in time (Unsteady_flow_field_3), and rank 0 sends the time with every exchange.
@@ -48,6 +49,7 @@
 #include <cstdint>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -87,11 +89,12 @@ using Piece_field = FAS::Time_slice_flow_field_3<FAS::Unsteady_flow_field_3<Velo
 constexpr double unsteady_time = std::numeric_limits<double>::quiet_NaN();
 
 /// What a batch asks of the ranks besides its points: the particles to integrate ahead, the time
-/// at which a steady field samples them (or `unsteady_time`) and where their samples go.
+/// at which a steady field samples them (or `unsteady_time`) and where their states and samples
+/// go.
 struct Ahead_request {
   const FAS::internal::Integration_ahead* ahead = nullptr;
   double time = unsteady_time;
-  std::vector<FAS::internal::Sample_ahead<std::optional<Vector>>>* along = nullptr;
+  FAS::internal::Integrated_ahead<std::optional<Vector>>* along = nullptr;
 };
 
 /// A `FlowField_3` over a data set whose pieces live on the ranks of the global controller.  On
@@ -102,7 +105,7 @@ class Distributed_velocity_field {
 public:
   using Sample = std::optional<Vector>;
   using Integration_ahead = FAS::internal::Integration_ahead;
-  using Sample_ahead = FAS::internal::Sample_ahead<Sample>;
+  using Integrated_ahead = FAS::internal::Integrated_ahead<Sample>;
 
   Distributed_velocity_field() : m_state(std::make_shared<State>()) {}
 
@@ -219,9 +222,11 @@ private:
   // Rank 0: the samples at `points`, from every rank (collective: the other ranks are in
   // `serve()`).  Throws std::runtime_error when a rank failed to sample its piece.
   std::vector<Sample> exchange(const std::vector<Point>& points, const std::vector<double>& times,
-    const Ahead_request& request = {}) const
+    const Ahead_request& request = {}, const std::function<void()>& meanwhile = {}) const
   {
     State& s = *m_state;
+    if (s.working_meanwhile)
+      throw std::logic_error("the field was asked for an exchange while the ranks integrate ahead");
     const int ranks = s.controller->GetNumberOfProcesses();
     // (x, y, z, t) per point.
     std::vector<double> coordinates(4 * points.size());
@@ -235,6 +240,8 @@ private:
     if (request.ahead != nullptr && !request.ahead->empty())
       round.ahead = request.ahead->to_numbers();
     send(PROBE, round);
+    if (meanwhile)
+      work_meanwhile(round, meanwhile);
     const std::vector<double> total = reply(round, request.along);
 
     ++s.exchanges;
@@ -323,17 +330,38 @@ public:
   }
 
   /// `sample(points)`, integrating the particles `ahead` on where a rank alone decides their
-  /// samples, which are put in `along` (integration_ahead.h).
+  /// samples; where they got to is put in `along` (integration_ahead.h).
   std::vector<Sample> sample(const std::vector<Point>& points, const Integration_ahead& ahead,
-    std::vector<Sample_ahead>& along) const
+    Integrated_ahead& along) const
   {
     const double t = m_state->time;
     return batch(points, std::vector<double>(points.size(), t), true, Ahead_request{ &ahead, t, &along });
   }
 
+  /// Has the ranks other than 0 integrate the particles `ahead` on where they alone decide their
+  /// samples (at the time `time`, or each sample's own: `unsteady_time`) while rank 0 runs `work()`,
+  /// which must not exchange; then puts where they got to in `along` (integration_ahead.h).  On
+  /// one process, only `work()`.
+  void integrate_ahead_meanwhile(const Integration_ahead& ahead, Integrated_ahead& along,
+    const std::function<void()>& work, double time) const
+  {
+    if (!distributed() || ahead.empty())
+      return work();
+    if (std::this_thread::get_id() != m_state->owner)
+      throw std::logic_error("the field was asked to integrate ahead in a parallel loop");
+    exchange({}, {}, Ahead_request{ &ahead, time, &along }, work);
+  }
+
+  /// The same at the time at which rank 0 samples.
+  void integrate_ahead_meanwhile(const Integration_ahead& ahead, Integrated_ahead& along,
+    const std::function<void()>& work) const
+  {
+    integrate_ahead_meanwhile(ahead, along, work, m_state->time);
+  }
+
   /// `sample(points, times)`, integrating the particles `ahead` on in the same way.
   std::vector<Sample> sample(const std::vector<Point>& points, const std::vector<double>& times,
-    const Integration_ahead& ahead, std::vector<Sample_ahead>& along) const
+    const Integration_ahead& ahead, Integrated_ahead& along) const
   {
     return batch(points, times, false, Ahead_request{ &ahead, unsteady_time, &along });
   }
@@ -558,8 +586,8 @@ private:
 
   // Every rank's answer to `round` (collective): the sum of the ranks' replies on rank 0
   // (`sample_local()`, followed by the number of values each rank integrated ahead), and there
-  // the samples integrated ahead in `along`.
-  std::vector<double> reply(const Round& round, std::vector<Sample_ahead>* along) const
+  // where the particles integrated ahead got to in `along` (`integrate_here()`).
+  std::vector<double> reply(const Round& round, Integrated_ahead* along) const
   {
     const State& s = *m_state;
     const std::size_t ranks = std::size_t(s.controller->GetNumberOfProcesses());
@@ -581,13 +609,58 @@ private:
     std::vector<double> all(std::size_t(offsets.back() + lengths.back()));
     s.controller->GatherV(ahead.data(), all.data(), vtkIdType(ahead.size()), lengths.data(), offsets.data(), 0);
     if (along != nullptr)
-      for (std::size_t i = 0; i + 8 <= all.size(); i += 8)
-      {
-        const double* r = &all[i];
-        const Sample v = r[7] > 0 ? Sample(Vector(r[4], r[5], r[6])) : Sample();
-        along->push_back(Sample_ahead{ Eigen::Vector3d(r[0], r[1], r[2]), r[3], as_exchanged(v) });
-      }
+      for (std::size_t r = 0; r < ranks; ++r)
+        read_integrated(all.data() + offsets[r], std::size_t(lengths[r]), *along);
     return total;
+  }
+
+  // Rank 0: runs `work()` between sending `round` and replying to it, while the other ranks
+  // integrate its particles ahead; replies whatever way `work()` ends, so that every rank takes
+  // part in the same collectives.
+  void work_meanwhile(const Round& round, const std::function<void()>& work) const
+  {
+    State& s = *m_state;
+    s.working_meanwhile = true;
+    try
+    {
+      work();
+    }
+    catch (...)
+    {
+      s.working_meanwhile = false;
+      reply(round, nullptr);
+      throw;
+    }
+    s.working_meanwhile = false;
+  }
+
+  // The values of a state (the particle's index and its integrator's state, as many as a
+  // particle's record) and of a sample in what `integrate_here()` sends.
+  static constexpr std::size_t state_values = Integration_ahead::record_size;
+  static constexpr std::size_t sample_values = 8;
+
+  // Adds to `along` what one rank's `integrate_here()` sent (`n` values at `v`).
+  static void read_integrated(const double* v, std::size_t n, Integrated_ahead& along)
+  {
+    if (n == 0)
+      return;
+    const std::size_t states = std::size_t(v[0]), samples = std::size_t(v[1]);
+    if (n != 2 + states * state_values + samples * sample_values)
+      throw std::runtime_error("a rank sent " + std::to_string(n) + " values for " + std::to_string(states) +
+                               " states and " + std::to_string(samples) + " samples integrated ahead");
+    const double* r = v + 2;
+    for (std::size_t i = 0; i < states; ++i, r += state_values)
+    {
+      FAS::internal::State_ahead reached;
+      reached.particle = std::size_t(r[0]);
+      std::copy_n(r + 1, reached.state.size(), reached.state.begin());
+      along.states.push_back(reached);
+    }
+    for (std::size_t i = 0; i < samples; ++i, r += sample_values)
+    {
+      const Sample sample = r[7] > 0 ? Sample(Vector(r[4], r[5], r[6])) : Sample();
+      along.samples.push_back({ Eigen::Vector3d(r[0], r[1], r[2]), r[3], as_exchanged(sample) });
+    }
   }
 
   // Rank 0's sample from the sum of the ranks' replies at a point (`sample_local()`): the mean of
@@ -609,37 +682,51 @@ private:
     return combined(total);
   }
 
-  // A rank other than 0: the samples of the particles of `round` integrated on while this rank
-  // alone decides them, (x, y, z, t, vx, vy, vz, 1 or 0 for no sample) each.  Rank 0 answers
-  // those of its own piece when its tasks ask (`sample_here()`).  A rank that fails to integrate
-  // gives none.
+  // A rank other than 0: where the particles of `round` got to, integrated on while this rank
+  // alone decides their samples: the number of states and of samples, then per state the
+  // particle's index and its integrator's state, per sample (x, y, z, t, vx, vy, vz, 1 or 0 for
+  // no sample).  Rank 0 answers those of its own piece when its tasks ask (`sample_here()`).  A
+  // rank that fails to integrate sends nothing.
   std::vector<double> integrate_here(const Round& round) const
   {
     const State& s = *m_state;
-    std::vector<double> samples;
+    std::vector<double> sent;
     if (!s.local || !s.local_error.empty() || is_root())
-      return samples;
+      return sent;
     try
     {
       const auto& unsteady = s.local->unsteady_field();
       const double time = round.ahead_time;
+      Integrated_ahead along;
       FAS::internal::integrate_ahead<Sample>(
         Integration_ahead::from_numbers(round.ahead),
         [&](const Eigen::Vector3d& x, double t) {
           return unsteady(Point(x[0], x[1], x[2]), std::isnan(time) ? t : time);
         },
-        [&](const Eigen::Vector3d& x) { return decides_here(x); },
-        [&](const FAS::internal::Sample_ahead<Sample>& a) {
-          const double values[8] = { a.x[0], a.x[1], a.x[2], a.t, a.answer ? a.answer->x() : 0.,
-            a.answer ? a.answer->y() : 0., a.answer ? a.answer->z() : 0., a.answer ? 1. : 0. };
-          samples.insert(samples.end(), values, values + 8);
-        });
+        [&](const Eigen::Vector3d& x) { return decides_here(x); }, along);
+      if (along.states.empty() && along.samples.empty())
+        return sent;
+      sent.reserve(2 + along.states.size() * state_values + along.samples.size() * sample_values);
+      sent.push_back(double(along.states.size()));
+      sent.push_back(double(along.samples.size()));
+      for (const FAS::internal::State_ahead& reached : along.states)
+      {
+        sent.push_back(double(reached.particle));
+        sent.insert(sent.end(), reached.state.begin(), reached.state.end());
+      }
+      for (const FAS::internal::Sample_ahead<Sample>& a : along.samples)
+      {
+        const Sample& v = a.answer;
+        const double values[sample_values] = { a.x[0], a.x[1], a.x[2], a.t, v ? v->x() : 0., v ? v->y() : 0.,
+          v ? v->z() : 0., v ? 1. : 0. };
+        sent.insert(sent.end(), values, values + sample_values);
+      }
     }
     catch (...)
     {
-      samples.clear();
+      sent.clear();
     }
-    return samples;
+    return sent;
   }
 
   // Whether this rank's piece alone decides the exchange's sample at `x`: no other rank's piece
@@ -795,6 +882,7 @@ private:
     std::vector<std::array<double, 6>> piece_bounds; // of every rank's piece (empty: no cells)
     double bounds_margin = 0;
     std::thread::id owner;                           // the thread that may exchange
+    bool working_meanwhile = false;                  // rank 0 works while the ranks integrate
     double time = 0;                                 // at which rank 0 samples
     std::vector<Sampled_step> sampled;               // the steps `local` interpolates
     Velocity_selection selection;
@@ -937,9 +1025,14 @@ struct Unsteady_view {
   }
   std::vector<Distributed_velocity_field::Sample> sample(const std::vector<Point>& points,
     const std::vector<double>& times, const Distributed_velocity_field::Integration_ahead& ahead,
-    std::vector<Distributed_velocity_field::Sample_ahead>& along) const
+    Distributed_velocity_field::Integrated_ahead& along) const
   {
     return field.sample(points, times, ahead, along);
+  }
+  void integrate_ahead_meanwhile(const Distributed_velocity_field::Integration_ahead& ahead,
+    Distributed_velocity_field::Integrated_ahead& along, const std::function<void()>& work) const
+  {
+    field.integrate_ahead_meanwhile(ahead, along, work, unsteady_time);
   }
 };
 
