@@ -497,6 +497,16 @@ TEST(BatchedSampling, AnIntegratorGoesOnFromItsNumbers)
     ASSERT_EQ(a.dense_output(a.parameter() - 1e-3), b.dense_output(b.parameter() - 1e-3));
   }
   EXPECT_EQ(a.number_of_evaluations(), b.number_of_evaluations());
+
+  // The particles to integrate ahead tell where they stand, also when only some are kept.
+  FAS::internal::Integration_ahead ahead;
+  ahead.add_start(Eigen::Vector3d(1, 2, 3));
+  ahead.add_state(a);
+  EXPECT_EQ(ahead.position(0), Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(ahead.position(1), a.position());
+  const FAS::internal::Integration_ahead kept = ahead.only({1});
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept.position(0), a.position());
   EXPECT_THROW(FAS::internal::Integration_ahead::from_numbers(std::vector<double>(14, 0.)),
                std::invalid_argument);
 }

@@ -67,6 +67,26 @@ struct Integration_ahead {
   std::size_t size() const { return particles.size() / record_size; }
   bool empty() const { return particles.empty(); }
 
+  /// Where particle `i` stands: its start point, or its integrator's position.
+  Eigen::Vector3d position(std::size_t i) const
+  {
+    const double* r = particles.data() + i * record_size;
+    if (r[0] == 0)
+      return Eigen::Vector3d(r[1], r[2], r[3]);
+    return Dormand_prince_integrator<No_field>(No_field(), r + 1).position();
+  }
+
+  /// The same settings with the particles `kept` (indices, in their order).
+  Integration_ahead only(const std::vector<std::size_t>& kept) const
+  {
+    Integration_ahead a = *this;
+    a.particles.clear();
+    for (std::size_t i : kept)
+      a.particles.insert(a.particles.end(), particles.begin() + std::ptrdiff_t(i * record_size),
+                         particles.begin() + std::ptrdiff_t((i + 1) * record_size));
+    return a;
+  }
+
   void add_start(const Eigen::Vector3d& x0)
   {
     double* r = new_record(0.);
@@ -125,6 +145,11 @@ struct Integration_ahead {
 
 private:
   static constexpr std::size_t settings_size = 13;
+
+  // The field of an integrator read only for its state.
+  struct No_field {
+    std::optional<Eigen::Vector3d> operator()(const Eigen::Vector3d&, double) const { return std::nullopt; }
+  };
 
   double* new_record(double kind)
   {

@@ -340,16 +340,31 @@ public:
 
   /// Has the ranks other than 0 integrate the particles `ahead` on where they alone decide their
   /// samples (at the time `time`, or each sample's own: `unsteady_time`) while rank 0 runs `work()`,
-  /// which must not exchange; then puts where they got to in `along` (integration_ahead.h).  On
-  /// one process, only `work()`.
+  /// which must not exchange; then puts where they got to in `along` (integration_ahead.h).  The
+  /// particles that stand where rank 0 alone decides stay with its tasks (no other rank could take
+  /// their first step); when that is all of them, and on one process, only `work()`.
   void integrate_ahead_meanwhile(const Integration_ahead& ahead, Integrated_ahead& along,
     const std::function<void()>& work, double time) const
   {
-    if (!distributed() || ahead.empty())
+    if (!distributed())
       return work();
     if (std::this_thread::get_id() != m_state->owner)
       throw std::logic_error("the field was asked to integrate ahead in a parallel loop");
-    exchange({}, {}, Ahead_request{ &ahead, time, &along }, work);
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < ahead.size(); ++i)
+      if (!decides_here(ahead.position(i)))
+        kept.push_back(i);
+    if (kept.empty())
+      return work();
+    const Integration_ahead sent = ahead.only(kept);
+    Integrated_ahead got;
+    exchange({}, {}, Ahead_request{ &sent, time, &got }, work);
+    for (FAS::internal::State_ahead& reached : got.states)
+    {
+      reached.particle = kept.at(reached.particle);
+      along.states.push_back(reached);
+    }
+    along.samples.insert(along.samples.end(), got.samples.begin(), got.samples.end());
   }
 
   /// The same at the time at which rank 0 samples.
