@@ -2,7 +2,7 @@
 # The plugin's five filters on 1 rank, 2 ranks and 4 ranks (oversubscribed on 2 cores) of the
 # same pipeline (RESULTS.md, "ParaView plugin under MPI"): runs paraview_mpi_filters.py on each
 # form of the CYLINDER data, then compare_mpi_outputs.py (every output the same to 1e-9 on every
-# number of ranks).  About 10 minutes on 2 cores; run it with nothing else on the machine.
+# number of ranks).  About 5 minutes on 2 cores; run it with nothing else on the machine.
 #
 #   benchmark/Flow_aligned_surfaces/run_mpi_filters.sh BUILD_DIR [DATA_DIR] [FORM ...]
 #
