@@ -1,5 +1,5 @@
 """Flow Texture in pvbatch: the same texture coordinates, mask and texture as the library called
-directly, closed-form facts of the cylinder flow, and a surface outside the data."""
+directly, closed-form facts of the cylinder flow, an abort, and a surface outside the data."""
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
 import math
@@ -129,7 +129,27 @@ if t.number_of_ranks() == 1:
         raise AssertionError("the texture saved as PNG is not the texture")
     print("the texture saved as PNG has the same texels")
 
-# 6. A surface outside the data: a message naming the fault, no crash, the previous outputs kept.
+# 6. Abort (what ParaView's Abort button sets, here from a progress observer at the first stage
+# the parametrization reports): a warning and the previous outputs kept; the next change computes
+# them (the texture coordinates u = scale r + offset move by the change of the offset).
+before = t.output_sizes(texture, range(2))
+u_before = column(t.fetch_port(texture, 0), "texture_coordinates", 0)
+offset = texture.Offset
+texture.Offset = offset + 0.5
+with t.AbortOnce(texture, lambda progress: 0 < progress < 1) as abort, t.Messages() as messages:
+    after = t.output_sizes(texture, range(2))
+t.expect_message(messages, ["Flow Texture: cancelled before the parametrization was solved",
+                            "the previous output is kept"], "abort")
+if after != before or abs(abort.progress[0] - 1.0 / 3) > 1e-12:
+    raise AssertionError("abort at progress %s: outputs %s, before %s" % (abort.progress, after, before))
+texture.Offset = offset + 0.25
+u = column(t.fetch_port(texture, 0), "texture_coordinates", 0)
+worst = max(abs(a - (b + 0.25)) for a, b in zip(u, u_before))
+if len(u) != len(u_before) or worst > 1e-9:
+    raise AssertionError("after an abort, the next change gives u off by %g" % worst)
+print("Flow Texture: aborted at progress %.3f, previous outputs kept, then computed" % abort.progress[0])
+
+# 7. A surface outside the data: a message naming the fault, no crash, the previous outputs kept.
 before = t.output_sizes(texture, range(2))
 moved = Transform(Input=texture.Surface, Transform="Transform")
 moved.Transform.Translate = [100.0, 0.0, 0.0]

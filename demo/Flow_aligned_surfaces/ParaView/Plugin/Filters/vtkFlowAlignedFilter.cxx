@@ -70,6 +70,16 @@ void vtkFlowAlignedFilter::FillOtherRankOutputs(vtkInformationVector*) {}
 
 void vtkFlowAlignedFilter::AfterFailure(vtkInformationVector*, bool) {}
 
+bool vtkFlowAlignedFilter::CancelledBeforeParametrization(vtkInformationVector* outputVector)
+{
+  const bool kept = this->Flow->kept.restore(outputVector);
+  abort_handled(this);
+  vtkWarningMacro(<< this->GetLabel() << ": cancelled before the parametrization was solved"
+                  << (kept ? "; the previous output is kept" : ""));
+  this->AfterFailure(outputVector, kept);
+  return false;
+}
+
 int vtkFlowAlignedFilter::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {

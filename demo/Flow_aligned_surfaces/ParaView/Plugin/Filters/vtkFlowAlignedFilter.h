@@ -51,6 +51,9 @@ protected:
   virtual void FillOtherRankOutputs(vtkInformationVector* outputVector);
   /// Rank 0 after a failure; `kept`: whether the previous outputs were restored.
   virtual void AfterFailure(vtkInformationVector* outputVector, bool kept);
+  /// Rank 0, when an abort (ParaView's Cancel) stopped `Compute()` before its parametrization
+  /// was solved: restores the previous outputs, warns so, and returns false for `Compute()`.
+  bool CancelledBeforeParametrization(vtkInformationVector* outputVector);
 
   /// What the derived filters share (fas_flow_state.h, private to the plugin): the flow of
   /// input 0 and its time steps, the outputs kept, the pieces of this update, input 1 gathered.

@@ -181,7 +181,7 @@ bool vtkFlowAlignedParametrize::Compute(vtkInformation*, vtkInformationVector**,
     f = tm.add_property_map<Vertex, double>("v:distance", 0.).first;
     if (!FAS::compute_geodesic_distance(tm, source_vertex, f,
           FAS::parameters::intrinsic_delaunay(this->IntrinsicDelaunay != 0, CGAL::parameters::callback(progress))))
-      return this->Cancelled(outputVector);
+      return this->CancelledBeforeParametrization(outputVector);
     contoured = "geodesic_distance";
     add_vertex_array(surface, tm, contoured, 1, [&](Vertex v) { return f[v]; });
     add_field_value(surface, "source_point_id", double(source_vertex.idx()));
@@ -206,7 +206,7 @@ bool vtkFlowAlignedParametrize::Compute(vtkInformation*, vtkInformationVector**,
     bool done = false;
     std::tie(done, f, s) = parametrize(tm, progress);
     if (!done)
-      return this->Cancelled(outputVector);
+      return this->CancelledBeforeParametrization(outputVector);
     add_vertex_array(surface, tm, "r", 1, [&](Vertex v) { return f[v]; });
     add_vertex_array(surface, tm, "s", 1, [&](Vertex v) { return s[v]; });
   }
@@ -229,15 +229,6 @@ bool vtkFlowAlignedParametrize::Compute(vtkInformation*, vtkInformationVector**,
   vtkPolyData::GetData(outputVector, 1)->ShallowCopy(curves);
   vtkPolyData::GetData(outputVector, 2)->ShallowCopy(point_cloud(seeds));
   return true;
-}
-
-bool vtkFlowAlignedParametrize::Cancelled(vtkInformationVector* outputVector)
-{
-  const bool kept = this->Flow->kept.restore(outputVector);
-  abort_handled(this);
-  vtkWarningMacro(<< "Parametrize And Seed: cancelled before the parametrization was solved"
-                  << (kept ? "; the previous output is kept" : ""));
-  return false;
 }
 
 void vtkFlowAlignedParametrize::PrintSelf(ostream& os, vtkIndent indent)

@@ -96,8 +96,6 @@ protected:
 private:
   vtkFlowAlignedParametrize(const vtkFlowAlignedParametrize&) = delete;
   void operator=(const vtkFlowAlignedParametrize&) = delete;
-  // After Abort: keeps the previous output, says so, and lets the next update compute anew.
-  bool Cancelled(vtkInformationVector* outputVector);
 };
 
 #endif

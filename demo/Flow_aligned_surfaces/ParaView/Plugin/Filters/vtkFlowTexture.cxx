@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <tuple>
 
 using namespace fas_paraview;
@@ -205,13 +206,21 @@ bool vtkFlowTexture::Compute(vtkInformation*, vtkInformationVector**, vtkInforma
   // The parameter r along the flow and the mask b(gamma) (on several ranks each is one
   // exchange: the library asks for its face samples in one batch).
   const std::vector<double> path_times = this->PathSurface ? path_surface_times(input_surface, in.steps) : std::vector<double>();
+  // Progress per stage of the parametrization; Abort (AbortExecute) stops before the next stage.
+  const std::function<bool(double)> progress = [this](double fraction) {
+    this->UpdateProgress(fraction);
+    return !this->GetAbortExecute();
+  };
   const auto parametrize_and_mask = [&](Mesh& m) {
     auto r = m.add_property_map<Vertex, double>("v:r", 0.).first;
     auto s = m.add_property_map<Vertex, double>("v:s", 0.).first;
     auto mask = m.add_property_map<Face, double>("f:mask", 1.).first;
+    bool done = false;
     const auto in_flow = [&](const auto& field) {
-      FAS::parametrize_tangential(m, field, r, s, FAS::parameters::normalized(false));
-      FAS::compute_flow_texture_mask(m, field, r, mask, FAS::parameters::min_relative_speed(this->MinRelativeSpeed));
+      done = FAS::parametrize_tangential(
+        m, field, r, s, FAS::parameters::normalized(false, CGAL::parameters::callback(progress)));
+      if (done)
+        FAS::compute_flow_texture_mask(m, field, r, mask, FAS::parameters::min_relative_speed(this->MinRelativeSpeed));
     };
     if (this->PathSurface)
     {
@@ -222,9 +231,11 @@ bool vtkFlowTexture::Compute(vtkInformation*, vtkInformationVector**, vtkInforma
     }
     else
       in_flow(in.field);
-    return std::make_tuple(r, s, mask);
+    return std::make_tuple(done, r, s, mask);
   };
-  const auto [r, s, mask] = parametrize_and_mask(tm);
+  const auto [done, r, s, mask] = parametrize_and_mask(tm);
+  if (!done)
+    return this->CancelledBeforeParametrization(outputVector);
   auto uv = tm.add_property_map<Vertex, std::array<double, 2>>("v:uv").first;
   // Scale 0: three repeats along the flow over the surface, whatever the flow's speed and the
   // surface's size.
