@@ -44,23 +44,28 @@ cp "$work/main_job/orthogonal_stream_lines.png" "$fig/fas_seeding_stream_lines.p
 # the built-in flow and, when the shared data is there, on the CFD cylinder without --center.
 cp "$work/main_job/tangential_scene.png" "$fig/fas_main_job_tangential_scene.png"
 cp "$work/main_job/orthogonal_scene.png" "$fig/fas_main_job_orthogonal_scene.png"
-cylinder="$root/../shared/data/CYLINDER_grid.vtk"
-if [ -f "$cylinder" ]; then
-  "$build/demo/Flow_aligned_surfaces/align_patch" --field "$cylinder" --faces 3000 --output "$work/cfd" | tee "$work/cfd.log"
-  cp "$work/cfd/tangential_scene.png" "$fig/fas_main_job_cfd_tangential_scene.png"
-  cp "$work/cfd/orthogonal_scene.png" "$fig/fas_main_job_cfd_orthogonal_scene.png"
-else
-  echo "make-figures: $cylinder not found; fas_main_job_cfd_*.png unchanged" >&2
-fi
+# Runs the main job on the shared data file $1 into $work/$2 and copies its pictures, each further
+# argument PICTURE:FIGURE; when the data is not there, says which figures stay unchanged.
+main_job_on_shared_data() {
+  local data="$1" name="$2" pair
+  shift 2
+  if [ ! -f "$data" ]; then
+    echo "make-figures: $data not found; ${*#*:} unchanged" >&2
+    return
+  fi
+  "$build/demo/Flow_aligned_surfaces/align_patch" --field "$data" --faces 3000 --output "$work/$name" | tee "$work/$name.log"
+  for pair in "$@"; do
+    cp "$work/$name/${pair%%:*}" "$fig/${pair#*:}"
+  done
+}
+shared="$root/../shared/data"
+cylinder="$shared/CYLINDER_grid.vtk"
+main_job_on_shared_data "$cylinder" cfd \
+  tangential_scene.png:fas_main_job_cfd_tangential_scene.png orthogonal_scene.png:fas_main_job_cfd_orthogonal_scene.png
 # The main job on the unsteady cylinder's time series: path surfaces.
-unsteady="$root/../shared/data/CYLINDER_UNSTEADY_grid.pvd"
-if [ -f "$unsteady" ]; then
-  "$build/demo/Flow_aligned_surfaces/align_patch" --field "$unsteady" --faces 3000 --output "$work/unsteady" | tee "$work/unsteady.log"
-  cp "$work/unsteady/tangential_scene.png" "$fig/fas_main_job_unsteady_tangential_scene.png"
-  cp "$work/unsteady/tangential_path_surfaces.png" "$fig/fas_main_job_unsteady_path_surfaces.png"
-else
-  echo "make-figures: $unsteady not found; fas_main_job_unsteady_*.png unchanged" >&2
-fi
+main_job_on_shared_data "$shared/CYLINDER_UNSTEADY_grid.pvd" unsteady \
+  tangential_scene.png:fas_main_job_unsteady_tangential_scene.png \
+  tangential_path_surfaces.png:fas_main_job_unsteady_path_surfaces.png
 # The ParaView pictures, from the plugin's tests (the GUI with the plane widget, the example script).
 if [ -d "$build/demo/Flow_aligned_surfaces/ParaView" ]; then
   cmake --build "$build" --target FlowAlignedSurfaces paraview_reference -j"$(nproc)"
