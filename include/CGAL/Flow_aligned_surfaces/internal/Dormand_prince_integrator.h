@@ -98,6 +98,15 @@ public:
     for_each_state_value(*this, [&state](auto& v) { v = static_cast<std::decay_t<decltype(v)>>(*state++); });
   }
 
+  /// The current point of the integrator that wrote `state`, without making it.
+  static Eigen::Vector3d position_in_state(const double* state)
+  {
+    // for_each_state_value()'s order: t0, σ, the 8 tolerances, start_inside, the stagnation
+    // speed, then x.
+    constexpr std::size_t x = 12;
+    return Eigen::Vector3d(state[x], state[x + 1], state[x + 2]);
+  }
+
   /// Writes everything but the field into `state` (`state_size` values, the exact bits; the
   /// counters are below 2^53).
   void write_state(double* state) const

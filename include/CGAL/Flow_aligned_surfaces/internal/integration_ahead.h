@@ -73,7 +73,7 @@ struct Integration_ahead {
     const double* r = particles.data() + i * record_size;
     if (r[0] == 0)
       return Eigen::Vector3d(r[1], r[2], r[3]);
-    return Dormand_prince_integrator<No_field>(No_field(), r + 1).position();
+    return Dormand_prince_integrator<No_field>::position_in_state(r + 1);
   }
 
   /// The same settings with the particles `kept` (indices, in their order).
@@ -146,7 +146,7 @@ struct Integration_ahead {
 private:
   static constexpr std::size_t settings_size = 13;
 
-  // The field of an integrator read only for its state.
+  // The field of an integrator whose state is read.
   struct No_field {
     std::optional<Eigen::Vector3d> operator()(const Eigen::Vector3d&, double) const { return std::nullopt; }
   };
