@@ -196,8 +196,9 @@ struct Front_field {
   /// The values at the points (x, t) in one batch of the field.
   std::vector<Value> operator()(const std::vector<std::pair<Eigen::Vector3d, double>>& points) const
   {
-    return (*this)(points, Integration_ahead(), [](const Eigen::Vector3d&, double, const Value&) {},
-                   [](std::size_t, const double*) {});
+    return (*this)(
+        points, Integration_ahead(), [](const Eigen::Vector3d&, double, const Value&) {},
+        [](std::size_t, const double*) {});
   }
 
   /// The same; a field that integrates ahead (integration_ahead.h) is also told of the particles

@@ -203,9 +203,10 @@ struct Integrates_ahead : std::false_type {
 template <class FlowField, class Point_3, class Answer>
 struct Integrates_ahead<
     FlowField, Point_3, Answer, false,
-    std::void_t<decltype(std::declval<const FlowField&>().sample(
-        std::declval<const std::vector<Point_3>&>(), std::declval<const Integration_ahead&>(),
-        std::declval<Integrated_ahead<Answer>&>()))>> : std::true_type {
+    std::void_t<decltype(std::declval<const FlowField&>().sample(std::declval<const std::vector<Point_3>&>(),
+                                                                 std::declval<const Integration_ahead&>(),
+                                                                 std::declval<Integrated_ahead<Answer>&>()))>>
+    : std::true_type {
 };
 template <class FlowField, class Point_3, class Answer>
 struct Integrates_ahead<
@@ -244,11 +245,11 @@ template <class FlowField, class Answer, class = void>
 struct Integrates_ahead_meanwhile : std::false_type {
 };
 template <class FlowField, class Answer>
-struct Integrates_ahead_meanwhile<FlowField, Answer,
-                                  std::void_t<decltype(std::declval<const FlowField&>().integrate_ahead_meanwhile(
-                                      std::declval<const Integration_ahead&>(),
-                                      std::declval<Integrated_ahead<Answer>&>(), std::declval<void (*)()>()))>>
-    : std::true_type {
+struct Integrates_ahead_meanwhile<
+    FlowField, Answer,
+    std::void_t<decltype(std::declval<const FlowField&>().integrate_ahead_meanwhile(
+        std::declval<const Integration_ahead&>(), std::declval<Integrated_ahead<Answer>&>(),
+        std::declval<void (*)()>()))>> : std::true_type {
 };
 
 // Integrates the particle `i` of `ahead` (integrator `it`, sampling `field`) on as
@@ -287,7 +288,7 @@ void integrate_ahead(const Integration_ahead& ahead, const Sampler& answer, cons
                      Integrated_ahead<Answer>& along)
 {
   std::vector<Sample_ahead<Answer>> taken; // by the current particle since its last whole step
-  bool stopped = false;                     // at a sample not decided here
+  bool stopped = false;                    // at a sample not decided here
   struct Field {
     const Integration_ahead* ahead;
     const Sampler* answer;
@@ -315,8 +316,8 @@ void integrate_ahead(const Integration_ahead& ahead, const Sampler& answer, cons
     std::optional<State_ahead> reached;
     taken.clear();
     stopped = false;
-    Integrator it = r[0] == 0 ? Integrator(field, Eigen::Vector3d(r[1], r[2], r[3]), ahead.t0, ahead.direction,
-                                           ahead.tolerances)
+    Integrator it = r[0] == 0 ? Integrator(field, Eigen::Vector3d(r[1], r[2], r[3]), ahead.t0,
+                                           ahead.direction, ahead.tolerances)
                               : Integrator(field, r + 1);
     if (it.is_start_inside())
       reached = integrate_particle_ahead(it, field, i, ahead, taken);
