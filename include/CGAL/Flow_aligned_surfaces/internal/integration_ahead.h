@@ -19,7 +19,6 @@
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_INTEGRATION_AHEAD_H
 
 #include <CGAL/Flow_aligned_surfaces/internal/Dormand_prince_integrator.h>
-#include <CGAL/Flow_aligned_surfaces/internal/batched_sampling.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 
 #include <Eigen/Core>
