@@ -2,9 +2,10 @@
 input spread over the ranks the surface is the library's (the serial filter's reference) to 1e-9
 of its diagonal; rank 0 holds it, rank 1 outputs nothing (the fetched output would otherwise hold
 its points twice).  Pieces: the reader's own image pieces (split at x = 0, which the patch
-crosses), RedistributeDataSet's unstructured pieces, and the bad inputs "a rank holds no cells"
-(a correct result), "no rank holds cells" and "a rank's piece has no velocity" (a clear message,
-the previous output kept, no hang), and Abort."""
+crosses; a patch in rank 0's piece alone costs no exchange), RedistributeDataSet's unstructured
+pieces, and the bad inputs "a rank holds no cells" (a correct result), "no rank holds cells" and
+"a rank's piece has no velocity" (a clear message, the previous output kept, no hang), and
+Abort."""
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
 import os
@@ -23,17 +24,17 @@ if ranks != 2:
 CENTER, NORMAL, SIZE, FACES, ITERATIONS = [0.0, 1.6, 0.1], [1.0, 0.3, 0.2], 0.8, 800, 25
 
 
-def reference(name, alignment, iterations):
+def reference(name, alignment, iterations, center=CENTER):
     vtp = setup.path(name + ".vtp")
-    setup.run_reference("align", setup.field(), vtp, *CENTER, *NORMAL, SIZE, FACES, "planar", alignment,
+    setup.run_reference("align", setup.field(), vtp, *center, *NORMAL, SIZE, FACES, "planar", alignment,
                         iterations)
     return t.read_polydata(vtp)
 
 
-def surface_of(source, alignment):
+def surface_of(source, alignment, center=CENTER):
     surface = FlowAlignedSurface(Input=source)
     surface.Velocity = ["POINTS", "velocity"]
-    surface.Center = CENTER
+    surface.Center = center
     surface.Normal = NORMAL
     surface.Size = SIZE
     surface.NumberOfFaces = FACES
@@ -70,6 +71,16 @@ t.expect_same_surface(t.fetch(surface, 3), reference("tangential_3", "tangential
 surface.Alignment = "Orthogonal (seeding surface)"
 t.expect_same_surface(t.fetch(surface, ITERATIONS), reference("orthogonal", "orthogonal", ITERATIONS),
                       "2 ranks, image pieces, orthogonal")
+Delete(surface)
+
+# A patch in rank 0's piece alone (x < 0, 1.1 away from the cut): rank 0 samples it itself, so
+# neither the iterations nor the output cost an exchange, and the surface is the library's.
+LEFT = [-1.5, 1.6, 0.1]
+surface = surface_of(reader, "Tangential (stream surface)", LEFT)
+out = t.fetch(surface, ITERATIONS)
+t.expect_same_surface(out, reference("left", "tangential", ITERATIONS, LEFT), "2 ranks, in rank 0's piece alone")
+expect_field_value(out, "number_of_exchanges", 0, "in rank 0's piece alone")
+expect_field_value(out, "number_of_sampling_ranks", 1, "in rank 0's piece alone")
 Delete(surface)
 
 # 2. RedistributeDataSet's pieces (unstructured grids: the cell-locator sampler), tangential.

@@ -8,12 +8,14 @@
 // the shared faces of image pieces) or "no sample" where no piece holds it: the semantics of
 // ResampleWithDataset.  Where rank 0 knows the points beforehand (an iteration's face
 // centroids, the vertices of a surface to parametrize) they go in one exchange (`probe()`); the
-// library's algorithms that sample in batches (the concept's
-// `sample()`: the measures, the parametrizations, the stages of a stream or path surface's time
-// line; the default patch's lattice) get one exchange per batch; a point none of these
-// announced (a boundary edge to grow) is exchanged alone when the algorithm asks for it.  The other ranks answer until
-// rank 0 says it has finished (`serve()`), so they take part in exactly as many exchanges as
-// rank 0 needs; a rank that fails sends its reason instead of hanging the others.
+// library's algorithms that sample in batches (the concept's `sample()`: the measures, the
+// parametrizations, the stages of a stream or path surface's time line; the default patch's
+// lattice) get one exchange per batch; a point none of these announced (a boundary edge to grow)
+// is exchanged alone when the algorithm asks for it.  The points that rank 0's own piece alone
+// decides (no other piece's bounds hold them) stay out of the exchange: rank 0 samples them while
+// the others answer, and a batch of only such points costs no exchange.  The other ranks answer
+// until rank 0 says it has finished (`serve()`), so they take part in exactly as many exchanges
+// as rank 0 needs; a rank that fails sends its reason instead of hanging the others.
 //
 // A stream or path surface's rounds also tell where their waiting particles stand
 // (integration_ahead.h): the ranks other than 0 integrate them on while they alone decide their
@@ -219,43 +221,109 @@ public:
   }
 
 private:
-  // Rank 0: the samples at `points`, from every rank (collective: the other ranks are in
-  // `serve()`).  Throws std::runtime_error when a rank failed to sample its piece.
+  // Rank 0: the samples at (points[i], times[i]).  Those its own piece alone decides are sampled
+  // here; the others come from every rank in one exchange (collective: the other ranks are in
+  // `serve()`), in which the ranks also integrate on the particles of `request`, while rank 0
+  // samples its own and runs `meanwhile`.  No exchange when rank 0 alone decides every point and
+  // there are no particles.  Throws std::runtime_error when a rank failed to sample its piece.
   std::vector<Sample> exchange(const std::vector<Point>& points, const std::vector<double>& times,
     const Ahead_request& request = {}, const std::function<void()>& meanwhile = {}) const
   {
     State& s = *m_state;
     if (s.working_meanwhile)
       throw std::logic_error("the field was asked for an exchange while the ranks integrate ahead");
-    const int ranks = s.controller->GetNumberOfProcesses();
-    // (x, y, z, t) per point.
-    std::vector<double> coordinates(4 * points.size());
+    s.here.clear();
+    s.asked.clear();
     for (std::size_t i = 0; i < points.size(); ++i)
+      (decided_here(points[i]) ? s.here : s.asked).push_back(i);
+    std::vector<Sample> samples(points.size());
+    const auto sample_here_and_work = [&] {
+      s.supplying_ranks = sample_decided_here(points, times, s.here, samples) ? 1 : 0;
+      if (meanwhile)
+        meanwhile();
+    };
+    s.failed_ranks = 0;
+    const bool ahead = request.ahead != nullptr && !request.ahead->empty();
+    if (s.asked.empty() && !ahead)
+    {
+      sample_here_and_work();
+      return samples;
+    }
+    fill_round(points, times, request);
+    send(PROBE, s.round);
+    work_meanwhile(s.round, sample_here_and_work);
+    take_replies(reply(s.round, request.along), samples);
+    return samples;
+  }
+
+  // Rank 0: puts in its round (whose buffers are kept) the points `asked` at their times and the
+  // particles of `request`.
+  void fill_round(const std::vector<Point>& points, const std::vector<double>& times, const Ahead_request& request) const
+  {
+    State& s = *m_state;
+    auto& round = s.round;
+    round.coordinates.resize(4 * s.asked.size());
+    for (std::size_t k = 0; k < s.asked.size(); ++k)
     {
       for (int d = 0; d < 3; ++d)
-        coordinates[4 * i + std::size_t(d)] = points[i][d];
-      coordinates[4 * i + 3] = times[i];
+        round.coordinates[4 * k + std::size_t(d)] = points[s.asked[k]][d];
+      round.coordinates[4 * k + 3] = times[s.asked[k]];
     }
-    Round round{ std::move(coordinates), std::vector<double>(), request.time };
-    if (request.ahead != nullptr && !request.ahead->empty())
+    round.ahead.clear();
+    if (request.ahead != nullptr)
       round.ahead = request.ahead->to_numbers();
-    send(PROBE, round);
-    if (meanwhile)
-      work_meanwhile(round, meanwhile);
-    const std::vector<double> total = reply(round, request.along);
+    round.ahead_time = request.time;
+  }
 
+  // Rank 0: puts the samples of the points `asked` from the sum of the ranks' replies into
+  // `samples` and counts the ranks that supplied one.  Throws std::runtime_error when a rank
+  // failed to sample its piece.
+  void take_replies(const std::vector<double>& total, std::vector<Sample>& samples) const
+  {
+    State& s = *m_state;
     ++s.exchanges;
-    const std::size_t n = points.size();
-    std::vector<Sample> samples(n);
-    for (std::size_t i = 0; i < n; ++i)
-      samples[i] = combined(&total[4 * i]);
+    const std::size_t n = s.asked.size();
+    for (std::size_t k = 0; k < n; ++k)
+      samples[s.asked[k]] = combined(&total[4 * k]);
     s.failed_ranks = int(total[4 * n]);
-    s.supplying_ranks = 0;
-    for (int r = 0; r < ranks; ++r)
-      s.supplying_ranks += total[4 * n + 1 + std::size_t(r)] > 0 ? 1 : 0;
+    const bool supplied_here = s.supplying_ranks > 0;
+    for (int r = 0; r < s.controller->GetNumberOfProcesses(); ++r)
+      s.supplying_ranks += total[4 * n + 1 + std::size_t(r)] > 0 && !(r == 0 && supplied_here) ? 1 : 0;
     if (s.failed_ranks > 0)
       throw std::runtime_error(std::to_string(s.failed_ranks) + " rank(s) failed to sample their piece of the input");
-    return samples;
+  }
+
+  // Rank 0: whether its own piece alone decides the sample at `p` (and can sample it).
+  bool decided_here(const Point& p) const
+  {
+    return m_state->local_error.empty() && decides_here(Eigen::Vector3d(p.x(), p.y(), p.z()));
+  }
+
+  // Rank 0: puts in `samples` those at the points `here` (which its own piece alone decides), as
+  // an exchange would give them; returns whether one of them is a sample.
+  bool sample_decided_here(const std::vector<Point>& points, const std::vector<double>& times,
+    const std::vector<std::size_t>& here, std::vector<Sample>& samples) const
+  {
+    const State& s = *m_state;
+    if (!s.local)
+      return false;
+    bool supplied = false;
+    const auto& unsteady = s.local->unsteady_field();
+    for (std::size_t i : here)
+      if ((samples[i] = as_exchanged(unsteady(points[i], times[i]))))
+        supplied = true;
+    return supplied;
+  }
+
+  // Rank 0: the indices of the particles of `ahead` that stand where its piece does not alone
+  // decide: another rank may take their first step.
+  std::vector<std::size_t> particles_elsewhere(const Integration_ahead& ahead) const
+  {
+    std::vector<std::size_t> elsewhere;
+    for (std::size_t i = 0; i < ahead.size(); ++i)
+      if (!decides_here(ahead.position(i)))
+        elsewhere.push_back(i);
+    return elsewhere;
   }
 
 public:
@@ -273,13 +341,9 @@ public:
   {
     if (!distributed())
       return;
-    for (;;)
-    {
-      Round round;
-      if (receive(round) != PROBE)
-        return;
+    Round round; // its buffers serve every exchange
+    while (receive(round) == PROBE)
       reply(round, nullptr);
-    }
   }
 
   /// The velocity at `p`: the input's own field on one process; on rank 0 of several, the sample
@@ -324,7 +388,7 @@ public:
     const State& s = *m_state;
     if (!distributed())
       return s.local ? s.local->unsteady_field()(p, t) : Sample();
-    if (!s.local_error.empty() || !decides_here(Eigen::Vector3d(p.x(), p.y(), p.z())))
+    if (!decided_here(p))
       return std::nullopt;
     return as_exchanged(s.local ? s.local->unsteady_field()(p, t) : Sample());
   }
@@ -350,10 +414,7 @@ public:
       return work();
     if (std::this_thread::get_id() != m_state->owner)
       throw std::logic_error("the field was asked to integrate ahead in a parallel loop");
-    std::vector<std::size_t> kept;
-    for (std::size_t i = 0; i < ahead.size(); ++i)
-      if (!decides_here(ahead.position(i)))
-        kept.push_back(i);
+    const std::vector<std::size_t> kept = particles_elsewhere(ahead);
     if (kept.empty())
       return work();
     const Integration_ahead sent = ahead.only(kept);
@@ -414,6 +475,14 @@ private:
         for (std::size_t i = 0; i < points.size(); ++i)
           samples[i] = s.local->unsteady_field()(points[i], times[i]);
       return samples;
+    }
+    if (points.empty())
+      return samples;
+    if (!probed || s.samples.empty())
+    {
+      if (std::this_thread::get_id() != s.owner)
+        throw std::logic_error("the field was asked for a batch in a parallel loop");
+      return exchange(points, times, request);
     }
     std::vector<std::size_t> asked;
     std::vector<Point> asked_points;
@@ -522,25 +591,39 @@ private:
     }
   }
 
-  // Every rank learns the bounds of every rank's piece (collective), for `decides_here()`; the
-  // margin is 1e-6 of the largest extent of them all.
+  // Every rank learns the bounds of every other rank's piece with cells (collective), for
+  // `decides_here()`, widened by 1e-6 of the largest extent of them all (beyond the locators'
+  // tolerances).
   void share_piece_bounds(const std::array<double, 6>& local_bounds)
   {
     State& s = *m_state;
     const int ranks = s.controller->GetNumberOfProcesses();
     std::vector<double> all(6 * std::size_t(ranks));
     s.controller->AllGather(local_bounds.data(), all.data(), 6);
-    s.piece_bounds.assign(std::size_t(ranks), std::array<double, 6>());
+    std::vector<std::array<double, 6>> pieces;
+    pieces.resize(std::size_t(ranks));
     std::array<double, 6> whole{ { 1, -1, 1, -1, 1, -1 } };
-    for (std::size_t r = 0; r < s.piece_bounds.size(); ++r)
+    for (std::size_t r = 0; r < pieces.size(); ++r)
     {
-      std::copy_n(all.begin() + std::ptrdiff_t(6 * r), 6, s.piece_bounds[r].begin());
-      if (s.piece_bounds[r][0] <= s.piece_bounds[r][1])
-        grow_bounds(whole, s.piece_bounds[r]);
+      std::copy_n(all.begin() + std::ptrdiff_t(6 * r), 6, pieces[r].begin());
+      if (pieces[r][0] <= pieces[r][1])
+        grow_bounds(whole, pieces[r]);
     }
-    s.bounds_margin = 0;
+    double margin = 0;
     for (int d = 0; d < 3 && whole[0] <= whole[1]; ++d)
-      s.bounds_margin = std::max(s.bounds_margin, 1e-6 * (whole[2 * d + 1] - whole[2 * d]));
+      margin = std::max(margin, 1e-6 * (whole[2 * d + 1] - whole[2 * d]));
+    s.other_pieces.clear();
+    for (std::size_t r = 0; r < pieces.size(); ++r)
+    {
+      if (int(r) == s.controller->GetLocalProcessId() || pieces[r][0] > pieces[r][1])
+        continue;
+      for (int d = 0; d < 3; ++d)
+      {
+        pieces[r][2 * d] -= margin;
+        pieces[r][2 * d + 1] += margin;
+      }
+      s.other_pieces.push_back(pieces[r]);
+    }
   }
 
   enum Command
@@ -557,9 +640,9 @@ private:
   };
 
   // The first broadcast of an exchange: the command, the number of points, the number of values
-  // of the particles to integrate ahead, the time of their samples, and the first values of the
-  // points followed by the particles, so that a small exchange costs one broadcast; the rest
-  // follows in a second one.
+  // of the particles to integrate ahead, the time of their samples, and, when they fit, the points
+  // followed by the particles, so that a small exchange costs one broadcast; else the points and
+  // the particles follow in broadcasts of their own.
   static constexpr std::size_t header_size = 4;
   using Message = std::array<double, 1024>;
 
@@ -571,54 +654,62 @@ private:
     first[1] = double(round.coordinates.size() / 4);
     first[2] = double(round.ahead.size());
     first[3] = round.ahead_time;
-    std::vector<double> values = round.coordinates;
-    values.insert(values.end(), round.ahead.begin(), round.ahead.end());
-    const std::size_t inline_values = std::min(values.size(), first.size() - header_size);
-    std::copy_n(values.begin(), inline_values, first.begin() + header_size);
-    m_state->controller->Broadcast(first.data(), vtkIdType(first.size()), 0);
-    if (values.size() > inline_values)
-      m_state->controller->Broadcast(values.data() + inline_values, vtkIdType(values.size() - inline_values), 0);
+    const bool inline_values = round.coordinates.size() + round.ahead.size() <= first.size() - header_size;
+    if (inline_values)
+      std::copy(round.ahead.begin(), round.ahead.end(),
+        std::copy(round.coordinates.begin(), round.coordinates.end(), first.begin() + header_size));
+    vtkMultiProcessController& controller = *m_state->controller;
+    controller.Broadcast(first.data(), vtkIdType(first.size()), 0);
+    if (inline_values)
+      return;
+    for (const std::vector<double>* values : { &round.coordinates, &round.ahead })
+      if (!values->empty())
+        controller.Broadcast(const_cast<double*>(values->data()), vtkIdType(values->size()), 0);
   }
 
   // Other ranks: receives what `send()` broadcasts into `round`; returns the command.
   Command receive(Round& round) const
   {
     Message first{};
-    m_state->controller->Broadcast(first.data(), vtkIdType(first.size()), 0);
+    vtkMultiProcessController& controller = *m_state->controller;
+    controller.Broadcast(first.data(), vtkIdType(first.size()), 0);
     if (first[0] != PROBE)
       return FINISH;
-    const std::size_t n = 4 * std::size_t(first[1]);
-    std::vector<double> values(n + std::size_t(first[2]));
-    const std::size_t inline_values = std::min(values.size(), first.size() - header_size);
-    std::copy_n(first.begin() + header_size, inline_values, values.begin());
-    if (values.size() > inline_values)
-      m_state->controller->Broadcast(values.data() + inline_values, vtkIdType(values.size() - inline_values), 0);
-    round.coordinates.assign(values.begin(), values.begin() + std::ptrdiff_t(n));
-    round.ahead.assign(values.begin() + std::ptrdiff_t(n), values.end());
+    round.coordinates.resize(4 * std::size_t(first[1]));
+    round.ahead.resize(std::size_t(first[2]));
     round.ahead_time = first[3];
+    if (round.coordinates.size() + round.ahead.size() <= first.size() - header_size)
+    {
+      const auto ahead = first.begin() + std::ptrdiff_t(header_size + round.coordinates.size());
+      std::copy(first.begin() + header_size, ahead, round.coordinates.begin());
+      std::copy_n(ahead, round.ahead.size(), round.ahead.begin());
+      return PROBE;
+    }
+    for (std::vector<double>* values : { &round.coordinates, &round.ahead })
+      if (!values->empty())
+        controller.Broadcast(values->data(), vtkIdType(values->size()), 0);
     return PROBE;
   }
 
-  // Every rank's answer to `round` (collective): the sum of the ranks' replies on rank 0
-  // (`sample_local()`, followed by the number of values each rank integrated ahead), and there
-  // where the particles integrated ahead got to in `along` (`integrate_here()`).
-  std::vector<double> reply(const Round& round, Integrated_ahead* along) const
+  // Every rank's answer to `round` (collective): on rank 0 the sum of the ranks' replies
+  // (`sample_local()`), and there where the particles integrated ahead got to in `along`
+  // (`integrate_here()`).  The sum lives until the next exchange.
+  const std::vector<double>& reply(const Round& round, Integrated_ahead* along) const
   {
-    const State& s = *m_state;
+    State& s = *m_state;
     const std::size_t ranks = std::size_t(s.controller->GetNumberOfProcesses());
     const int rank = s.controller->GetLocalProcessId();
-    std::vector<double> mine = sample_local(round.coordinates, int(ranks), rank);
+    sample_local(round.coordinates, int(ranks), rank, s.mine);
     const std::vector<double> ahead = round.ahead.empty() ? std::vector<double>() : integrate_here(round);
-    mine.resize(mine.size() + ranks, 0.);
-    mine[mine.size() - ranks + std::size_t(rank)] = double(ahead.size());
-    std::vector<double> total(mine.size());
-    s.controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
+    s.mine[s.mine.size() - ranks + std::size_t(rank)] = double(ahead.size());
+    s.total.resize(s.mine.size());
+    s.controller->Reduce(s.mine.data(), s.total.data(), vtkIdType(s.mine.size()), vtkCommunicator::SUM_OP, 0);
     if (round.ahead.empty())
-      return total;
+      return s.total;
     std::vector<vtkIdType> lengths(ranks), offsets(ranks);
     for (std::size_t r = 0; r < ranks; ++r)
     {
-      lengths[r] = vtkIdType(total[total.size() - ranks + r]);
+      lengths[r] = vtkIdType(s.total[s.total.size() - ranks + r]);
       offsets[r] = r == 0 ? 0 : offsets[r - 1] + lengths[r - 1];
     }
     std::vector<double> all(std::size_t(offsets.back() + lengths.back()));
@@ -626,11 +717,11 @@ private:
     if (along != nullptr)
       for (std::size_t r = 0; r < ranks; ++r)
         read_integrated(all.data() + offsets[r], std::size_t(lengths[r]), *along);
-    return total;
+    return s.total;
   }
 
   // Rank 0: runs `work()` between sending `round` and replying to it, while the other ranks
-  // integrate its particles ahead; replies whatever way `work()` ends, so that every rank takes
+  // sample its points and integrate its particles ahead; replies whatever way `work()` ends, so that every rank takes
   // part in the same collectives.
   void work_meanwhile(const Round& round, const std::function<void()>& work) const
   {
@@ -745,22 +836,12 @@ private:
   }
 
   // Whether this rank's piece alone decides the exchange's sample at `x`: no other rank's piece
-  // with cells has bounds (widened by a margin beyond the locators' tolerances) that hold it.
+  // with cells has bounds (widened beyond the locators' tolerances) that hold it.
   bool decides_here(const Eigen::Vector3d& x) const
   {
-    const State& s = *m_state;
-    const int rank = s.controller->GetLocalProcessId();
-    for (std::size_t r = 0; r < s.piece_bounds.size(); ++r)
-    {
-      const std::array<double, 6>& b = s.piece_bounds[r];
-      if (int(r) == rank || b[0] > b[1])
-        continue;
-      bool inside = true;
-      for (int d = 0; d < 3 && inside; ++d)
-        inside = x[d] >= b[2 * d] - s.bounds_margin && x[d] <= b[2 * d + 1] + s.bounds_margin;
-      if (inside)
+    for (const std::array<double, 6>& b : m_state->other_pieces)
+      if (x[0] >= b[0] && x[0] <= b[1] && x[1] >= b[2] && x[1] <= b[3] && x[2] >= b[4] && x[2] <= b[5])
         return false;
-    }
     return true;
   }
 
@@ -783,21 +864,22 @@ private:
     return k;
   }
 
-  // This rank's reply to the points (x, y, z, t): per point (vx, vy, vz, 1) where its piece has a
-  // sample there and then, zeros elsewhere; then 1 if sampling failed here, then per rank the
-  // number of samples it supplied.
-  std::vector<double> sample_local(const std::vector<double>& coordinates, int ranks, int rank) const
+  // This rank's reply to the points (x, y, z, t), in `reply`: per point (vx, vy, vz, 1) where its
+  // piece has a sample there and then, zeros elsewhere; then 1 if sampling failed here; then per
+  // rank the number of samples it supplied; then per rank the number of values it integrated
+  // ahead (0: `reply()` sets this rank's).
+  void sample_local(const std::vector<double>& coordinates, int ranks, int rank, std::vector<double>& reply) const
   {
     const State& s = *m_state;
     const std::size_t n = coordinates.size() / 4;
-    std::vector<double> reply(4 * n + 1 + std::size_t(ranks), 0.);
+    reply.assign(4 * n + 1 + 2 * std::size_t(ranks), 0.);
     if (!s.local_error.empty())
     {
       reply[4 * n] = 1;
-      return reply;
+      return;
     }
     if (!s.local)
-      return reply;
+      return;
     try
     {
       const auto& unsteady = s.local->unsteady_field();
@@ -821,7 +903,6 @@ private:
       std::fill(reply.begin(), reply.end(), 0.);
       reply[4 * n] = 1;
     }
-    return reply;
   }
 
   // A step of this rank's piece and its field, with what it was built from.
@@ -894,8 +975,10 @@ private:
     std::unordered_map<Key, Sample, Key_hash> samples;
     int failed_ranks = 0, supplying_ranks = 0;
     std::size_t exchanges = 0;
-    std::vector<std::array<double, 6>> piece_bounds; // of every rank's piece (empty: no cells)
-    double bounds_margin = 0;
+    std::vector<std::array<double, 6>> other_pieces; // the widened bounds of the other ranks' pieces with cells
+    std::vector<double> mine, total;                 // this rank's reply and the sum of all (`reply()`)
+    Round round;                                     // rank 0's, whose buffers serve every exchange
+    std::vector<std::size_t> here, asked;            // the points of an exchange sampled here and asked
     std::thread::id owner;                           // the thread that may exchange
     bool working_meanwhile = false;                  // rank 0 works while the ranks integrate
     double time = 0;                                 // at which rank 0 samples
