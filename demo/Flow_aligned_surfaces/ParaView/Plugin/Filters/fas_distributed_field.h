@@ -641,10 +641,10 @@ private:
 
   // The first broadcast of an exchange: the command, the number of points, the number of values
   // of the particles to integrate ahead, the time of their samples, and, when they fit, the points
-  // followed by the particles, so that a small exchange costs one broadcast; else the points and
-  // the particles follow in broadcasts of their own.
+  // followed by the particles, so that a small exchange costs one broadcast; else they follow in a
+  // second one.  Its size keeps it below MPI's usual eager limit (4 KiB), which sends it at once.
   static constexpr std::size_t header_size = 4;
-  using Message = std::array<double, 1024>;
+  using Message = std::array<double, 480>;
 
   // Rank 0: broadcasts `command` and `round`.
   void send(Command command, const Round& round) const
@@ -654,40 +654,34 @@ private:
     first[1] = double(round.coordinates.size() / 4);
     first[2] = double(round.ahead.size());
     first[3] = round.ahead_time;
-    const bool inline_values = round.coordinates.size() + round.ahead.size() <= first.size() - header_size;
+    std::vector<double>& values = m_state->values;
+    values.assign(round.coordinates.begin(), round.coordinates.end());
+    values.insert(values.end(), round.ahead.begin(), round.ahead.end());
+    const bool inline_values = values.size() <= first.size() - header_size;
     if (inline_values)
-      std::copy(round.ahead.begin(), round.ahead.end(),
-        std::copy(round.coordinates.begin(), round.coordinates.end(), first.begin() + header_size));
-    vtkMultiProcessController& controller = *m_state->controller;
-    controller.Broadcast(first.data(), vtkIdType(first.size()), 0);
-    if (inline_values)
-      return;
-    for (const std::vector<double>* values : { &round.coordinates, &round.ahead })
-      if (!values->empty())
-        controller.Broadcast(const_cast<double*>(values->data()), vtkIdType(values->size()), 0);
+      std::copy(values.begin(), values.end(), first.begin() + header_size);
+    m_state->controller->Broadcast(first.data(), vtkIdType(first.size()), 0);
+    if (!inline_values)
+      m_state->controller->Broadcast(values.data(), vtkIdType(values.size()), 0);
   }
 
   // Other ranks: receives what `send()` broadcasts into `round`; returns the command.
   Command receive(Round& round) const
   {
     Message first{};
-    vtkMultiProcessController& controller = *m_state->controller;
-    controller.Broadcast(first.data(), vtkIdType(first.size()), 0);
+    m_state->controller->Broadcast(first.data(), vtkIdType(first.size()), 0);
     if (first[0] != PROBE)
       return FINISH;
-    round.coordinates.resize(4 * std::size_t(first[1]));
-    round.ahead.resize(std::size_t(first[2]));
+    const std::size_t n = 4 * std::size_t(first[1]);
+    std::vector<double>& values = m_state->values;
+    values.resize(n + std::size_t(first[2]));
+    if (values.size() <= first.size() - header_size)
+      std::copy_n(first.begin() + header_size, values.size(), values.begin());
+    else
+      m_state->controller->Broadcast(values.data(), vtkIdType(values.size()), 0);
+    round.coordinates.assign(values.begin(), values.begin() + std::ptrdiff_t(n));
+    round.ahead.assign(values.begin() + std::ptrdiff_t(n), values.end());
     round.ahead_time = first[3];
-    if (round.coordinates.size() + round.ahead.size() <= first.size() - header_size)
-    {
-      const auto ahead = first.begin() + std::ptrdiff_t(header_size + round.coordinates.size());
-      std::copy(first.begin() + header_size, ahead, round.coordinates.begin());
-      std::copy_n(ahead, round.ahead.size(), round.ahead.begin());
-      return PROBE;
-    }
-    for (std::vector<double>* values : { &round.coordinates, &round.ahead })
-      if (!values->empty())
-        controller.Broadcast(values->data(), vtkIdType(values->size()), 0);
     return PROBE;
   }
 
@@ -976,6 +970,7 @@ private:
     int failed_ranks = 0, supplying_ranks = 0;
     std::size_t exchanges = 0;
     std::vector<std::array<double, 6>> other_pieces; // the widened bounds of the other ranks' pieces with cells
+    std::vector<double> values;                      // the points and particles of a round, as sent
     std::vector<double> mine, total;                 // this rank's reply and the sum of all (`reply()`)
     Round round;                                     // rank 0's, whose buffers serve every exchange
     std::vector<std::size_t> here, asked;            // the points of an exchange sampled here and asked
