@@ -12,8 +12,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <random>
+#include <set>
 #include <vector>
 
 // This file's tests and helpers in a namespace of their own: the suite is compiled in unity
@@ -157,7 +160,7 @@ TEST(PoissonOperators, LaplacianIsTheTripletAssemblyOfTheFaceStiffnesses)
   const FASI::Mesh_arrays arrays = FASI::make_mesh_arrays(tm, vim, get(CGAL::face_index, tm));
   ASSERT_EQ(arrays.number_of_components, 2u);
   const auto ops =
-      std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(x, arrays.face_vertices, false));
+      std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(x, arrays.face_vertices, FASI::Operators_asked::stiffness));
 
   std::vector<Eigen::Triplet<double>> triplets;
   for (const FASI::Reference_face& face : ops.faces)
@@ -220,7 +223,7 @@ TEST(PoissonOperators, ExtendedOperatorsOfAGrownMeshAreTheOperatorsOfTheWholeMes
   auto positions = [&] { return FASI::read_positions(FASI::vertices_in_index_order(tm, vim), tm.points()); };
   FASI::Mesh_arrays arrays = FASI::make_mesh_arrays(tm, vim, fim);
   auto ops = std::get<FASI::Poisson_operators>(
-      FASI::make_poisson_operators(positions(), arrays.face_vertices, false));
+      FASI::make_poisson_operators(positions(), arrays.face_vertices, FASI::Operators_asked::stiffness));
   for (int round = 0; round < 3; ++round) {
     const std::size_t old_faces = num_faces(tm), old_vertices = num_vertices(tm);
     FAS::grow_boundary(tm, 0.1);
@@ -233,7 +236,7 @@ TEST(PoissonOperators, ExtendedOperatorsOfAGrownMeshAreTheOperatorsOfTheWholeMes
     const FASI::Positions x = positions();
     ASSERT_FALSE(FASI::extend_poisson_operators(ops, x, arrays.face_vertices));
     const auto expected =
-        std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(x, arrays.face_vertices, false));
+        std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(x, arrays.face_vertices, FASI::Operators_asked::stiffness));
     expect_same_operators(ops, expected);
   }
 }
@@ -253,6 +256,40 @@ TEST(PoissonOperators, DivergenceOfGradientIsLaplacian)
   const Eigen::MatrixXd gtag =
       Eigen::MatrixXd(patch.ops.G.transpose()) * patch.ops.area_matrix() * Eigen::MatrixXd(patch.ops.G);
   EXPECT_LT((gtag - Eigen::MatrixXd(patch.ops.L)).cwiseAbs().maxCoeff(), 1e-10 * gtag.cwiseAbs().maxCoeff());
+}
+
+// D, assembled column by column, is Eigen's product G^T A to the last bit, with the same
+// entries in the same places, on a mesh whose faces list their vertices in every cyclic order
+// (face j rotated by j mod 3); asked for the divergence alone, the same D and no G.
+TEST(PoissonOperators, DivergenceIsTheProductOfTheGradientTransposedAndTheAreas)
+{
+  const Curved_patch patch = make_curved_patch(300);
+  std::vector<std::array<Eigen::Index, 3>> faces = patch.arrays.face_vertices;
+  std::set<std::array<bool, 2>> orders; // (fv[0] < fv[1], fv[1] < fv[2]) of the faces
+  for (std::size_t j = 0; j < faces.size(); ++j) {
+    std::rotate(faces[j].begin(), faces[j].begin() + std::ptrdiff_t(j % 3), faces[j].end());
+    orders.insert({faces[j][0] < faces[j][1], faces[j][1] < faces[j][2]});
+  }
+  ASSERT_GE(orders.size(), 3u);
+  const auto all = std::get<FASI::Poisson_operators>(FASI::make_poisson_operators(patch.x, faces));
+  const Eigen::SparseMatrix<double> product = all.G.transpose() * all.area_matrix();
+  const auto same_bits = [&product](const Eigen::SparseMatrix<double>& d) {
+    if (d.rows() != product.rows() || d.cols() != product.cols() || d.nonZeros() != product.nonZeros())
+      return false;
+    for (Eigen::Index k = 0; k <= d.cols(); ++k)
+      if (d.outerIndexPtr()[k] != product.outerIndexPtr()[k])
+        return false;
+    for (Eigen::Index e = 0; e < d.nonZeros(); ++e)
+      if (d.innerIndexPtr()[e] != product.innerIndexPtr()[e] ||
+          std::memcmp(&d.valuePtr()[e], &product.valuePtr()[e], sizeof(double)) != 0)
+        return false;
+    return true;
+  };
+  EXPECT_TRUE(same_bits(all.D));
+  const auto divergence_only = std::get<FASI::Poisson_operators>(
+      FASI::make_poisson_operators(patch.x, faces, FASI::Operators_asked::divergence));
+  EXPECT_TRUE(same_bits(divergence_only.D));
+  EXPECT_EQ(divergence_only.G.nonZeros(), 0);
 }
 
 TEST(PoissonOperators, AreasSumToSurfaceArea)

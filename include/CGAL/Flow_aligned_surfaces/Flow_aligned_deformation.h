@@ -1268,7 +1268,8 @@ private:
       degenerate = internal::extend_poisson_operators(m_ops, reference, m_arrays.face_vertices);
     else {
       // The iterations use L and the per-face stiffness only (D Y' is assembled face by face).
-      auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices, false);
+      auto built = internal::make_poisson_operators(reference, m_arrays.face_vertices,
+                                                    internal::Operators_asked::stiffness);
       if (auto* face = std::get_if<internal::Degenerate_face>(&built))
         degenerate = *face;
       else

@@ -84,7 +84,7 @@ Surface_operators<TriangleMesh> make_surface_operators(const TriangleMesh& tm, c
   s.arrays = make_mesh_arrays(tm, vim, fim);
   Positions positions = read_positions(s.vertices, vpm);
   check_finite_positions(positions, caller + ": tm");
-  auto built = make_poisson_operators(positions, s.arrays.face_vertices);
+  auto built = make_poisson_operators(positions, s.arrays.face_vertices, Operators_asked::divergence);
   if (auto* degenerate = std::get_if<Degenerate_face>(&built))
     throw std::invalid_argument(caller + ": tm: face " + std::to_string(degenerate->face) +
                                 " is degenerate (zero area)");

@@ -24,6 +24,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -220,25 +221,73 @@ inline Eigen::SparseMatrix<double> assemble_stiffness_matrix(Eigen::Index m,
   return l;
 }
 
-/// Assembles the operators from vertex positions (m x 3) and the vertex indices of each face.
-/// Returns the index of a degenerate face instead when there is one.  Without
-/// `with_gradient_and_divergence`, G and D are left empty: the deformation needs only L and the
-/// per-face data, and G, D cost about half of the assembly (a sparse product for D).
+/// Which operators `make_poisson_operators()` assembles besides L and the per-face data: the
+/// deformation needs neither G nor D, the parametrizations D only (G and D cost about half of the
+/// assembly with G's triplets and the product G^T A).
+enum class Operators_asked { stiffness, divergence, gradient_and_divergence };
+
+/// D = G^T A (m x 3n), filled column by column as `make_poisson_operators()` meets the faces:
+/// column 3j + d holds the rows of face j's vertices in increasing order, each the d-th component
+/// of that vertex's basis gradient times the face's area.  Those are the product's entries to the
+/// last bit (one product each), without G's triplets, its transposed copy and the product.
+class Divergence_matrix {
+public:
+  using StorageIndex = Eigen::SparseMatrix<double>::StorageIndex;
+
+  Divergence_matrix(Eigen::Index m, Eigen::Index n) : m_d(m, 3 * n)
+  {
+    m_d.resizeNonZeros(9 * n);
+    StorageIndex* outer = m_d.outerIndexPtr();
+    for (Eigen::Index k = 0; k <= 3 * n; ++k)
+      outer[k] = StorageIndex(3 * k);
+  }
+
+  /// The columns of face j with vertices `fv`, basis gradients `gradients` (column i: vertex
+  /// fv[i]) and area `area`.
+  void add_face(Eigen::Index j, const std::array<Eigen::Index, 3>& fv, const Eigen::Matrix3d& gradients,
+                double area)
+  {
+    std::array<int, 3> order{0, 1, 2};
+    std::sort(order.begin(), order.end(),
+              [&fv](int a, int b) { return fv[std::size_t(a)] < fv[std::size_t(b)]; });
+    for (int d = 0; d < 3; ++d)
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Index entry = 9 * j + 3 * d + k;
+        const int i = order[std::size_t(k)];
+        m_d.innerIndexPtr()[entry] = StorageIndex(fv[std::size_t(i)]);
+        m_d.valuePtr()[entry] = gradients(d, i) * area;
+      }
+  }
+
+  Eigen::SparseMatrix<double> take() { return std::move(m_d); }
+
+private:
+  Eigen::SparseMatrix<double> m_d;
+};
+
+/// Assembles the operators from vertex positions (m x 3) and the vertex indices of each face:
+/// L and the per-face data, and the operators `asked` for (the others are left empty).  Returns
+/// the index of a degenerate face instead when there is one.
 inline std::variant<Poisson_operators, Degenerate_face>
 make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions,
                        const std::vector<std::array<Eigen::Index, 3>>& face_vertices,
-                       bool with_gradient_and_divergence = true)
+                       Operators_asked asked = Operators_asked::gradient_and_divergence)
 {
   using Triplet = Eigen::Triplet<double>;
   const Eigen::Index m = positions.rows();
   const Eigen::Index n = static_cast<Eigen::Index>(face_vertices.size());
+  const bool with_gradient = asked == Operators_asked::gradient_and_divergence;
+  const bool with_divergence = asked != Operators_asked::stiffness;
 
   Poisson_operators ops;
   ops.faces.resize(face_vertices.size());
   ops.face_areas.resize(n);
   std::vector<Triplet> g_entries;
-  if (with_gradient_and_divergence)
+  if (with_gradient)
     g_entries.reserve(9 * face_vertices.size());
+  std::optional<Divergence_matrix> divergence;
+  if (with_divergence)
+    divergence.emplace(m, n);
 
   Eigen::Matrix3d gradients;
   for (Eigen::Index j = 0; j < n; ++j) {
@@ -248,18 +297,21 @@ make_poisson_operators(const Eigen::Matrix<double, Eigen::Dynamic, 3>& positions
       return Degenerate_face{std::size_t(j)};
     ops.faces[std::size_t(j)] = *face;
     ops.face_areas[j] = face->area;
-    if (with_gradient_and_divergence)
+    if (with_gradient)
       for (int i = 0; i < 3; ++i)
         for (int d = 0; d < 3; ++d)
           g_entries.emplace_back(3 * j + d, fv[i], gradients(d, i));
+    if (divergence)
+      divergence->add_face(j, fv, gradients, face->area);
   }
 
   ops.L = assemble_stiffness_matrix(m, ops.faces);
-  if (with_gradient_and_divergence) {
+  if (with_gradient) {
     ops.G.resize(3 * n, m);
     ops.G.setFromTriplets(g_entries.begin(), g_entries.end());
-    ops.D = ops.G.transpose() * ops.area_matrix();
   }
+  if (divergence)
+    ops.D = divergence->take();
   return ops;
 }
 
