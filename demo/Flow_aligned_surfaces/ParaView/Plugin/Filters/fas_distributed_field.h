@@ -270,7 +270,7 @@ private:
       round.coordinates[4 * k + 3] = times[s.asked[k]];
     }
     round.ahead.clear();
-    if (request.ahead != nullptr)
+    if (request.ahead != nullptr && !request.ahead->empty())
       round.ahead = request.ahead->to_numbers();
     round.ahead_time = request.time;
   }
@@ -299,18 +299,22 @@ private:
     return m_state->local_error.empty() && decides_here(Eigen::Vector3d(p.x(), p.y(), p.z()));
   }
 
-  // Rank 0: puts in `samples` those at the points `here` (which its own piece alone decides), as
-  // an exchange would give them; returns whether one of them is a sample.
+  // Rank 0: the sample at `p` and time `t`, which its own piece alone decides, as an exchange
+  // would give it.
+  Sample decided_sample(const Point& p, double t) const
+  {
+    const State& s = *m_state;
+    return as_exchanged(s.local ? s.local->unsteady_field()(p, t) : Sample());
+  }
+
+  // Rank 0: puts in `samples` those at the points `here` (which its own piece alone decides);
+  // returns whether one of them is a sample.
   bool sample_decided_here(const std::vector<Point>& points, const std::vector<double>& times,
     const std::vector<std::size_t>& here, std::vector<Sample>& samples) const
   {
-    const State& s = *m_state;
-    if (!s.local)
-      return false;
     bool supplied = false;
-    const auto& unsteady = s.local->unsteady_field();
     for (std::size_t i : here)
-      if ((samples[i] = as_exchanged(unsteady(points[i], times[i]))))
+      if ((samples[i] = decided_sample(points[i], times[i])))
         supplied = true;
     return supplied;
   }
@@ -390,7 +394,7 @@ public:
       return s.local ? s.local->unsteady_field()(p, t) : Sample();
     if (!decided_here(p))
       return std::nullopt;
-    return as_exchanged(s.local ? s.local->unsteady_field()(p, t) : Sample());
+    return decided_sample(p, t);
   }
 
   /// `sample(points)`, integrating the particles `ahead` on where a rank alone decides their
@@ -715,8 +719,8 @@ private:
   }
 
   // Rank 0: runs `work()` between sending `round` and replying to it, while the other ranks
-  // sample its points and integrate its particles ahead; replies whatever way `work()` ends, so that every rank takes
-  // part in the same collectives.
+  // sample its points and integrate its particles ahead; replies whatever way `work()` ends, so
+  // that every rank takes part in the same collectives.
   void work_meanwhile(const Round& round, const std::function<void()>& work) const
   {
     State& s = *m_state;
