@@ -102,11 +102,12 @@ struct Two_pieces {
   Field field;
   double cut = 0, margin = 1e-3;
   std::shared_ptr<Counts> counts = std::make_shared<Counts>();
-  std::shared_ptr<std::size_t> along_paths = std::make_shared<std::size_t>(0); // samples ahead
-  std::shared_ptr<std::size_t> sent_back = std::make_shared<std::size_t>(0);   // of those, returned
-  std::shared_ptr<std::size_t> states = std::make_shared<std::size_t>(0);      // particles taken on
-  std::shared_ptr<std::size_t> meanwhile = std::make_shared<std::size_t>(0);   // first rounds
-  std::shared_ptr<std::size_t> here = std::make_shared<std::size_t>(0);        // answered at once
+  std::shared_ptr<std::size_t> along_paths = std::make_shared<std::size_t>(0);  // samples ahead
+  std::shared_ptr<std::size_t> sent_back = std::make_shared<std::size_t>(0);    // of those, returned
+  std::shared_ptr<std::size_t> states = std::make_shared<std::size_t>(0);       // particles taken on
+  std::shared_ptr<std::size_t> meanwhile = std::make_shared<std::size_t>(0);    // first rounds
+  std::shared_ptr<std::size_t> here = std::make_shared<std::size_t>(0);         // answered at once
+  std::shared_ptr<std::size_t> last_samples = std::make_shared<std::size_t>(0); // particles past the line
 
   using Answer = std::optional<Vector_3>;
   Answer at(const Point_3& p, double t) const
@@ -183,6 +184,8 @@ struct Two_pieces {
   void integrate_ahead(const FAS::internal::Integration_ahead& ahead,
                        FAS::internal::Integrated_ahead<Answer>& along) const
   {
+    for (std::size_t i = 0; i < ahead.size(); ++i)
+      *last_samples += ahead.kind(i) == FAS::internal::Integration_ahead::LAST_SAMPLE ? 1 : 0;
     FAS::internal::integrate_ahead<Answer>(
         FAS::internal::Integration_ahead::from_numbers(ahead.to_numbers()),
         [&](const Eigen::Vector3d& x, double t) {
@@ -442,6 +445,8 @@ TEST(BatchedSampling, IntegratingAheadInTwoPiecesIsTheSameBitForBitInFewerBatche
   EXPECT_GT(*pieces.states, 0u);
   EXPECT_LE(5 * *pieces.sent_back, *pieces.along_paths);
   EXPECT_GE(*pieces.meanwhile, ahead.report.number_of_time_lines);
+  // A particle whose last step passed the time line is sent as the sample it still takes there.
+  EXPECT_GT(*pieces.last_samples, 0u);
   // A time line costs the stages of a step where a particle crosses the cut, not a round per
   // stage of every path from the seed.
   EXPECT_LE(5 * ahead.report.number_of_sample_batches, in_batches.report.number_of_sample_batches);
@@ -509,6 +514,29 @@ TEST(BatchedSampling, AnIntegratorGoesOnFromItsNumbers)
   EXPECT_EQ(kept.position(0), a.position());
   EXPECT_THROW(FAS::internal::Integration_ahead::from_numbers(std::vector<double>(14, 0.)),
                std::invalid_argument);
+
+  // A particle past the target takes its one sample there and no step.
+  FAS::internal::Integration_ahead past;
+  past.target = a.parameter() - 1e-3;
+  past.add_last_sample(a.dense_output(past.target), 0.25);
+  EXPECT_EQ(past.kind(0), FAS::internal::Integration_ahead::LAST_SAMPLE);
+  EXPECT_EQ(past.position(0), a.dense_output(past.target));
+  using Answer = std::optional<Vector_3>;
+  FAS::internal::Integrated_ahead<Answer> along;
+  FAS::internal::integrate_ahead<Answer>(
+      FAS::internal::Integration_ahead::from_numbers(past.to_numbers()),
+      [](const Eigen::Vector3d& x, double t) { return Answer(Vector_3(x[0], x[1], t)); },
+      [](const Eigen::Vector3d&) { return true; }, along);
+  EXPECT_TRUE(along.states.empty());
+  ASSERT_EQ(along.samples.size(), 1u);
+  EXPECT_EQ(along.samples[0].x, past.position(0));
+  EXPECT_EQ(along.samples[0].t, 0.25);
+  EXPECT_EQ(along.samples[0].answer, Answer(Vector_3(past.position(0)[0], past.position(0)[1], 0.25)));
+
+  // A record of no kind is refused.
+  std::vector<double> no_kind = past.to_numbers();
+  no_kind[no_kind.size() - FAS::internal::Integration_ahead::record_size] = 3;
+  EXPECT_THROW(FAS::internal::Integration_ahead::from_numbers(no_kind), std::invalid_argument);
 }
 
 // A batch operation that answers a point less than asked.

@@ -596,8 +596,8 @@ private:
     run_tasks(
         ps.size(), [&](std::size_t i) { ok[i] = advance(*ps[i], reach[i]); },
         [&](std::size_t i, Integration_ahead& ahead) {
-          if (!reach[i])
-            ahead.add_state(ps[i]->integrator);
+          if (!reach[i] && !ps[i]->at_boundary)
+            add_integrator(ps[i]->integrator, ahead);
         },
         [&](std::size_t i, const double* state) { ps[i]->integrator = Integrator(m_field, state); });
     return ok;
@@ -632,9 +632,19 @@ private:
     if (reach)
       return;
     if (p)
-      ahead.add_state(p->integrator);
+      add_integrator(p->integrator, ahead);
     else
       ahead.add_start(m_seed(u));
+  }
+
+  // Adds a particle's integrator to `ahead`: its state; or, when its last step passed the current
+  // time line, the one sample that `advance()` still takes, at its point on the line.
+  void add_integrator(const Integrator& it, Integration_ahead& ahead) const
+  {
+    if (it.parameter() >= m_parameter)
+      ahead.add_last_sample(it.dense_output(m_parameter), m_s.t0 + m_s.direction * m_parameter);
+    else
+      ahead.add_state(it);
   }
 
   // Runs `task(i)` for i in [0, n).  With a field that answers batches, the tasks run in rounds,

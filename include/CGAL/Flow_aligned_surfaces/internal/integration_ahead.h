@@ -57,8 +57,13 @@ struct Integration_ahead {
   double target = 0;    ///< the parameter τ the particles are integrated to
   double max_steps = 0; ///< accepted steps from the seed after which a particle is lost
   Integration_tolerances tolerances;
-  /// one record per particle: a flag (0: starts at a point, 1: an integrator's state) and
-  /// `state_size` values (the point, or the state)
+  /// How a particle's record begins: it starts at a point; it goes on from an integrator's
+  /// state; or its last step passed the target, and all it still takes is the sample at (x, t)
+  /// there, which needs no integrator.
+  enum Record_kind { START = 0, STATE = 1, LAST_SAMPLE = 2 };
+
+  /// one record per particle: its kind and `state_size` values (the point; the state; the point
+  /// and the time)
   std::vector<double> particles;
 
   static constexpr std::size_t record_size = 1 + 44;
@@ -70,7 +75,7 @@ struct Integration_ahead {
   Eigen::Vector3d position(std::size_t i) const
   {
     const double* r = particles.data() + i * record_size;
-    if (r[0] == 0)
+    if (r[0] != STATE)
       return Eigen::Vector3d(r[1], r[2], r[3]);
     return Dormand_prince_integrator<No_field>::position_in_state(r + 1);
   }
@@ -88,7 +93,7 @@ struct Integration_ahead {
 
   void add_start(const Eigen::Vector3d& x0)
   {
-    double* r = new_record(0.);
+    double* r = new_record(START);
     for (int i = 0; i < 3; ++i)
       r[i] = x0[i];
   }
@@ -97,8 +102,20 @@ struct Integration_ahead {
   void add_state(const Dormand_prince_integrator<Field>& integrator)
   {
     static_assert(Dormand_prince_integrator<Field>::state_size + 1 == record_size);
-    integrator.write_state(new_record(1.));
+    integrator.write_state(new_record(STATE));
   }
+
+  /// A particle past the target, whose task takes only the sample at `x` and time `t`.
+  void add_last_sample(const Eigen::Vector3d& x, double t)
+  {
+    double* r = new_record(LAST_SAMPLE);
+    for (int i = 0; i < 3; ++i)
+      r[i] = x[i];
+    r[3] = t;
+  }
+
+  /// The kind of particle `i`'s record.
+  Record_kind kind(std::size_t i) const { return Record_kind(int(particles[i * record_size])); }
 
   /// All of it as numbers, for sending.
   std::vector<double> to_numbers() const
@@ -139,6 +156,10 @@ struct Integration_ahead {
                       &t.boundary, &t.stagnation_speed})
       *x = v[k++];
     a.particles.assign(numbers.begin() + settings_size, numbers.end());
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (const double k = a.particles[i * record_size]; k != START && k != STATE && k != LAST_SAMPLE)
+        throw std::invalid_argument("integration ahead: particle " + std::to_string(i) +
+                                    " has no record kind (" + std::to_string(k) + ")");
     return a;
   }
 
@@ -150,7 +171,7 @@ private:
     std::optional<Eigen::Vector3d> operator()(const Eigen::Vector3d&, double) const { return std::nullopt; }
   };
 
-  double* new_record(double kind)
+  double* new_record(Record_kind kind)
   {
     particles.resize(particles.size() + record_size, 0.);
     double* r = particles.data() + particles.size() - record_size;
@@ -279,7 +300,7 @@ std::optional<State_ahead> integrate_particle_ahead(Integrator& it, const Field&
 /// Integrates the particles of `ahead` on, each until its next sample is not decided here
 /// (`decides(x)` false), it reaches the target or leaves the domain, also sampling the field at
 /// the particle's end (at the target, or where it left), and adds to `along` where each one got
-/// to.  `answer(x, t)` is the field's answer at (x, t): what its batch operation answers there.
+/// to; a particle already past the target (`LAST_SAMPLE`) only takes that sample.  `answer(x, t)` is the field's answer at (x, t): what its batch operation answers there.
 /// The integrating tasks go on from those states and ask for those samples
 /// (integrate_stream_surface.h: `advance()`).
 template <class Answer, class Sampler, class Decides>
@@ -312,16 +333,20 @@ void integrate_ahead(const Integration_ahead& ahead, const Sampler& answer, cons
   const Field field{&ahead, &answer, &decides, &taken, &stopped};
   for (std::size_t i = 0; i < ahead.size(); ++i) {
     const double* r = ahead.particles.data() + i * Integration_ahead::record_size;
-    std::optional<State_ahead> reached;
     taken.clear();
     stopped = false;
-    Integrator it = r[0] == 0 ? Integrator(field, Eigen::Vector3d(r[1], r[2], r[3]), ahead.t0,
-                                           ahead.direction, ahead.tolerances)
-                              : Integrator(field, r + 1);
-    if (it.is_start_inside())
-      reached = integrate_particle_ahead(it, field, i, ahead, taken);
-    if (reached)
-      along.states.push_back(*reached);
+    if (ahead.kind(i) == Integration_ahead::LAST_SAMPLE) {
+      field(Eigen::Vector3d(r[1], r[2], r[3]), r[4]);
+    }
+    else {
+      Integrator it = ahead.kind(i) == Integration_ahead::START
+                          ? Integrator(field, Eigen::Vector3d(r[1], r[2], r[3]), ahead.t0, ahead.direction,
+                                       ahead.tolerances)
+                          : Integrator(field, r + 1);
+      if (it.is_start_inside())
+        if (std::optional<State_ahead> reached = integrate_particle_ahead(it, field, i, ahead, taken))
+          along.states.push_back(*reached);
+    }
     along.samples.insert(along.samples.end(), taken.begin(), taken.end());
   }
 }
