@@ -7,6 +7,7 @@
 #include "vtkFlowAlignedFilter.h"
 
 #include "fas_distributed_field.h"
+#include "fas_distributed_update.h"
 #include "fas_paraview_support.h"
 #include "fas_temporal_input.h"
 
