@@ -300,9 +300,10 @@ std::optional<State_ahead> integrate_particle_ahead(Integrator& it, const Field&
 /// Integrates the particles of `ahead` on, each until its next sample is not decided here
 /// (`decides(x)` false), it reaches the target or leaves the domain, also sampling the field at
 /// the particle's end (at the target, or where it left), and adds to `along` where each one got
-/// to; a particle already past the target (`LAST_SAMPLE`) only takes that sample.  `answer(x, t)` is the field's answer at (x, t): what its batch operation answers there.
-/// The integrating tasks go on from those states and ask for those samples
-/// (integrate_stream_surface.h: `advance()`).
+/// to; a particle already past the target (`LAST_SAMPLE`) only takes that sample.  `answer(x, t)`
+/// is the field's answer at (x, t): what its batch operation answers there.  The integrating
+/// tasks go on from those states and ask for those samples (integrate_stream_surface.h:
+/// `advance()`).
 template <class Answer, class Sampler, class Decides>
 void integrate_ahead(const Integration_ahead& ahead, const Sampler& answer, const Decides& decides,
                      Integrated_ahead<Answer>& along)
