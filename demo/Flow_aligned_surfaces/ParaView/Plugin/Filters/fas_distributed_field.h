@@ -31,6 +31,7 @@
 #ifndef FAS_DISTRIBUTED_FIELD_H
 #define FAS_DISTRIBUTED_FIELD_H
 
+#include "fas_field_cache.h"
 #include "fas_paraview_support.h"
 #include "fas_temporal_input.h"
 
@@ -461,6 +462,8 @@ public:
   int number_of_supplying_ranks() const { return m_state->supplying_ranks; }
   /// Exchanges since the start of the update (batches and single points).
   std::size_t number_of_exchanges() const { return m_state->exchanges; }
+  /// The velocity fields this rank built (not found in the `Field_cache`) since the last call.
+  std::size_t take_fields_built() { return std::exchange(m_state->fields_built, 0); }
 
 private:
   // The samples at (points[i], times[i]); with `probed`, those probed before at the current time
@@ -905,7 +908,7 @@ private:
     vtkSmartPointer<vtkDataObject> data;
     vtkMTimeType data_time = 0;
     Flow_data_set flow;
-    std::optional<Velocity_field> field; // none: no cells here
+    std::shared_ptr<const Velocity_field> field; // null: no cells here
   };
 
   bool same_steps(const std::vector<Flow_step>& steps, const Velocity_selection& selection) const
@@ -929,7 +932,7 @@ private:
       for (const Sampled_step& old : s.sampled)
         if (old.data == step.data && old.data_time == data_time)
           return old;
-    Sampled_step sampled{ step.data, data_time, flow_data_set(step.data), std::nullopt };
+    Sampled_step sampled{ step.data, data_time, flow_data_set(step.data), nullptr };
     const bool several = global_controller() != nullptr;
     if (sampled.flow.data_set == nullptr && vtkCompositeDataSet::SafeDownCast(step.data) != nullptr)
     {
@@ -939,8 +942,12 @@ private:
                                     (sampled.flow.note.empty() ? std::string() : " (" + sampled.flow.note + ")"));
     }
     else if (!several || (sampled.flow.data_set != nullptr && sampled.flow.data_set->GetNumberOfCells() > 0))
-      sampled.field = make_velocity_field(sampled.flow.data_set, selection,
-                                          step.whole_extent ? step.whole_extent->data() : nullptr);
+    {
+      bool built = false;
+      sampled.field = Field_cache::field(sampled.flow.data_set, selection,
+                                         step.whole_extent ? step.whole_extent->data() : nullptr, built);
+      m_state->fields_built += built ? 1 : 0;
+    }
     return sampled;
   }
 
@@ -983,6 +990,7 @@ private:
     Flow_data_set flow;                              // of the first step
     bool have_field = false;
     bool sampled_since_update = false;               // `local` sampled anew since the last update
+    std::size_t fields_built = 0;                    // by `sample_step()` since `take_fields_built()`
   };
   std::shared_ptr<State> m_state;
 };

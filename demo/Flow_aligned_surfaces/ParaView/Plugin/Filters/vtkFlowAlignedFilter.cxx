@@ -91,6 +91,9 @@ int vtkFlowAlignedFilter::RequestData(
   if (!update)
     return 1; // the pipeline runs this filter again with the next time step
   flow.pieces = *update;
+  // The velocity fields this update built here (0: the field of another filter of the same
+  // input, or of an earlier update, was at hand: fas_field_cache.h).
+  const double fields_built = double(flow.field.take_fields_built());
   // Every rank: input 1's pieces go to rank 0, and every rank samples its piece of the flow for
   // rank 0 (one process: the input's own field).
   flow.gathered = this->GetNumberOfInputPorts() > 1
@@ -113,7 +116,12 @@ int vtkFlowAlignedFilter::RequestData(
   {
     Finish_probes finish_probes(flow.field);
     if (this->Compute(request, inputVector, outputVector))
+    {
+      for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
+        if (vtkDataObject* output = vtkDataObject::GetData(outputVector, port))
+          add_field_value(output, "number_of_velocity_fields_built", fields_built);
       flow.kept.keep(outputVector);
+    }
   }
   catch (const std::exception& e)
   {
