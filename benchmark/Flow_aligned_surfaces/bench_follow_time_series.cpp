@@ -26,13 +26,13 @@
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Time_slice_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,11 +44,8 @@ using Vector = Kernel::Vector_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace FAS = CGAL::Flow_aligned_surfaces;
 
-// The step of the drifting swirl at its axis' x.
-struct Swirl {
-  double axis_x;
-  std::optional<Vector> operator()(const Point& p) const { return Vector(-p.y(), p.x() - axis_x, 0.3); }
-};
+// A step of the drifting swirl: about an axis parallel to z, with an axial speed.
+using Swirl = FAS::Helical_flow<Kernel>;
 
 struct Patch {
   Point center;
@@ -154,7 +151,7 @@ int main(int argc, char** argv)
   std::vector<Swirl> swirls;
   for (int k = 0; k < 34; ++k) {
     times.push_back(0.01 * k);
-    swirls.push_back(Swirl{0.025 * k}); // 1/24 of the 0.6 patch per step
+    swirls.emplace_back(0.3, Point(0.025 * k, 0, 0)); // the axis moves 1/24 of the 0.6 patch per step
   }
   const FAS::Unsteady_flow_field_3<Swirl> swirl(times, swirls);
 

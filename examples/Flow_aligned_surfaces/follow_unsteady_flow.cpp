@@ -10,11 +10,11 @@
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/Time_slice_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 
 #include <cmath>
 #include <iostream>
-#include <optional>
 #include <vector>
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -24,17 +24,15 @@ using Mesh = CGAL::Surface_mesh<Point>;
 namespace FAS = CGAL::Flow_aligned_surfaces;
 
 // The step at time t: a swirl about the axis x = 0.2 t, y = 0, with an axial drift.
-struct Swirl {
-  double axis_x;
-  std::optional<Vector> operator()(const Point& p) const { return Vector(-p.y(), p.x() - axis_x, 0.3); }
-};
+using Swirl = FAS::Helical_flow<Kernel>;
+Swirl swirl_at(double t) { return Swirl(0.3, Point(0.2 * t, 0.0, 0.0)); }
 
-// The mean distance of the surface's vertices to the axis.
-double mean_radius(const Mesh& tm, double axis_x)
+// The mean distance of the surface's vertices to the axis of `swirl`.
+double mean_radius(const Mesh& tm, const Swirl& swirl)
 {
   double sum = 0;
   for (Mesh::Vertex_index v : tm.vertices())
-    sum += std::hypot(tm.point(v).x() - axis_x, tm.point(v).y());
+    sum += std::sqrt(swirl.first_integral_radius(tm.point(v)));
   return sum / double(tm.number_of_vertices());
 }
 
@@ -44,7 +42,7 @@ int main()
   std::vector<Swirl> steps;
   for (int i = 0; i <= 4; ++i) {
     times.push_back(0.25 * i);
-    steps.push_back(Swirl{0.2 * times.back()});
+    steps.push_back(swirl_at(times.back()));
   }
   const FAS::Unsteady_flow_field_3<Swirl> flow(times, steps);
 
@@ -58,7 +56,7 @@ int main()
     flow_now.set_time(t); // the next iterations start from the surface of the previous time
     const FAS::Alignment_report report = deformation.run();
     std::cout << "t = " << t << ": " << report.number_of_iterations << " iterations, flux "
-              << report.normalized_flux << ", radius about the axis " << mean_radius(tm, 0.2 * t)
+              << report.normalized_flux << ", radius about the axis " << mean_radius(tm, swirl_at(t))
               << " (the stream surface: " << 1 - 0.2 * t << ")\n";
   }
   std::cout << deformation.number_of_factorizations() << " factorization\n";

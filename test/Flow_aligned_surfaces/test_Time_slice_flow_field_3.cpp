@@ -12,6 +12,7 @@
 #include <CGAL/Flow_aligned_surfaces/Flow_aligned_deformation.h>
 #include <CGAL/Flow_aligned_surfaces/Time_slice_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Unsteady_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/analytic_flow_fields.h>
 #include <CGAL/Flow_aligned_surfaces/make_surface_patch.h>
 
 #include <CGAL/Surface_mesh.h>
@@ -49,7 +50,7 @@ double axis_x_at(double t) { return 0.2 * t; }
 
 std::optional<Vector_3> drifting_swirl(const Point_3& p, double t)
 {
-  return Vector_3(-p.y(), p.x() - axis_x_at(t), 0.3);
+  return FAS::Helical_flow<K>(0.3, Point_3(axis_x_at(t), 0., 0.))(p);
 }
 
 using Unsteady = std::optional<Vector_3> (*)(const Point_3&, double);

@@ -261,12 +261,10 @@ TEST(AnalyticFlowFields, DefaultLinearFlowIsTheHarmonicSaddle)
   expect_divergence_free(field, points);
 }
 
-TEST(AnalyticFlowFields, HelicalFlowFirstIntegrals)
+// Both first integrals of a helical flow are constant along its stream lines at `points`, and the
+// flow is divergence-free there.
+void expect_helical_first_integrals(const FAS::Helical_flow<K>& field, const std::vector<Point>& points)
 {
-  const double c = 0.7;
-  const FAS::Helical_flow<K> field(c);
-  expect_vectors_near(field, Point(1, 2, 3), Vector(-2, 1, c), 0);
-  const std::vector<Point> points = sample_points(100, -3, 3);
   EXPECT_LE(max_first_integral_defect(
                 field, [&](const Point& p) { return field.first_integral_radius(p); }, points),
             tol);
@@ -274,6 +272,15 @@ TEST(AnalyticFlowFields, HelicalFlowFirstIntegrals)
                 field, [&](const Point& p) { return field.first_integral_helicoid(p); }, points),
             tol);
   expect_divergence_free(field, points);
+}
+
+TEST(AnalyticFlowFields, HelicalFlowFirstIntegrals)
+{
+  const double c = 0.7;
+  const FAS::Helical_flow<K> field(c);
+  expect_vectors_near(field, Point(1, 2, 3), Vector(-2, 1, c), 0);
+  const std::vector<Point> points = sample_points(100, -3, 3);
+  expect_helical_first_integrals(field, points);
 
   // The exact flow map (rotation by t about z, rise c t) keeps both integrals.
   for (const Point& p : sample_points(20, -3, 3)) {
@@ -289,6 +296,26 @@ TEST(AnalyticFlowFields, HelicalFlowFirstIntegrals)
     for (double s : {-1.0, 0.5, 2.0})
       EXPECT_NEAR(field.first_integral_helicoid(Point(s * std::cos(z / c), s * std::sin(z / c), z)), 0,
                   1e-14);
+}
+
+TEST(AnalyticFlowFields, HelicalFlowAboutAnotherAxisIsTheTranslatedFlow)
+{
+  const double c = -0.4;
+  const Vector a(0.7, -1.2, 2.5);
+  const FAS::Helical_flow<K> about_z(c);
+  const FAS::Helical_flow<K> field(c, CGAL::ORIGIN + a);
+  EXPECT_EQ(field.axis_point(), CGAL::ORIGIN + a);
+  expect_vectors_near(field, Point(1, 2, 3), Vector(-(2 - a.y()), 1 - a.x(), c), 0);
+  const std::vector<Point> points = sample_points(100, -3, 3);
+  for (const Point& p : points) {
+    const Vector d = *field(p + a) - *about_z(p);
+    EXPECT_LT(std::sqrt(d.squared_length()), 1e-14);
+    EXPECT_NEAR(field.first_integral_radius(p + a), about_z.first_integral_radius(p), 1e-12);
+    EXPECT_NEAR(field.first_integral_helicoid(p + a), about_z.first_integral_helicoid(p), 1e-12);
+  }
+  expect_helical_first_integrals(field, points);
+  // The axis is at rest but for the axial speed.
+  EXPECT_EQ(*field(Point(a.x(), a.y(), -5.)), Vector(0, 0, c));
 }
 
 TEST(AnalyticFlowFields, ABCFlowAtHandComputedPoints)

@@ -184,7 +184,10 @@ private:
 
 /// \ingroup PkgFlowAlignedSurfacesFlows
 /// The helical flow \f$ v(x, y, z) = (-y, x, c) \f$: a rigid rotation about the \f$ z \f$-axis
-/// with unit angular speed combined with a uniform axial speed \f$ c \f$.
+/// with unit angular speed combined with a uniform axial speed \f$ c \f$.  Given a point \f$ a \f$
+/// of the axis, the flow is translated by \f$ a \f$: \f$ v(p) = (-(y - a_y), x - a_x, c) \f$, and
+/// every formula below holds for \f$ p - a \f$ (a time series of such flows with a moving axis is a
+/// swirl that drifts: `follow_unsteady_flow.cpp`).
 ///
 /// Domain: \f$ \mathbb{R}^3 \f$.  Divergence-free; no potential
 /// (\f$ \nabla \times v = (0, 0, 2) \f$).  The streamlines are the helices
@@ -215,29 +218,45 @@ public:
   using Vector_3 = typename GeomTraits::Vector_3;
 
   /// \param axial_speed the constant \f$ z \f$-component \f$ c \f$ of the velocity
-  explicit Helical_flow(const FT& axial_speed = FT(1)) : m_c(axial_speed) {}
+  /// \param axis_point a point \f$ a \f$ of the axis, which is parallel to the \f$ z \f$-axis
+  explicit Helical_flow(const FT& axial_speed = FT(1),
+                        const Point_3& axis_point = Point_3(FT(0), FT(0), FT(0)))
+      : m_c(axial_speed), m_a(axis_point)
+  {
+  }
 
-  /// returns \f$ (-y, x, c) \f$.
-  std::optional<Vector_3> operator()(const Point_3& p) const { return Vector_3(-p.y(), p.x(), m_c); }
+  /// returns \f$ (-(y - a_y), x - a_x, c) \f$.
+  std::optional<Vector_3> operator()(const Point_3& p) const
+  {
+    return Vector_3(-(p.y() - m_a.y()), p.x() - m_a.x(), m_c);
+  }
 
-  /// returns \f$ x^2 + y^2 \f$.
-  FT first_integral_radius(const Point_3& p) const { return p.x() * p.x() + p.y() * p.y(); }
+  /// returns \f$ (x - a_x)^2 + (y - a_y)^2 \f$.
+  FT first_integral_radius(const Point_3& p) const
+  {
+    const FT x = p.x() - m_a.x(), y = p.y() - m_a.y();
+    return x * x + y * y;
+  }
 
-  /// returns \f$ y \cos(z / c) - x \sin(z / c) \f$.
+  /// returns \f$ y \cos(z / c) - x \sin(z / c) \f$ of \f$ (x, y, z) = p - a \f$.
   /// \pre `axial_speed() != 0`
   FT first_integral_helicoid(const Point_3& p) const
   {
     CGAL_precondition(m_c != FT(0));
     const std::array<double, 3> x = internal::to_double_coordinates(p);
-    const double phase = x[2] / CGAL::to_double(m_c);
-    return FT(x[1] * std::cos(phase) - x[0] * std::sin(phase));
+    const std::array<double, 3> a = internal::to_double_coordinates(m_a);
+    const double phase = (x[2] - a[2]) / CGAL::to_double(m_c);
+    return FT((x[1] - a[1]) * std::cos(phase) - (x[0] - a[0]) * std::sin(phase));
   }
 
   /// returns \f$ c \f$.
   const FT& axial_speed() const { return m_c; }
+  /// returns \f$ a \f$.
+  const Point_3& axis_point() const { return m_a; }
 
 private:
   FT m_c;
+  Point_3 m_a;
 };
 
 /// \ingroup PkgFlowAlignedSurfacesFlows
