@@ -200,27 +200,28 @@ private:
     State& s = *m_state;
     if (s.working_meanwhile)
       throw std::logic_error("the field was asked for an exchange while the ranks integrate ahead");
-    s.here.clear();
-    s.asked.clear();
+    Exchange_buffers& b = Exchange_buffers::of_this_process();
+    b.here.clear();
+    b.asked.clear();
     for (std::size_t i = 0; i < points.size(); ++i)
-      (decided_here(points[i]) ? s.here : s.asked).push_back(i);
+      (decided_here(points[i]) ? b.here : b.asked).push_back(i);
     std::vector<Sample> samples(points.size());
     const auto sample_here_and_work = [&] {
-      s.supplying_ranks = sample_decided_here(points, times, s.here, samples) ? 1 : 0;
+      s.supplying_ranks = sample_decided_here(points, times, b.here, samples) ? 1 : 0;
       if (meanwhile)
         meanwhile();
     };
     s.failed_ranks = 0;
     const bool ahead = request.ahead != nullptr && !request.ahead->empty();
-    if (s.asked.empty() && !ahead)
+    if (b.asked.empty() && !ahead)
     {
       sample_here_and_work();
       return samples;
     }
     fill_round(points, times, request);
-    s.wire.send(Rank_exchange::PROBE, s.round);
-    work_meanwhile(s.round, sample_here_and_work);
-    take_replies(s.wire.reply(s.round, s.piece, request.along), samples);
+    s.wire.send(Rank_exchange::PROBE, b.round);
+    work_meanwhile(b.round, sample_here_and_work);
+    take_replies(s.wire.reply(b.round, s.piece, request.along), samples);
     return samples;
   }
 
@@ -228,14 +229,14 @@ private:
   // particles of `request`.
   void fill_round(const std::vector<Point>& points, const std::vector<double>& times, const Ahead_request& request) const
   {
-    State& s = *m_state;
-    auto& round = s.round;
-    round.coordinates.resize(4 * s.asked.size());
-    for (std::size_t k = 0; k < s.asked.size(); ++k)
+    Exchange_buffers& b = Exchange_buffers::of_this_process();
+    Round& round = b.round;
+    round.coordinates.resize(4 * b.asked.size());
+    for (std::size_t k = 0; k < b.asked.size(); ++k)
     {
       for (int d = 0; d < 3; ++d)
-        round.coordinates[4 * k + std::size_t(d)] = points[s.asked[k]][d];
-      round.coordinates[4 * k + 3] = times[s.asked[k]];
+        round.coordinates[4 * k + std::size_t(d)] = points[b.asked[k]][d];
+      round.coordinates[4 * k + 3] = times[b.asked[k]];
     }
     round.ahead.clear();
     if (request.ahead != nullptr && !request.ahead->empty())
@@ -250,9 +251,10 @@ private:
   {
     State& s = *m_state;
     ++s.exchanges;
-    const std::size_t n = s.asked.size();
+    const std::vector<std::size_t>& asked = Exchange_buffers::of_this_process().asked;
+    const std::size_t n = asked.size();
     for (std::size_t k = 0; k < n; ++k)
-      samples[s.asked[k]] = Rank_exchange::combined(&total[4 * k]);
+      samples[asked[k]] = Rank_exchange::combined(&total[4 * k]);
     s.failed_ranks = int(total[4 * n]);
     const bool supplied_here = s.supplying_ranks > 0;
     for (int r = 0; r < s.wire.controller()->GetNumberOfProcesses(); ++r)
@@ -315,7 +317,7 @@ public:
     if (!distributed())
       return;
     State& s = *m_state;
-    Round round; // its buffers serve every exchange
+    Round& round = Exchange_buffers::of_this_process().round;
     while (s.wire.receive(round) == Rank_exchange::PROBE)
       s.wire.reply(round, s.piece, nullptr);
   }
@@ -585,8 +587,6 @@ private:
     std::unordered_map<Key, Sample, Key_hash> samples;
     int failed_ranks = 0, supplying_ranks = 0;
     std::size_t exchanges = 0;
-    Round round;                                     // rank 0's, whose buffers serve every exchange
-    std::vector<std::size_t> here, asked;            // the points of an exchange sampled here and asked
     std::thread::id owner;                           // the thread that may exchange
     bool working_meanwhile = false;                  // rank 0 works while the ranks integrate
     double time = 0;                                 // at which rank 0 samples
