@@ -105,9 +105,9 @@ public:
   /// Samples this rank's piece of the flow at `time` from `steps` (each a data set, or the 3D
   /// blocks of a composite data set: `flow_data_set()`; none when the piece has no cells) with
   /// the array `selection` (empty name: the active vectors); a step's field is built anew only
-  /// when its data or the selection changed (`Rank_piece::sample()`).  Not collective: RequestInformation calls it for
-  /// the panel's default patch.  Never throws: a piece that cannot be sampled is reported by the
-  /// next update.
+  /// when its data or the selection changed (`Rank_piece::sample()`).  Not collective:
+  /// RequestInformation calls it for the panel's default patch.  Never throws: a piece that
+  /// cannot be sampled is reported by the next update.
   void sample_piece(const std::vector<Flow_step>& steps, double time, const Velocity_selection& selection)
   {
     State& s = *m_state;
