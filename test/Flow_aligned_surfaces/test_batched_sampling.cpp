@@ -108,6 +108,8 @@ struct Two_pieces {
   std::shared_ptr<std::size_t> meanwhile = std::make_shared<std::size_t>(0);    // first rounds
   std::shared_ptr<std::size_t> here = std::make_shared<std::size_t>(0);         // answered at once
   std::shared_ptr<std::size_t> last_samples = std::make_shared<std::size_t>(0); // particles past the line
+  std::shared_ptr<std::size_t> told = std::make_shared<std::size_t>(0);         // particles of first rounds
+  std::shared_ptr<std::size_t> told_here = std::make_shared<std::size_t>(0);    // of those, in this piece
 
   using Answer = std::optional<Vector_3>;
   Answer at(const Point_3& p, double t) const
@@ -177,6 +179,9 @@ struct Two_pieces {
                                  FAS::internal::Integrated_ahead<Answer>& along, const Work& work) const
   {
     ++*meanwhile;
+    *told += ahead.size();
+    for (std::size_t i = 0; i < ahead.size(); ++i)
+      *told_here += decides(-1, ahead.position(i)) ? 1 : 0;
     integrate_ahead(ahead, along);
     work();
   }
@@ -195,6 +200,15 @@ struct Two_pieces {
         [&](const Eigen::Vector3d& x) { return decides(1, x); }, along);
     *sent_back += along.samples.size();
     *states += along.states.size();
+  }
+};
+
+// `Two_pieces` that also tells where its piece alone decides, as the plugin's distributed field does.
+template <class Field, bool unsteady>
+struct Two_pieces_telling : Two_pieces<Field, unsteady> {
+  bool decides_here(const Point_3& p) const
+  {
+    return this->decides(-1, Eigen::Vector3d(p.x(), p.y(), p.z()));
   }
 };
 
@@ -455,6 +469,24 @@ TEST(BatchedSampling, IntegratingAheadInTwoPiecesIsTheSameBitForBitInFewerBatche
             << " time lines\n";
 }
 
+TEST(BatchedSampling, AFieldThatTellsWhereItDecidesHearsOfTheOtherParticlesOnly)
+{
+  const FAS::Cylinder_potential_flow<K> cylinder(1.0, 1.0);
+  const Two_pieces<FAS::Cylinder_potential_flow<K>, false> pieces{cylinder, -1.5};
+  const Two_pieces_telling<FAS::Cylinder_potential_flow<K>, false> telling{{cylinder, -1.5}};
+  const Polyline seed = cylinder_seed();
+  const auto np = cylinder_surface_parameters();
+  const Surface ahead(pieces, seed, np), told(telling, seed, np);
+  expect_same_surface(ahead, told);
+  // The same first rounds, of the same particles; those that stand where the algorithm's piece
+  // alone decides are left out before their states are written.
+  EXPECT_EQ(*telling.meanwhile, *pieces.meanwhile);
+  EXPECT_GT(*pieces.told_here, 0u);
+  EXPECT_EQ(*telling.told_here, 0u);
+  EXPECT_GT(*telling.told, 0u);
+  EXPECT_EQ(*telling.told, *pieces.told - *pieces.told_here);
+}
+
 TEST(BatchedSampling, IntegratingAheadBothWaysAndOnAPathSurfaceIsTheSameBitForBit)
 {
   const FAS::Linear_flow<K> linear;
@@ -478,6 +510,48 @@ TEST(BatchedSampling, IntegratingAheadBothWaysAndOnAPathSurfaceIsTheSameBitForBi
   expect_batched(*unsteady_pieces.counts, path_ahead);
   EXPECT_GT(*unsteady_pieces.along_paths, 0u);
   EXPECT_GT(*unsteady_pieces.here, 0u);
+}
+
+// A swirl that answers `budget` more samples and then waits for the rest (a task in rounds).
+struct Rationed_swirl {
+  std::shared_ptr<int> budget = std::make_shared<int>(1000);
+  bool waiting() const { return *budget < 0; }
+  std::optional<Eigen::Vector3d> operator()(const Eigen::Vector3d& x, double) const
+  {
+    if (--*budget < 0)
+      return std::nullopt;
+    return Eigen::Vector3d(-x[1], x[0], 0.5);
+  }
+};
+
+TEST(BatchedSampling, ASuspendedStepLeavesTheIntegratorAsItWas)
+{
+  using Integrator = FAS::internal::Dormand_prince_integrator<Rationed_swirl>;
+  const auto state_of = [](const Integrator& it) {
+    std::vector<double> numbers(Integrator::state_size);
+    it.write_state(numbers.data());
+    return numbers;
+  };
+  const Rationed_swirl rationed, unlimited;
+  Integrator it(rationed, Eigen::Vector3d(1, 0, 0), 0, 1),
+      reference(unlimited, Eigen::Vector3d(1, 0, 0), 0, 1);
+  // The first step also chooses the starting step size (two samples), then takes 6 stages.
+  for (int round = 0; round < 3; ++round) {
+    std::size_t suspended = 0;
+    for (int budget = 0;; ++budget) {
+      const std::vector<double> before = state_of(it);
+      *rationed.budget = budget;
+      const FAS::internal::Step_result r = it.resumable_step();
+      if (r != FAS::internal::Step_result::SUSPENDED) {
+        ASSERT_EQ(r, reference.step());
+        break;
+      }
+      ++suspended;
+      ASSERT_EQ(state_of(it), before) << "round " << round << ", " << budget << " samples";
+    }
+    EXPECT_GE(suspended, 6u);
+    ASSERT_EQ(state_of(it), state_of(reference)) << "round " << round;
+  }
 }
 
 TEST(BatchedSampling, AnIntegratorGoesOnFromItsNumbers)

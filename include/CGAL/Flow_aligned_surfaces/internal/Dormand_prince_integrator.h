@@ -215,6 +215,25 @@ public:
     return Step_result::STEP_UNDERFLOW;
   }
 
+  /// `step()`, except that a step the field suspends leaves the integrator as it was, so that
+  /// the call can be made again once the field has the samples (a task run in rounds:
+  /// batched_sampling.h).  Such a step changes only the step size, the exit's confirmation and
+  /// the counters: the point and the dense output change only with an accepted step.
+  Step_result resumable_step()
+  {
+    const double h = m_h;
+    const bool confirming = m_confirming;
+    const std::size_t rejected = m_number_of_rejected, evaluations = m_number_of_evaluations;
+    const Step_result result = step();
+    if (result == Step_result::SUSPENDED) {
+      m_h = h;
+      m_confirming = confirming;
+      m_number_of_rejected = rejected;
+      m_number_of_evaluations = evaluations;
+    }
+    return result;
+  }
+
   /// the current point x(τ)
   const Eigen::Vector3d& position() const { return m_x; }
   /// τ ≥ 0

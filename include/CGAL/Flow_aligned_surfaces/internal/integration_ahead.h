@@ -13,7 +13,8 @@
 // bit for bit, and each stretch of a path is integrated once, on the process that holds it.
 // What the algorithm's own process alone decides, its tasks sample at once (`Answers_here`),
 // without a round; the other processes may integrate the particles of a batch of tasks while it
-// does (`Integrates_ahead_meanwhile`).
+// does (`Integrates_ahead_meanwhile`), told only of those that stand where it does not alone
+// decide (`Decides_here`).
 
 #ifndef CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_INTEGRATION_AHEAD_H
 #define CGAL_FLOW_ALIGNED_SURFACES_INTERNAL_INTEGRATION_AHEAD_H
@@ -270,6 +271,20 @@ struct Integrates_ahead_meanwhile<
     std::void_t<decltype(std::declval<const FlowField&>().integrate_ahead_meanwhile(
         std::declval<const Integration_ahead&>(), std::declval<Integrated_ahead<Answer>&>(),
         std::declval<void (*)()>()))>> : std::true_type {
+};
+
+/// Whether a field that integrates ahead meanwhile also tells where this process alone decides
+/// the samples, `field.decides_here(p)`: a particle that stands there is left out of the first
+/// round's particles (no other process could take its first step) before its state is written.
+template <class FlowField, class Point_3, class = void>
+struct Decides_here : std::false_type {
+};
+template <class FlowField, class Point_3>
+struct Decides_here<
+    FlowField, Point_3,
+    std::enable_if_t<std::is_same_v<
+        decltype(std::declval<const FlowField&>().decides_here(std::declval<const Point_3&>())), bool>>>
+    : std::true_type {
 };
 
 // Integrates the particle `i` of `ahead` (integrator `it`, sampling `field`) on as

@@ -369,6 +369,11 @@ public:
     return decided_sample(p, t);
   }
 
+  /// Whether this process alone decides the samples at `p` (every point on one process; on rank
+  /// 0 of several, a point no other rank's piece may hold): the library leaves the particles that
+  /// stand there out of those it has the ranks integrate ahead meanwhile.
+  bool decides_here(const Point& p) const { return !distributed() || decided_here(p); }
+
   /// `sample(points)`, integrating the particles `ahead` on where a rank alone decides their
   /// samples; where they got to is put in `along` (integration_ahead.h).
   std::vector<Sample> sample(const std::vector<Point>& points, const Integration_ahead& ahead,
@@ -393,9 +398,13 @@ public:
     const std::vector<std::size_t> kept = particles_elsewhere(ahead);
     if (kept.empty())
       return work();
-    const Integration_ahead sent = ahead.only(kept);
+    // The library leaves out the particles rank 0 alone decides (`decides_here()`): all are kept
+    // unless rank 0's piece failed.
+    std::optional<Integration_ahead> subset;
+    if (kept.size() != ahead.size())
+      subset = ahead.only(kept);
     Integrated_ahead got;
-    exchange({}, {}, Ahead_request{ &sent, time, &got }, work);
+    exchange({}, {}, Ahead_request{ subset ? &*subset : &ahead, time, &got }, work);
     for (FAS::internal::State_ahead& reached : got.states)
     {
       reached.particle = kept.at(reached.particle);

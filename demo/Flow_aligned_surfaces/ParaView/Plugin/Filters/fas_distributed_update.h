@@ -153,6 +153,7 @@ struct Unsteady_view {
   {
     return field.sample_here(p, t);
   }
+  bool decides_here(const Point& p) const { return field.decides_here(p); }
   std::vector<Distributed_velocity_field::Sample> sample(const std::vector<Point>& points,
     const std::vector<double>& times, const Distributed_velocity_field::Integration_ahead& ahead,
     Distributed_velocity_field::Integrated_ahead& along) const
