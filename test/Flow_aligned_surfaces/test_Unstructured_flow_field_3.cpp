@@ -8,6 +8,7 @@
 
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
+#include <CGAL/Flow_aligned_surfaces/internal/cell_shape_functions.h>
 
 #include "test_kernel.h"
 
@@ -333,6 +334,38 @@ TEST(UnstructuredFlowField3, TrilinearFieldInTheParametersIsReproducedOnDistorte
     ASSERT_TRUE(v) << "no cell contains " << p;
     expect_near(*v, g(global), 1e-9, p);
   }
+}
+
+TEST(UnstructuredFlowField3, AHexahedronsPolynomialMapStepsAsItsShapeFunctionsDo)
+{
+  // The Newton step of a hexahedron from its map's polynomial coefficients is the step from its
+  // shape functions, up to rounding, on distorted cells; both refuse a flat cell.
+  namespace I = FAS::internal;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2), parameter(-0.3, 1.3);
+  static const int corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                   {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  for (int q = 0; q < 200; ++q) {
+    double X[8][3];
+    for (int i = 0; i < 8; ++i)
+      for (int a = 0; a < 3; ++a)
+        X[i][a] = corner[i][a] * (1. + a) + jitter(rng);
+    const double p[3] = {parameter(rng), 2 * parameter(rng), 3 * parameter(rng)};
+    const double xi[3] = {parameter(rng), parameter(rng), parameter(rng)};
+    double from_shapes[3], from_polynomial[3];
+    ASSERT_TRUE(I::newton_step(I::VTK_cell_type::HEXAHEDRON, X, 8, p, xi, from_shapes));
+    ASSERT_TRUE(I::Hexahedron_map(X).newton_step(p, xi, from_polynomial));
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(from_polynomial[a], from_shapes[a], 1e-11 * (1. + std::abs(from_shapes[a])))
+          << "cell " << q;
+  }
+  double flat[8][3];
+  for (int i = 0; i < 8; ++i)
+    flat[i][0] = corner[i][0], flat[i][1] = corner[i][1], flat[i][2] = 0.;
+  const double p[3] = {0.5, 0.5, 0.}, xi[3] = {0.5, 0.5, 0.5};
+  double d[3];
+  EXPECT_FALSE(I::newton_step(I::VTK_cell_type::HEXAHEDRON, flat, 8, p, xi, d));
+  EXPECT_FALSE(I::Hexahedron_map(flat).newton_step(p, xi, d));
 }
 
 TEST(UnstructuredFlowField3, TrilinearFieldIsReproducedOnAParallelepipedGrid)

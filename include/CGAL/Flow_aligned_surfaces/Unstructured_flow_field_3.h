@@ -56,7 +56,8 @@ namespace Flow_aligned_surfaces {
 /// float boxes (rounded outwards) whose leaves hold 8 cells each, built top down by splitting
 /// the cells at the median of their bounding boxes' centres along the longest axis (by the
 /// constructor, with TBB on the threads of the caller's arena: the same tree).  The walk
-/// inverts the hint cell's map at `p` (Newton's method from the cell's parametric centre);
+/// inverts the hint cell's map at `p` (Newton's method from the cell's parametric centre; a
+/// hexahedron's steps from the eight coefficients of its trilinear map as a polynomial);
 /// if `p` is outside, it crosses the face through which the parametric point leaves the
 /// reference cell the most into the cell sharing that face, and so on, for at most 8 cells.
 /// It gives up at the mesh boundary, on a cell whose inversion diverges, and when `p` is not
