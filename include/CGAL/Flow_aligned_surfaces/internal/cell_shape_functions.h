@@ -290,8 +290,8 @@ inline bool newton_step(unsigned char type, const double (*X)[3], int n, const d
 
 // A hexahedron's trilinear map as a polynomial in (r, s, t), VTK's corner order:
 // x = c0 + c1 r + c2 s + c3 t + c4 rs + c5 rt + c6 st + c7 rst.  A Newton step from these
-// coefficients takes half the time of one from the eight shape functions (the hexahedra of
-// OpenFOAM's meshes take three or four steps each).
+// coefficients takes half the arithmetic of one from the eight shape functions and their
+// derivatives, and gives the same step up to rounding.
 class Hexahedron_map {
 public:
   explicit Hexahedron_map(const double (*X)[3])
