@@ -13,6 +13,10 @@ FORM says how the flow comes in, the same pipeline on any number of ranks:
                   ranks (XMLImageDataReader)
   unsteady_cells  CYLINDER_UNSTEADY_grid.pvd (34 images; a copy, below) through
                   RedistributeDataSet: the unstructured pieces of a time series
+  unsteady_cells_cached
+                  the same, with a Temporal Cache of every step after RedistributeDataSet: the
+                  filters of the chain take the steps the first one pulled (the manual,
+                  "Distributed Data (MPI)")
   unsteady_image  the same copy, each step's image read piece-wise
 The time series is read from a copy written into WORKDIR once, each step uncompressed in appended
 form: the XML reader decodes a step stored inline and compressed (the shared files) whole for
@@ -103,9 +107,14 @@ def flow():
     series = PVDReader(FileName=series_file())
     if form == "unsteady_cells":
         return RedistributeDataSet(Input=series), series.TimestepValues
+    if form == "unsteady_cells_cached":
+        cached = TemporalCache(Input=RedistributeDataSet(Input=series),
+                               CacheSize=len(series.TimestepValues))
+        return cached, series.TimestepValues
     if form == "unsteady_image":
         return series, series.TimestepValues
-    raise RuntimeError("FORM is cells, image, unsteady_cells or unsteady_image, not %r" % form)
+    raise RuntimeError("FORM is cells, image, unsteady_cells, unsteady_cells_cached or unsteady_image, "
+                       "not %r" % form)
 
 
 data, times = flow()

@@ -10,7 +10,8 @@
 #   [ROUNDS=3] benchmark/Flow_aligned_surfaces/run_mpi_filters.sh BUILD_DIR [DATA_DIR] [FORM ...]
 #
 # BUILD_DIR: a Release build with the plugin (scripts/build-paraview-plugin.sh, or the tests' tree);
-# DATA_DIR: ../shared/data by default; FORM: cells image unsteady_cells unsteady_image by default.
+# DATA_DIR: ../shared/data by default; FORM: cells image unsteady_cells unsteady_cells_cached
+# unsteady_image by default.
 # The outputs and each run's lines (BUILD_DIR/mpi_filters/FORM_runs.txt) go to
 # BUILD_DIR/mpi_filters/; the tables to stdout.
 set -euo pipefail
@@ -22,7 +23,7 @@ build="$(cd "${1:?usage: run_mpi_filters.sh BUILD_DIR [DATA_DIR] [FORM ...]}" &&
 data="$(cd "${2:-$root/../shared/data}" && pwd)"
 shift $(( $# >= 2 ? 2 : 1 ))
 forms=("$@")
-[ ${#forms[@]} -gt 0 ] || forms=(cells image unsteady_cells unsteady_image)
+[ ${#forms[@]} -gt 0 ] || forms=(cells image unsteady_cells unsteady_cells_cached unsteady_image)
 plugin="$build/lib/paraview-5.11/plugins/FlowAlignedSurfaces/FlowAlignedSurfaces.so"
 reference="$build/demo/Flow_aligned_surfaces/ParaView/test/paraview_reference"
 work="$build/mpi_filters"
