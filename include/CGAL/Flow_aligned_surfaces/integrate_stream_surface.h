@@ -171,7 +171,8 @@ struct Front_field {
   static constexpr bool answers_here = Answers_here<FlowField, Point_3, Answer, is_unsteady>::value;
   static constexpr bool integrates_ahead_meanwhile =
       integrates_ahead && Integrates_ahead_meanwhile<FlowField, Answer>::value;
-  static constexpr bool decides_here = integrates_ahead_meanwhile && Decides_here<FlowField, Point_3>::value;
+  static constexpr bool tells_where_it_decides =
+      integrates_ahead_meanwhile && Decides_here<FlowField, Point_3>::value;
 
   Value operator()(const Eigen::Vector3d& x, double t) const
   {
@@ -197,7 +198,7 @@ struct Front_field {
   /// Whether this process alone decides the samples at x (false when the field does not tell).
   bool decided_here(const Eigen::Vector3d& x) const
   {
-    if constexpr (decides_here)
+    if constexpr (tells_where_it_decides)
       return field->decides_here(point(x));
     else
       return false;
