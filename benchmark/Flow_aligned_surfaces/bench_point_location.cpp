@@ -13,7 +13,9 @@
 //
 //   bench_point_location --benchmark_repetitions=5
 //
-// Variants: Package (the field's operator(): hint, face neighbours, bucket grid),
+// Variants: Package (the field's operator(): the walk from the hint, else the hierarchy),
+// Package_two_steps (each point in the same field and in a second one on the same cells in turn,
+// as an unsteady field interpolating between two time steps asks them),
 // AABB_hint (the peer with the same hint), AABB (the peer without hint).
 
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
@@ -135,7 +137,7 @@ struct Peer {
 
 struct Setup {
   fas_bench::Block_mesh mesh;
-  std::unique_ptr<Field> field;
+  std::unique_ptr<Field> field, next_field;
   std::unique_ptr<Peer> peer;
   std::vector<Point_3> coherent, random;
 };
@@ -145,8 +147,13 @@ Setup make_setup(bool tetrahedra)
   Setup s;
   s.mesh = fas_bench::make_block_mesh(tetrahedra ? 55 : 100, tetrahedra);
   // Float points, as a field read from a legacy file with POINTS float (the CFD data's layout).
-  s.field = std::make_unique<Field>(std::vector<float>(s.mesh.points.begin(), s.mesh.points.end()),
-                                    s.mesh.connectivity, s.mesh.offsets, s.mesh.types, s.mesh.vectors);
+  const auto float_field = [&s] {
+    return std::make_unique<Field>(std::vector<float>(s.mesh.points.begin(), s.mesh.points.end()),
+                                   s.mesh.connectivity, s.mesh.offsets, s.mesh.types, s.mesh.vectors);
+  };
+  s.field = float_field();
+  // A field of its own on the same cells: the next time step of an unsteady flow.
+  s.next_field = float_field();
   s.peer = std::make_unique<Peer>(*s.field);
   for (const auto& x : fas_bench::coherent_queries(s.mesh, 4096, 256))
     s.coherent.emplace_back(x[0], x[1], x[2]);
@@ -162,17 +169,19 @@ Setup& setup(bool tetrahedra)
   return tetrahedra ? tet : hex;
 }
 
-enum Variant { PACKAGE, AABB_HINT, AABB };
+enum Variant { PACKAGE, PACKAGE_TWO_STEPS, AABB_HINT, AABB };
 
+// Queries each point `per_point` times in a row, one query per benchmark iteration.
 template <class Query>
-void run(benchmark::State& state, const std::vector<Point_3>& points, Query&& query)
+void run(benchmark::State& state, const std::vector<Point_3>& points, Query&& query,
+         std::size_t per_point = 1)
 {
   std::size_t q = 0, inside = 0;
   for (auto _ : state) {
-    const std::optional<Vector_3> v = query(points[q]);
+    const std::optional<Vector_3> v = query(points[q / per_point]);
     inside += v.has_value();
     benchmark::DoNotOptimize(v);
-    q = (q + 1) & (kQueries - 1);
+    q = (q + 1) % (kQueries * per_point);
   }
   state.SetItemsProcessed(state.iterations());
   state.counters["inside"] = double(inside) / double(state.iterations());
@@ -187,6 +196,18 @@ void BM_locate(benchmark::State& state, bool tetrahedra, bool coherent, Variant 
   case PACKAGE: {
     const Field& f = *s.field;
     run(state, points, [&f](const Point_3& p) { return f(p); });
+    break;
+  }
+  case PACKAGE_TWO_STEPS: { // each point in both fields in turn, as an unsteady field between two steps
+    const Field &f = *s.field, &g = *s.next_field;
+    bool next = false;
+    run(
+        state, points,
+        [&](const Point_3& p) {
+          next = !next;
+          return next ? g(p) : f(p);
+        },
+        2);
     break;
   }
   case AABB_HINT:
@@ -204,6 +225,7 @@ void BM_locate(benchmark::State& state, bool tetrahedra, bool coherent, Variant 
   BENCHMARK_CAPTURE(BM_locate, name, tet, coherent, variant)->Repetitions(5)->ReportAggregatesOnly(true)
 
 FAS_LOCATE(hex_coherent_Package, false, true, PACKAGE);
+FAS_LOCATE(hex_coherent_Package_two_steps, false, true, PACKAGE_TWO_STEPS);
 FAS_LOCATE(hex_coherent_AABB_hint, false, true, AABB_HINT);
 FAS_LOCATE(hex_coherent_AABB, false, true, AABB);
 FAS_LOCATE(hex_random_Package, false, false, PACKAGE);

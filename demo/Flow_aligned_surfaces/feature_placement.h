@@ -67,6 +67,32 @@ auto values_at(const Field& field, const std::vector<Point>& points)
   }
 }
 
+/// The n^3 lattice points (i, j, k) in the order they are sampled: a walk from each point to a
+/// lattice neighbour, fastest along the axis of the smallest step (back and forth, row after row,
+/// layer after layer), so that each query of a field that starts from its previous answer (the
+/// walk of `Unstructured_flow_field_3`) starts next to it.
+inline std::vector<std::array<int, 3>> lattice_walk(int n, const std::array<double, 3>& step)
+{
+  std::array<int, 3> axis{0, 1, 2}; // fastest first
+  std::stable_sort(axis.begin(), axis.end(),
+                   [&](int a, int b) { return step[std::size_t(a)] < step[std::size_t(b)]; });
+  std::vector<std::array<int, 3>> visits;
+  visits.reserve(std::size_t(n) * n * n);
+  const auto there_and_back = [n](int u, int pass) { return pass % 2 == 0 ? u : n - 1 - u; };
+  for (int slow = 0; slow < n; ++slow)
+    for (int u = 0; u < n; ++u) {
+      const int middle = there_and_back(u, slow);
+      for (int v = 0; v < n; ++v) {
+        std::array<int, 3> c;
+        c[std::size_t(axis[2])] = slow;
+        c[std::size_t(axis[1])] = middle;
+        c[std::size_t(axis[0])] = there_and_back(v, slow * n + u);
+        visits.push_back(c);
+      }
+    }
+  return visits;
+}
+
 /// See the file's comment.  `field(p)` returns an optional vector; `box` is its domain; `size`
 /// the patch size; `tilt` radians; `center`: both patches there (only tilted), instead of near the
 /// feature.  Returns nothing when no lattice point has a flow.
@@ -84,13 +110,15 @@ std::optional<Feature_placement<Point, Vector>> place_near_feature(const Field& 
     return Point(lo[0] + i * step[0], lo[1] + j * step[1], lo[2] + k * step[2]);
   };
   const auto index = [&](int i, int j, int k) { return (std::size_t(k) * n + j) * n + i; };
+  const std::vector<std::array<int, 3>> visits = lattice_walk(n, step);
   std::vector<Point> lattice;
-  lattice.reserve(std::size_t(n) * n * n);
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        lattice.push_back(point(i, j, k));
-  const auto values = values_at(field, lattice);
+  lattice.reserve(visits.size());
+  for (const std::array<int, 3>& c : visits)
+    lattice.push_back(point(c[0], c[1], c[2]));
+  const auto visited = values_at(field, lattice);
+  std::vector<typename decltype(visited)::value_type> values(visited.size());
+  for (std::size_t m = 0; m < visits.size(); ++m)
+    values[index(visits[m][0], visits[m][1], visits[m][2])] = visited[m];
   std::vector<std::optional<Vector>> samples(lattice.size());
   Vector mean(0, 0, 0);
   std::size_t defined = 0;
@@ -99,7 +127,7 @@ std::optional<Feature_placement<Point, Vector>> place_near_feature(const Field& 
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        const Point& p = lattice[index(i, j, k)];
+        const Point p = point(i, j, k);
         std::optional<Vector> v = values[index(i, j, k)];
         if (v && !(std::isfinite(v->x()) && std::isfinite(v->y()) && std::isfinite(v->z())))
           v.reset();

@@ -343,13 +343,11 @@ TEST(UnstructuredFlowField3, AHexahedronsPolynomialMapStepsAsItsShapeFunctionsDo
   namespace I = FAS::internal;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> jitter(-0.2, 0.2), parameter(-0.3, 1.3);
-  static const int corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                   {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   for (int q = 0; q < 200; ++q) {
     double X[8][3];
     for (int i = 0; i < 8; ++i)
       for (int a = 0; a < 3; ++a)
-        X[i][a] = corner[i][a] * (1. + a) + jitter(rng);
+        X[i][a] = hex_corner[i][a] * (1. + a) + jitter(rng);
     const double p[3] = {parameter(rng), 2 * parameter(rng), 3 * parameter(rng)};
     const double xi[3] = {parameter(rng), parameter(rng), parameter(rng)};
     double from_shapes[3], from_polynomial[3];
@@ -361,11 +359,44 @@ TEST(UnstructuredFlowField3, AHexahedronsPolynomialMapStepsAsItsShapeFunctionsDo
   }
   double flat[8][3];
   for (int i = 0; i < 8; ++i)
-    flat[i][0] = corner[i][0], flat[i][1] = corner[i][1], flat[i][2] = 0.;
+    flat[i][0] = hex_corner[i][0], flat[i][1] = hex_corner[i][1], flat[i][2] = 0.;
   const double p[3] = {0.5, 0.5, 0.}, xi[3] = {0.5, 0.5, 0.5};
   double d[3];
   EXPECT_FALSE(I::newton_step(I::VTK_cell_type::HEXAHEDRON, flat, 8, p, xi, d));
   EXPECT_FALSE(I::Hexahedron_map(flat).newton_step(p, xi, d));
+}
+
+TEST(UnstructuredFlowField3, AParallelepipedIsInvertedByOneNewtonStep)
+{
+  // A parallelepiped's map x = o + A xi is affine: one Newton step from the centre finds xi, in
+  // the cell or outside it (as the walk needs).  A hexahedron with one corner moved is not
+  // affine and takes more steps to the same accuracy.
+  namespace I = FAS::internal;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> entry(-0.3, 0.3), parameter(-0.5, 1.5);
+  for (int q = 0; q < 100; ++q) {
+    double A[3][3], o[3], X[8][3];
+    for (int a = 0; a < 3; ++a) {
+      o[a] = 10. * entry(rng);
+      for (int b = 0; b < 3; ++b)
+        A[a][b] = (a == b ? 1. + a : 0.) + entry(rng);
+    }
+    for (int i = 0; i < 8; ++i)
+      for (int a = 0; a < 3; ++a)
+        X[i][a] = o[a] + A[a][0] * hex_corner[i][0] + A[a][1] * hex_corner[i][1] + A[a][2] * hex_corner[i][2];
+    const double truth[3] = {parameter(rng), parameter(rng), parameter(rng)};
+    double p[3];
+    for (int a = 0; a < 3; ++a)
+      p[a] = o[a] + A[a][0] * truth[0] + A[a][1] * truth[1] + A[a][2] * truth[2];
+    EXPECT_TRUE(I::Hexahedron_map(X).is_affine()) << "cell " << q;
+    double xi[3];
+    I::newton_start(I::VTK_cell_type::HEXAHEDRON, xi);
+    ASSERT_EQ(I::newton_iterations(I::VTK_cell_type::HEXAHEDRON, X, 8, p, xi), I::Newton_outcome::CONVERGED);
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(xi[a], truth[a], 1e-12) << "cell " << q;
+    X[6][0] += 0.1;
+    EXPECT_FALSE(I::Hexahedron_map(X).is_affine()) << "cell " << q;
+  }
 }
 
 TEST(UnstructuredFlowField3, TrilinearFieldIsReproducedOnAParallelepipedGrid)
@@ -617,23 +648,30 @@ TEST(UnstructuredFlowField3, ConcurrentQueriesFromSeveralThreads)
 
 TEST(UnstructuredFlowField3, AlternatingBetweenFieldsOnOneThreadIsCorrect)
 {
-  // Two fields share the thread's hint cache; each query must ignore the other's hint, even
-  // where the other field's hint cell index exists in it.
+  // A thread keeps the walk caches of the last 4 fields it queried; 6 fields queried in turn
+  // (the same point in each) evict and reuse them.  Each query must use its own field's hint
+  // and neighbours only, even where another field's hint cell index exists in it.
   std::mt19937 rng(47);
-  Block b1({3, 3, 3}, distorted_grid(51));
-  b1.fill(10);
-  Block b2({3, 3, 3}, distorted_grid(53));
-  b2.fill(12);
-  const Linear_field f1(rng), f2(rng);
-  const Field field1 = b1.field(b1.values(f1)), field2 = b2.field(b2.values(f2));
+  std::vector<Block> blocks;
+  std::vector<Linear_field> flows;
+  std::vector<Field> fields;
+  for (int m = 0; m < 6; ++m) {
+    blocks.emplace_back(std::array<int, 3>{3, 3, 3}, distorted_grid(51 + 2 * m));
+    blocks.back().fill(10 + 2 * (m % 2));
+    flows.emplace_back(rng);
+    fields.push_back(blocks.back().field(blocks.back().values(flows.back())));
+  }
   std::uniform_real_distribution<double> u(1.2, 2.3);
   for (int q = 0; q < 500; ++q) {
     const std::array<double, 3> x = {u(rng), u(rng) - 3., u(rng) - 1.};
     const Point_3 p = to_point(x);
-    const std::optional<Vector_3> v1 = field1(p), v2 = field2(p);
-    ASSERT_TRUE(v1 && v2) << "at " << p;
-    expect_near(*v1, f1(x.data()), 1e-12, p);
-    expect_near(*v2, f2(x.data()), 1e-12, p);
+    // In turn: 2 fields (as an unsteady field between two steps), then all 6.
+    const int count = q < 250 ? 2 : 6;
+    for (int m = 0; m < count; ++m) {
+      const std::optional<Vector_3> v = fields[std::size_t(m)](p);
+      ASSERT_TRUE(v) << "field " << m << " at " << p;
+      expect_near(*v, flows[std::size_t(m)](x.data()), 1e-12, p);
+    }
   }
 }
 

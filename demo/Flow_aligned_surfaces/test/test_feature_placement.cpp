@@ -12,7 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <set>
+#include <vector>
 
 namespace {
 
@@ -65,6 +68,28 @@ TEST(FeaturePlacement, AtTheLargestVorticityWithoutObstacle)
   EXPECT_FALSE(placed->found_obstacle);
   EXPECT_LT(std::hypot(placed->feature.x(), placed->feature.y()), 2.0 / 39 * 1.5);
   EXPECT_NE(placed->description.find("vorticity"), std::string::npos);
+}
+
+// The lattice's sampling order visits each point once, each from a neighbour (one step along one
+// axis), fastest along the axis of the smallest step, which is what keeps the queries coherent.
+TEST(FeaturePlacement, TheLatticeIsSampledAlongAWalkBetweenNeighbours)
+{
+  for (const int n : {3, 4, 40}) {
+    const std::vector<std::array<int, 3>> visits = fas_demo::lattice_walk(n, {0.5, 0.25, 1.0});
+    ASSERT_EQ(visits.size(), std::size_t(n * n * n));
+    std::set<std::array<int, 3>> seen(visits.begin(), visits.end());
+    EXPECT_EQ(seen.size(), visits.size()) << n;
+    EXPECT_EQ(*seen.begin(), (std::array<int, 3>{0, 0, 0}));
+    EXPECT_EQ(*seen.rbegin(), (std::array<int, 3>{n - 1, n - 1, n - 1}));
+    for (std::size_t m = 1; m < visits.size(); ++m) {
+      int moved = 0;
+      for (int a = 0; a < 3; ++a)
+        moved += std::abs(visits[m][std::size_t(a)] - visits[m - 1][std::size_t(a)]);
+      ASSERT_EQ(moved, 1) << "n = " << n << ", visit " << m;
+    }
+    EXPECT_EQ(visits[1], (std::array<int, 3>{0, 1, 0}));                  // y first: the smallest step
+    EXPECT_EQ(visits[std::size_t(n)], (std::array<int, 3>{1, n - 1, 0})); // then x, back along y
+  }
 }
 
 TEST(FeaturePlacement, NoFlowAnywhere)

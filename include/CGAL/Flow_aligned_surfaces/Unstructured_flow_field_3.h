@@ -57,7 +57,10 @@ namespace Flow_aligned_surfaces {
 /// the cells at the median of their bounding boxes' centres along the longest axis (by the
 /// constructor, with TBB on the threads of the caller's arena: the same tree).  The walk
 /// inverts the hint cell's map at `p` (Newton's method from the cell's parametric centre; a
-/// hexahedron's steps from the eight coefficients of its trilinear map as a polynomial);
+/// hexahedron's steps from the eight coefficients of its trilinear map as a polynomial; one
+/// step where the map is affine: a tetrahedron, and a hexahedron whose bilinear and trilinear
+/// coefficients are at rounding level, a parallelepiped, as most cells of a block-structured
+/// mesh are);
 /// if `p` is outside, it crosses the face through which the parametric point leaves the
 /// reference cell the most into the cell sharing that face, and so on, for at most 8 cells.
 /// It gives up at the mesh boundary, on a cell whose inversion diverges, and when `p` is not
@@ -75,12 +78,14 @@ namespace Flow_aligned_surfaces {
 /// The face neighbours are not stored: the walk finds the cell beyond a face in the hierarchy
 /// (among the cells of the leaves whose box holds the face's centroid, nearest to the current
 /// cell's leaf first, the first that holds all the face's points) and remembers it in a
-/// per-thread cache of 1024 cells (direct-mapped by cell index, 53 KB per thread, each face's
-/// neighbour looked for on the first crossing).  The hint and the cache are `thread_local`,
-/// keyed by a number that identifies the field's shared storage (never reused within the
-/// process): `operator()` is `const` and safe to call from several threads at once (a TBB
-/// loop, for instance), a copy shares the cache key of its original, and a thread alternating
-/// between two fields starts both afresh at each switch.  Whatever the hint and the cache say
+/// per-thread cache of 1024 cells (direct-mapped by cell index, 53 KB, each face's neighbour
+/// looked for on the first crossing).  The hint and the cache are `thread_local`, keyed by a
+/// number that identifies the field's shared storage (never reused within the process), and a
+/// thread keeps them for the last 4 fields it queried (212 KB per thread): `operator()` is
+/// `const` and safe to call from several threads at once (a TBB loop, for instance), a copy
+/// shares the cache key of its original, and a thread alternating between the fields of two
+/// time steps (as `Unsteady_flow_field_3` does at a time between them) walks in each from its
+/// own hint; a fifth field takes over the oldest of the four.  Whatever the hint and the cache say
 /// is checked before it is used (the cell must contain `p`, a neighbour must hold the face's
 /// points), so a stale entry costs time, never a wrong answer.  Nor a different one: the
 /// answer at `p` does not depend on the queries before it.  Where several cells contain `p`
@@ -91,7 +96,7 @@ namespace Flow_aligned_surfaces {
 ///
 /// Memory: the arrays as given (points in the precision given, 32-bit indices), plus 4 bytes
 /// per cell for the cells' order in the leaves and 2 float boxes (48 bytes) per leaf, about 10
-/// bytes per cell in all; and per thread that queries the field, the 53 KB cache.  Copies share
+/// bytes per cell in all; and per thread that queries the field, its 53 KB cache.  Copies share
 /// the arrays and the hierarchy (through `std::shared_ptr`), so copying a field is cheap.  A
 /// query performs no allocation.
 ///

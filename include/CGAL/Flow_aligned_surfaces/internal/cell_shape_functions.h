@@ -308,6 +308,22 @@ public:
     }
   }
 
+  // Whether the map is affine (a parallelepiped) up to rounding: every bilinear and trilinear
+  // coefficient at most 1e-14 times the largest linear one.  One Newton step then solves it, as
+  // for a tetrahedron (its error, about that ratio times the squared parametric distance from
+  // the start, is at rounding level too).  Most cells of a block-structured mesh are boxes.
+  bool is_affine() const
+  {
+    double linear = 0., nonlinear = 0.;
+    for (int a = 0; a < 3; ++a) {
+      for (int k = 1; k < 4; ++k)
+        linear = (std::max)(linear, std::abs(m_c[k][a]));
+      for (int k = 4; k < 8; ++k)
+        nonlinear = (std::max)(nonlinear, std::abs(m_c[k][a]));
+    }
+    return nonlinear <= 1e-14 * linear;
+  }
+
   // Newton's step d from xi toward x(xi) = p, as `newton_step()`.
   bool newton_step(const double* p, const double (&xi)[3], double (&d)[3]) const
   {
@@ -336,12 +352,14 @@ enum class Newton_outcome { CONVERGED, STOPPED, FAR_OUTSIDE };
 inline Newton_outcome newton_iterations(unsigned char type, const double (*X)[3], int n, const double* p,
                                         double (&xi)[3])
 {
-  // Linear cells converge in one step; the trilinear map in a few for reasonable cells.  The
-  // cap bounds the cost of points that are far outside a cell (in its bounding box only).
-  const int max_iterations = type == VTK_cell_type::TETRA ? 1 : 12;
+  // Affine maps (tetrahedra, parallelepipeds) are solved by one step; the trilinear map in a few
+  // for reasonable cells.  The cap bounds the cost of points that are far outside a cell (in
+  // its bounding box only).
   std::optional<Hexahedron_map> hexahedron;
   if (type == VTK_cell_type::HEXAHEDRON)
     hexahedron.emplace(X);
+  const bool affine = type == VTK_cell_type::TETRA || (hexahedron && hexahedron->is_affine());
+  const int max_iterations = affine ? 1 : 12;
   for (int it = 0; it < max_iterations; ++it) {
     double d[3];
     if (!(hexahedron ? hexahedron->newton_step(p, xi, d) : newton_step(type, X, n, p, xi, d)))
@@ -355,9 +373,8 @@ inline Newton_outcome newton_iterations(unsigned char type, const double (*X)[3]
       return Newton_outcome::STOPPED;
     // Newton's error after a step of size h is about C h^2 (C: the map's second derivatives
     // over its first, O(1) in parametric units for usable cells), so after a step below 1e-8
-    // xi is as accurate as rounding allows, without one more step to see it.  A
-    // tetrahedron's map is affine: one step solves it.
-    if (step < 1e-8 || type == VTK_cell_type::TETRA)
+    // xi is as accurate as rounding allows, without one more step to see it.
+    if (step < 1e-8 || affine)
       return Newton_outcome::CONVERGED;
     if (it >= 3) {
       // Far from the reference cell after a few steps: p is not in this cell.
