@@ -16,6 +16,11 @@ paraview_reference unsteady_field, read by ParaView's PVD reader.
 - Parametrize And Seed and Grow Boundary at a step's time give what they give on that step's
   own file read as a steady data set, and something else at the other end of the series.
 - A path surface of one time step is refused, saying why.
+- Through RedistributeDataSet and a Temporal Cache of every step (what the manual recommends for
+  a time series spread over the ranks), a path surface is the one without the cache, bit for bit,
+  its vertices on their path lines; a second Flow-Aligned Surface on the cache builds fewer
+  velocity fields than without it (it takes those of the cached pieces that the first still
+  holds), where each step comes from RedistributeDataSet anew.
 """
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
@@ -44,8 +49,8 @@ def axis_x(time):
     return 0.2 * time
 
 
-def follows_the_flow():
-    s = FlowAlignedSurface(Input=data)
+def follows_the_flow(flow=data):
+    s = FlowAlignedSurface(Input=flow)
     s.Velocity = ["POINTS", "velocity"]
     s.Center, s.Normal, s.Size, s.NumberOfFaces = PATCH[0:3], PATCH[3:6], PATCH[6], PATCH[7]
     s.Alignment = "Tangential (stream surface)"
@@ -152,10 +157,11 @@ path.TimeLineStep = 0.05
 out = t.fetch(path, 0.25)
 if out.GetNumberOfCells() != 0:
     raise AssertionError("a path surface at its start time has %d faces" % out.GetNumberOfCells())
-for view_time, duration in [(0.6, 0.35), (1.0, 0.75)]:
-    out = t.fetch(path, view_time)
+def expect_on_path_lines(out, view_time, duration, what):
+    """Every vertex of the path surface `out`, released at 0.25 and seen at `view_time`, is on the
+    path line of its seed point, and the oldest have travelled `duration`."""
     if out.GetNumberOfCells() == 0 or t.field_value(out, "start_time") != 0.25:
-        raise AssertionError("path surface at %g: %d faces" % (view_time, out.GetNumberOfCells()))
+        raise AssertionError("%s at %g: %d faces" % (what, view_time, out.GetNumberOfCells()))
     u, tau = out.GetPointData().GetArray("u"), out.GetPointData().GetArray("t")
     worst, longest = 0.0, 0.0
     for i in range(out.GetNumberOfPoints()):
@@ -163,8 +169,12 @@ for view_time, duration in [(0.6, 0.35), (1.0, 0.75)]:
         worst = max(worst, math.dist(out.GetPoint(i), exact))
         longest = max(longest, tau.GetValue(i))
     if not worst <= 1e-5 or abs(longest - duration) > 1e-9:
-        raise AssertionError("path surface at %g: a vertex %g off its path line, t up to %g" % (view_time, worst, longest))
-    print("path surface at %g: %d vertices on their path lines within %.2g" % (view_time, out.GetNumberOfPoints(), worst))
+        raise AssertionError("%s at %g: a vertex %g off its path line, t up to %g" % (what, view_time, worst, longest))
+    print("%s at %g: %d vertices on their path lines within %.2g" % (what, view_time, out.GetNumberOfPoints(), worst))
+
+
+for view_time, duration in [(0.6, 0.35), (1.0, 0.75)]:
+    expect_on_path_lines(t.fetch(path, view_time), view_time, duration, "path surface")
 
 # 6. Flow Texture on the path surface at t = 1: with Path Surface on it follows the path lines
 # (the flow at start_time + t of each point), so that its mask (the angle between the flow it
@@ -257,3 +267,44 @@ with t.Messages() as messages:
     single.UpdatePipeline()
 t.expect_message(messages, ["Surface Type is Path Surface, but the Input has no time steps"],
                  "a path surface of one time step")
+
+
+# 9. The manual's pipeline for a time series over MPI ("Distributed Data (MPI)"):
+# RedistributeDataSet (the pieces become unstructured grids, new ones at every step asked for)
+# followed by a Temporal Cache of every step.
+spread = RedistributeDataSet(Input=data)
+cached = TemporalCache(Input=spread, CacheSize=len(times))
+
+
+def path_surface_of(flow):
+    p = StreamSurfaceFromCurve(Input=flow, Seeds=line)
+    p.Velocity = ["POINTS", "velocity"]
+    p.SurfaceType = "Path Surface"
+    p.StartTime = 0.25
+    p.TimeLineStep = 0.05
+    return p
+
+
+on_spread = t.fetch(path_surface_of(spread), 1.0)
+first_on_cache = path_surface_of(cached)
+on_cache = t.fetch(first_on_cache, 1.0)
+if on_cache.GetNumberOfCells() == 0 or points_of(on_cache) != points_of(on_spread):
+    raise AssertionError("the path surface through the Temporal Cache (%d faces) is not the one without it" %
+                         on_cache.GetNumberOfCells())
+expect_on_path_lines(on_cache, 1.0, 0.75, "path surface through RedistributeDataSet and the cache")
+
+
+def fields_built_by_a_second_follower(flow):
+    """The velocity fields a Flow-Aligned Surface following `flow` to t = 1 builds while another
+    one that did the same is still there."""
+    first = follows_the_flow(flow)
+    t.fetch(first, 1.0)
+    return t.field_value(t.fetch(follows_the_flow(flow), 1.0), "number_of_velocity_fields_built")
+
+
+built_on_spread, built_on_cache = fields_built_by_a_second_follower(spread), fields_built_by_a_second_follower(cached)
+print("a second Flow-Aligned Surface built %g velocity fields without the cache, %g with it" % (
+    built_on_spread, built_on_cache))
+if not built_on_cache < built_on_spread:
+    raise AssertionError("on the Temporal Cache a second Flow-Aligned Surface built %g fields, without it %g" %
+                         (built_on_cache, built_on_spread))
