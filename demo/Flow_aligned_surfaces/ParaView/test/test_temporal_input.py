@@ -149,11 +149,16 @@ def path_line_point(seed, t0, tau):
     return (A * math.cos(s) + B * math.sin(s) + 0.2 * s, A * math.sin(s) - B * math.cos(s) - 0.2, seed[2] + 0.3 * tau)
 
 
-path = StreamSurfaceFromCurve(Input=data, Seeds=line)
-path.Velocity = ["POINTS", "velocity"]
-path.SurfaceType = "Path Surface"
-path.StartTime = 0.25
-path.TimeLineStep = 0.05
+def path_surface_of(flow):
+    p = StreamSurfaceFromCurve(Input=flow, Seeds=line)
+    p.Velocity = ["POINTS", "velocity"]
+    p.SurfaceType = "Path Surface"
+    p.StartTime = 0.25
+    p.TimeLineStep = 0.05
+    return p
+
+
+path = path_surface_of(data)
 out = t.fetch(path, 0.25)
 if out.GetNumberOfCells() != 0:
     raise AssertionError("a path surface at its start time has %d faces" % out.GetNumberOfCells())
@@ -274,15 +279,6 @@ t.expect_message(messages, ["Surface Type is Path Surface, but the Input has no 
 # followed by a Temporal Cache of every step.
 spread = RedistributeDataSet(Input=data)
 cached = TemporalCache(Input=spread, CacheSize=len(times))
-
-
-def path_surface_of(flow):
-    p = StreamSurfaceFromCurve(Input=flow, Seeds=line)
-    p.Velocity = ["POINTS", "velocity"]
-    p.SurfaceType = "Path Surface"
-    p.StartTime = 0.25
-    p.TimeLineStep = 0.05
-    return p
 
 
 on_spread = t.fetch(path_surface_of(spread), 1.0)
