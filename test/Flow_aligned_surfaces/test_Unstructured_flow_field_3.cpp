@@ -3,8 +3,9 @@
 //
 // Unstructured_flow_field_3: linear fields reproduced on tetrahedra, wedges and pyramids,
 // trilinear(-in-parameter) fields on distorted hexahedra, agreement with
-// Regular_grid_flow_field_3 on the same grid, holes and the outside, shared faces, threads,
-// shared storage and the messages for bad input.
+// Regular_grid_flow_field_3 on the same grid, holes and the outside, shared faces, cell
+// interiors that no other piece of the mesh reaches, threads, shared storage and the messages
+// for bad input.
 
 #include <CGAL/Flow_aligned_surfaces/Unstructured_flow_field_3.h>
 #include <CGAL/Flow_aligned_surfaces/Regular_grid_flow_field_3.h>
@@ -549,6 +550,64 @@ TEST(UnstructuredFlowField3, SharedFacesGiveTheSameValueFromEitherCell)
       EXPECT_TRUE(left && right) << "the face point " << p << " is not in a cell on each side";
     }
   }
+}
+
+TEST(UnstructuredFlowField3, APointInACellsInteriorIsInNoOtherPiece)
+{
+  // The two columns of a distorted 2 x 1 x 1 block as two pieces, each a field of its own (the
+  // pieces of a mesh on two processes), for each conforming pair of cell kinds.  Where a piece
+  // says a point is in a cell's interior, the other piece does not contain it; points on the
+  // shared face are in neither interior; and nearly every point of a cell is in one.
+  const int pairs[7][2] = {{12, 12}, {12, 14}, {14, 12}, {12, 13}, {13, 13}, {10, 10}, {14, 14}};
+  for (const auto& pair : pairs) {
+    SCOPED_TRACE(std::to_string(pair[0]) + " | " + std::to_string(pair[1]));
+    std::mt19937 rng(unsigned(31 + pair[0] * 100 + pair[1]));
+    const auto position = distorted_grid(37, 1);
+    Block left_cells({2, 1, 1}, position), right_cells({2, 1, 1}, position);
+    left_cells.fill(pair[0], [](int i, int, int) { return i != 0; });
+    right_cells.fill(pair[1], [](int i, int, int) { return i != 1; });
+    const Trilinear_field f(rng);
+    const Field left = left_cells.field(left_cells.values(f)),
+                right = right_cells.field(right_cells.values(f));
+    std::uniform_real_distribution<double> u(0., 1.);
+    int inside = 0, in_an_interior = 0;
+    for (int q = 0; q < 2000; ++q) {
+      // Half of the points on the shared face (r = 1 in the left cell), half anywhere in the cells.
+      const bool on_face = q % 2 == 0;
+      const double r = on_face ? 1. : 2. * u(rng);
+      const bool left_cell = r <= 1.;
+      const double rst[3] = {left_cell ? r : r - 1., u(rng), u(rng)};
+      const Point_3 p = to_point(left_cell ? hex_map(left_cells, left_cells.hex(0, 0, 0), rst)
+                                           : hex_map(right_cells, right_cells.hex(1, 0, 0), rst));
+      const bool in_left = left.is_in_cell_interior(p), in_right = right.is_in_cell_interior(p);
+      if (on_face) {
+        EXPECT_FALSE(in_left || in_right) << "the shared face's point " << p << " is in a cell's interior";
+        continue;
+      }
+      // (The split cells' flat faces leave out some points of the hexahedra's curved ones.)
+      if (!left(p) && !right(p))
+        continue;
+      ++inside;
+      in_an_interior += in_left || in_right ? 1 : 0;
+      if (in_left) {
+        EXPECT_TRUE(left(p)) << p;
+        EXPECT_FALSE(right(p)) << "the right piece contains " << p << ", in the interior of a left cell";
+      }
+      if (in_right) {
+        EXPECT_TRUE(right(p)) << p;
+        EXPECT_FALSE(left(p)) << "the left piece contains " << p << ", in the interior of a right cell";
+      }
+    }
+    EXPECT_GT(inside, 900);
+    EXPECT_GT(in_an_interior, inside * 99 / 100);
+  }
+  // Outside the mesh, nothing is in a cell's interior.
+  Block b({2, 1, 1}, distorted_grid(37, 1));
+  b.fill(12);
+  std::mt19937 rng(41);
+  const Field field = b.field(b.values(Trilinear_field(rng)));
+  for (const Point_3& p : {Point_3(0., -1.75, 0.25), Point_3(3., -1.75, 0.25), Point_3(1.5, -1.75, -1.)})
+    EXPECT_FALSE(field.is_in_cell_interior(p)) << p;
 }
 
 TEST(UnstructuredFlowField3, BadInputThrowsWithTheArgumentsName)

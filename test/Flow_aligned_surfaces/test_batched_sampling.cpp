@@ -469,6 +469,22 @@ TEST(BatchedSampling, IntegratingAheadInTwoPiecesIsTheSameBitForBitInFewerBatche
             << " time lines\n";
 }
 
+TEST(BatchedSampling, ASurfaceInTheOtherPieceTakesNoBatchAfterItsFirstRounds)
+{
+  // The saddle's surface from a seed beyond the cut, moving away from it: the other piece takes
+  // every particle to each time line while the first round runs, and the tasks then go on from
+  // there without asking for the points that round asked for.
+  const FAS::Linear_flow<K> linear;
+  const Two_pieces<FAS::Linear_flow<K>, false> pieces{linear, 0.3};
+  const Polyline seed = {Point_3(0.4, 0.1, 1.0), Point_3(0.5, 0.5, 0.8)};
+  const auto np = FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(linear_time));
+  const Surface ahead(pieces, seed, np);
+  expect_same_surface(Surface(linear, seed, np), ahead);
+  EXPECT_GE(ahead.report.number_of_inserted_particles, 1u);
+  EXPECT_GE(*pieces.meanwhile, ahead.report.number_of_time_lines);
+  EXPECT_EQ(ahead.report.number_of_sample_batches, 0u);
+}
+
 TEST(BatchedSampling, AFieldThatTellsWhereItDecidesHearsOfTheOtherParticlesOnly)
 {
   const FAS::Cylinder_potential_flow<K> cylinder(1.0, 1.0);

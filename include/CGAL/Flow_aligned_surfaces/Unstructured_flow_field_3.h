@@ -250,6 +250,19 @@ public:
     return hit.cell;
   }
 
+  /// returns whether `p` lies in the interior of a cell, farther than `1e-9` inside its
+  /// reference cell (ten times the inside test's tolerance): then no other cell of a conforming
+  /// mesh contains `p`, nor does a cell of another piece of a conforming partition of the mesh
+  /// (the pieces of a mesh distributed over processes), so that the value at `p` is this cell's.
+  /// False on and near the cells' faces and outside the mesh.
+  bool is_in_cell_interior(const Point_3& p) const
+  {
+    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    Hit hit;
+    return m_storage->cells.find(x, hit) &&
+           internal::in_reference_cell(cell_types()[hit.cell], hit.xi, -internal::cell_interior_margin);
+  }
+
   /// returns the velocity at `p` interpolated in cell `cell`, or `std::nullopt` if that cell
   /// does not contain `p`.  On a face shared by two cells, both give the same value up to
   /// rounding (for conforming faces).

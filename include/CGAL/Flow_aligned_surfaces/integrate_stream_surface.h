@@ -245,14 +245,15 @@ struct Front_field {
   }
 
   /// Has the field integrate the particles `ahead` while `work()` runs, then calls `go_on` and
-  /// `add` as the batch operation above does.
+  /// `add` as the batch operation above does.  Returns whether it took a particle on.
   template <class Work, class Add, class Go_on>
-  void integrate_ahead_meanwhile(const Integration_ahead& ahead, const Work& work, const Add& add,
+  bool integrate_ahead_meanwhile(const Integration_ahead& ahead, const Work& work, const Add& add,
                                  const Go_on& go_on) const
   {
     Integrated_ahead<Answer> along;
     field->integrate_ahead_meanwhile(ahead, along, work);
     take_up(ahead, along, add, go_on);
+    return !along.states.empty() || !along.samples.empty();
   }
 
 private:
@@ -731,7 +732,7 @@ private:
           std::vector<std::size_t> all(n);
           for (std::size_t i = 0; i < n; ++i)
             all[i] = i;
-          m_field.integrate_ahead_meanwhile(
+          return m_field.integrate_ahead_meanwhile(
               particles_of(all, true),
               [&] {
                 round();
@@ -739,8 +740,10 @@ private:
               },
               add, go_on_task);
         }
-        else
+        else {
           round();
+          return false;
+        }
       };
       m_report.number_of_sample_batches += run_in_rounds(n, m_replay, task, answer, first);
       m_replay.clear();

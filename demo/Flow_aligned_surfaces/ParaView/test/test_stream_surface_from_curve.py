@@ -1,7 +1,9 @@
 """Stream Surface from Curve in pvbatch: the same surfaces as the library called directly
 (paraview_reference stream) with default and given parameters, forward, backward and both; every
 vertex on the stream surface psi = const of its seed point (the cylinder's potential flow); seeds
-from ParaView's own Line source; bad seeds reported with the previous output kept."""
+from ParaView's own Line source; on 2 ranks, the flow as hexahedra cut between the ranks on a
+slant (the surface of the same cells on rank 0 alone, in a few exchanges per time line); bad seeds
+reported with the previous output kept."""
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
 import math
@@ -198,7 +200,74 @@ t_values = point_array(out, "t")
 if not (min(t_values) < 0 < max(t_values)):
     raise AssertionError("both directions: t should take both signs")
 
-# 4. Bad seeds: no line (a sphere's triangles), then a line outside the data.  The error names
+# 4. On several ranks, the flow as hexahedra (an unstructured mesh, sampled through the package's
+#    Unstructured_flow_field_3) cut between the ranks along a slanted plane: each rank holds the
+#    cells whose centre lies on its side, so that the pieces' bounds overlap over a wide band, as
+#    RedistributeDataSet's pieces of a curvilinear mesh do.  The surface is the one of the same
+#    cells all on rank 0, and a rank decides the samples in the interior of its own cells in that
+#    band without an exchange.
+HEXAHEDRA = """
+import numpy as np
+from vtkmodules.util import numpy_support as ns
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkUnstructuredGrid
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+controller = vtkMultiProcessController.GetGlobalController()
+rank, ranks = controller.GetLocalProcessId(), controller.GetNumberOfProcesses()
+reader = vtkXMLImageDataReader()
+reader.SetFileName(%(file)r)
+reader.Update()
+image = reader.GetOutput()
+n = image.GetDimensions()
+axes = [image.GetOrigin()[d] + image.GetSpacing()[d] * np.arange(n[d]) for d in range(3)]
+z, y, x = np.meshgrid(axes[2], axes[1], axes[0], indexing="ij")
+points = np.column_stack([x.ravel(), y.ravel(), z.ravel()])
+k, j, i = np.meshgrid(np.arange(n[2] - 1), np.arange(n[1] - 1), np.arange(n[0] - 1), indexing="ij")
+first = (i + n[0] * (j + n[1] * k)).ravel()
+step = [0, 1, 1 + n[0], n[0]]
+corners = [first + s for s in step] + [first + n[0] * n[1] + s for s in step]
+hexahedra = np.column_stack(corners)
+centre = points[hexahedra].mean(axis=1)
+side = centre[:, 0] + 0.5 * centre[:, 1] >= 0
+mine = (side == (rank == 1)) if %(mode)r == "split" and ranks == 2 else np.full(len(side), rank == 0)
+used, connectivity = np.unique(hexahedra[mine].ravel(), return_inverse=True)
+cells = vtkCellArray()
+cells.SetData(ns.numpy_to_vtkIdTypeArray(np.arange(0, connectivity.size + 1, 8, dtype=np.int64), deep=True),
+              ns.numpy_to_vtkIdTypeArray(connectivity.astype(np.int64), deep=True))
+grid = vtkUnstructuredGrid()
+grid_points = vtkPoints()
+grid_points.SetData(ns.numpy_to_vtk(points[used], deep=True))
+grid.SetPoints(grid_points)
+grid.SetCells(12, cells)
+velocity = ns.vtk_to_numpy(image.GetPointData().GetArray("velocity"))[used]
+array = ns.numpy_to_vtk(np.ascontiguousarray(velocity), deep=True)
+array.SetName("velocity")
+grid.GetPointData().AddArray(array)
+self.GetOutput().ShallowCopy(grid)
+"""
+if t.number_of_ranks() == 2:
+    # The flow is planar (w = 0): a particle released on a plane of the cells' faces (z a multiple
+    # of 0.1) would stay on those faces, in no cell's interior; these seeds' z are not.
+    upstream = Line(Point1=[-2.5, 0.3, -0.47], Point2=[-2.5, 1.5, 0.53], Resolution=20)
+    surfaces = {}
+    for mode in ["rank 0", "split"]:
+        cells = ProgrammableSource(OutputDataSetType="vtkUnstructuredGrid")
+        cells.Script = HEXAHEDRA % {"file": setup.field(), "mode": mode}
+        of_cells = StreamSurfaceFromCurve(Input=cells, Seeds=upstream)
+        of_cells.Velocity = ["POINTS", "velocity"]
+        surfaces[mode] = t.fetch(of_cells)
+    split = surfaces["split"]
+    t.expect_spread_over_ranks(split, "hexahedra split on a slant")
+    t.expect_same_surface(split, surfaces["rank 0"], "hexahedra split on a slant")
+    exchanges, lines = t.field_value(split, "number_of_exchanges"), t.field_value(split, "number_of_time_lines")
+    # A few per time line, where particles cross between the pieces; deciding by the pieces'
+    # bounds alone took 6517, one per Runge-Kutta stage in the band.
+    if not exchanges <= 4 * lines:
+        raise AssertionError("hexahedra split on a slant: %d exchanges over %d time lines" % (exchanges, lines))
+    print("hexahedra split on a slant: %d exchanges over %d time lines" % (exchanges, lines))
+
+# 5. Bad seeds: no line (a sphere's triangles), then a line outside the data.  The error names
 # the fault, and the previous output is kept.
 good = t.fetch(surface)
 surface.Seeds = Sphere()

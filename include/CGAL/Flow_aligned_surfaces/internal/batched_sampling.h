@@ -193,7 +193,9 @@ private:
 /// asked for, in one batch, and they are added to `samples`; `waiting` are the tasks that wait
 /// (an answer may add more samples along their way: integration_ahead.h).  The first round runs
 /// within `first(round)`, which calls `round()` once and may have other processes work for the
-/// tasks meanwhile.  Returns the number of batches.
+/// tasks meanwhile; when it returns true, they took tasks on while the round ran, so the points
+/// that round asked for may be behind them: the waiting tasks run a round again, from where the
+/// others took them, before anything is asked.  Returns the number of batches.
 template <class Value, class Resume, class Answer, class First>
 std::size_t run_in_rounds(std::size_t n, Replay_samples<Value>& samples, const Resume& resume,
                           const Answer& answer, const First& first)
@@ -211,8 +213,13 @@ std::size_t run_in_rounds(std::size_t n, Replay_samples<Value>& samples, const R
         still.push_back(i);
     }
   };
+  if (first(round) && !still.empty()) {
+    samples.take_missing();
+    waiting.swap(still);
+    round();
+  }
   std::size_t batches = 0;
-  for (first(round); !still.empty(); round()) {
+  for (; !still.empty(); round()) {
     const std::vector<std::pair<Eigen::Vector3d, double>> missing = samples.take_missing();
     if (missing.empty())
       throw std::logic_error("run_in_rounds: a task waits for a sample it did not ask for");
@@ -231,7 +238,10 @@ template <class Value, class Resume, class Answer>
 std::size_t run_in_rounds(std::size_t n, Replay_samples<Value>& samples, const Resume& resume,
                           const Answer& answer)
 {
-  return run_in_rounds(n, samples, resume, answer, [](const auto& round) { round(); });
+  return run_in_rounds(n, samples, resume, answer, [](const auto& round) {
+    round();
+    return false;
+  });
 }
 
 } // namespace internal

@@ -69,6 +69,15 @@ public:
     return std::visit([&p](const auto& f) { return f(p); }, m_field);
   }
 
+  /// Whether `p` is in the interior of one of the cells of an unstructured mesh
+  /// (`Unstructured_flow_field_3::is_in_cell_interior()`): no other piece of the mesh holds it.
+  /// False for the other fields.
+  bool is_in_cell_interior(const Point& p) const
+  {
+    const auto* cells = std::get_if<FAS::Unstructured_flow_field_3<Kernel>>(&m_field);
+    return cells != nullptr && cells->is_in_cell_interior(p);
+  }
+
 private:
   std::variant<FAS::Regular_grid_flow_field_3<Kernel>, FAS::Unstructured_flow_field_3<Kernel>,
                FAS::VTK_flow_field_3<Kernel>>

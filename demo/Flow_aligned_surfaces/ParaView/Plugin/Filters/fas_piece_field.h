@@ -153,13 +153,13 @@ public:
   }
 
   /// Whether this piece alone decides an exchange's sample at `x`: no other rank's piece with
-  /// cells has bounds (widened beyond the locators' tolerances) that hold it.
+  /// cells has bounds (widened beyond the locators' tolerances) that hold it, or, where the
+  /// pieces' bounds overlap (the cells along a cut between pieces of an unstructured mesh), it
+  /// lies in the interior of one of this piece's cells at every step, where no other piece's
+  /// cells reach.
   bool decides(const Eigen::Vector3d& x) const
   {
-    for (const std::array<double, 6>& b : m_other_pieces)
-      if (x[0] >= b[0] && x[0] <= b[1] && x[1] >= b[2] && x[1] <= b[3] && x[2] >= b[4] && x[2] <= b[5])
-        return false;
-    return true;
+    return !in_other_bounds(x) || in_own_cells_interior(x);
   }
 
   /// This rank's reply to the points (x, y, z, t), in `reply`: per point (vx, vy, vz, 1) where the
@@ -220,6 +220,25 @@ public:
   }
 
 private:
+  bool in_other_bounds(const Eigen::Vector3d& x) const
+  {
+    for (const std::array<double, 6>& b : m_other_pieces)
+      if (x[0] >= b[0] && x[0] <= b[1] && x[1] >= b[2] && x[1] <= b[3] && x[2] >= b[4] && x[2] <= b[5])
+        return true;
+    return false;
+  }
+
+  bool in_own_cells_interior(const Eigen::Vector3d& x) const
+  {
+    if (!m_error.empty() || m_sampled.empty())
+      return false;
+    const Point p(x[0], x[1], x[2]);
+    for (const Sampled_step& step : m_sampled)
+      if (!step.field || !step.field->is_in_cell_interior(p))
+        return false;
+    return true;
+  }
+
   // A step of this rank's piece and its field, with what it was built from.
   struct Sampled_step {
     vtkSmartPointer<vtkDataObject> data;
