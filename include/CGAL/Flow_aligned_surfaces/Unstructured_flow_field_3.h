@@ -232,9 +232,8 @@ public:
   /// returns the interpolated velocity at `p`, or `std::nullopt` if no cell contains `p`.
   std::optional<Vector_3> operator()(const Point_3& p) const
   {
-    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     Hit hit;
-    if (!m_storage->cells.find(x, hit))
+    if (!find(p, hit))
       return std::nullopt;
     return interpolate(hit);
   }
@@ -243,9 +242,8 @@ public:
   /// several cells contain `p` (on shared faces), the one of smallest index.
   std::optional<std::size_t> locate(const Point_3& p) const
   {
-    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     Hit hit;
-    if (!m_storage->cells.find(x, hit))
+    if (!find(p, hit))
       return std::nullopt;
     return hit.cell;
   }
@@ -257,9 +255,8 @@ public:
   /// False on and near the cells' faces and outside the mesh.
   bool is_in_cell_interior(const Point_3& p) const
   {
-    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     Hit hit;
-    return m_storage->cells.find(x, hit) &&
+    return find(p, hit) &&
            internal::in_reference_cell(cell_types()[hit.cell], hit.xi, -internal::cell_interior_margin);
   }
 
@@ -270,9 +267,8 @@ public:
   std::optional<Vector_3> evaluate_in_cell(std::size_t cell, const Point_3& p) const
   {
     CGAL_precondition(cell < number_of_cells());
-    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     Hit hit;
-    if (!internal::Cell_point_location::try_cell(m_storage->cells, cell, x, hit))
+    if (!internal::Cell_point_location::try_cell(m_storage->cells, cell, coordinates(p).data(), hit))
       return std::nullopt;
     return interpolate(hit);
   }
@@ -320,6 +316,14 @@ public:
 
 private:
   typedef internal::Cell_point_location::Hit Hit;
+
+  static std::array<double, 3> coordinates(const Point_3& p)
+  {
+    return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  }
+
+  // Whether a cell contains p, with the hit (Cell_point_location::find()).
+  bool find(const Point_3& p, Hit& hit) const { return m_storage->cells.find(coordinates(p).data(), hit); }
 
   // The mesh and its point location, and the velocities at the points.
   struct Storage {
