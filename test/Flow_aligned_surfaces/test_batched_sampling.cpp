@@ -28,6 +28,7 @@
 #include <type_traits>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 // This file's tests and helpers in a namespace of their own (unity batches).
@@ -110,6 +111,11 @@ struct Two_pieces {
   std::shared_ptr<std::size_t> last_samples = std::make_shared<std::size_t>(0); // particles past the line
   std::shared_ptr<std::size_t> told = std::make_shared<std::size_t>(0);         // particles of first rounds
   std::shared_ptr<std::size_t> told_here = std::make_shared<std::size_t>(0);    // of those, in this piece
+  // Samples answered at once on another thread while the other piece integrated (the work of a
+  // first round: the backward half of a BOTH surface, integrated in turns with the forward one).
+  std::shared_ptr<std::size_t> here_meanwhile_elsewhere = std::make_shared<std::size_t>(0);
+  std::shared_ptr<std::optional<std::thread::id>> meanwhile_on = std::make_shared<std::optional<std::thread::id>>();
+  std::shared_ptr<std::size_t> rounds_with_work_elsewhere = std::make_shared<std::size_t>(0); // of the first rounds
 
   using Answer = std::optional<Vector_3>;
   Answer at(const Point_3& p, double t) const
@@ -142,6 +148,8 @@ struct Two_pieces {
     if (!decides(-1, Eigen::Vector3d(p.x(), p.y(), p.z())))
       return std::nullopt;
     ++*here;
+    if (*meanwhile_on && **meanwhile_on != std::this_thread::get_id())
+      ++*here_meanwhile_elsewhere;
     return at(p, t);
   }
   template <bool u = unsteady, std::enable_if_t<!u, int> = 0>
@@ -183,7 +191,11 @@ struct Two_pieces {
     for (std::size_t i = 0; i < ahead.size(); ++i)
       *told_here += decides(-1, ahead.position(i)) ? 1 : 0;
     integrate_ahead(ahead, along);
+    *meanwhile_on = std::this_thread::get_id();
+    const std::size_t elsewhere_before = *here_meanwhile_elsewhere;
     work();
+    meanwhile_on->reset();
+    *rounds_with_work_elsewhere += *here_meanwhile_elsewhere > elsewhere_before ? 1 : 0;
   }
   // The other piece integrates the particles `ahead` on, through the numbers it would receive.
   void integrate_ahead(const FAS::internal::Integration_ahead& ahead,
@@ -210,6 +222,23 @@ struct Two_pieces_telling : Two_pieces<Field, unsteady> {
   {
     return this->decides(-1, Eigen::Vector3d(p.x(), p.y(), p.z()));
   }
+};
+
+// `Two_pieces` that tells, while the first round's work runs, that the other piece still
+// integrates for the first `busy` times it is asked in each round.
+template <class Field>
+struct Two_pieces_busy : Two_pieces<Field, false> {
+  int busy = 3;
+  std::shared_ptr<int> asked = std::make_shared<int>(0);
+  template <class Work>
+  void integrate_ahead_meanwhile(const FAS::internal::Integration_ahead& ahead,
+                                 FAS::internal::Integrated_ahead<typename Two_pieces<Field, false>::Answer>& along,
+                                 const Work& work) const
+  {
+    *asked = 0;
+    Two_pieces<Field, false>::integrate_ahead_meanwhile(ahead, along, work);
+  }
+  bool others_still_integrating() const { return ++*asked <= busy; }
 };
 
 struct Surface {
@@ -526,6 +555,146 @@ TEST(BatchedSampling, IntegratingAheadBothWaysAndOnAPathSurfaceIsTheSameBitForBi
   expect_batched(*unsteady_pieces.counts, path_ahead);
   EXPECT_GT(*unsteady_pieces.along_paths, 0u);
   EXPECT_GT(*unsteady_pieces.here, 0u);
+}
+
+// The cylinder's surface in both directions, its flow cut behind the seed: the backward half
+// stays in the algorithm's piece, the forward half crosses into the other.
+struct Cylinder_both_ways {
+  FAS::Cylinder_potential_flow<K> cylinder{1.0, 1.0};
+  Two_pieces<FAS::Cylinder_potential_flow<K>, false> pieces{cylinder, -2.5};
+  Polyline seed = cylinder_seed();
+  template <class NP>
+  auto parameters(const NP& np) const
+  {
+    return FAS::parameters::integration_direction(
+        FAS::Integration_direction::BOTH,
+        FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(cylinder_time / 2, np)));
+  }
+  auto parameters() const { return parameters(FAS::parameters::max_number_of_time_lines(std::size_t(1000))); }
+};
+
+void expect_same_backward_half(const FAS::Stream_surface_report& a, const FAS::Stream_surface_report& b)
+{
+  ASSERT_TRUE(a.backward && b.backward);
+  EXPECT_EQ(a.backward->number_of_time_lines, b.backward->number_of_time_lines);
+  EXPECT_EQ(a.backward->final_parameter, b.backward->final_parameter);
+  EXPECT_EQ(a.backward->termination, b.backward->termination);
+  EXPECT_EQ(a.backward->message, b.backward->message);
+  EXPECT_EQ(a.number_of_vertices, b.number_of_vertices);
+  EXPECT_EQ(a.number_of_faces, b.number_of_faces);
+  EXPECT_EQ(a.stopped, b.stopped);
+  EXPECT_EQ(a.message, b.message);
+}
+
+TEST(BatchedSampling, TheBackwardHalfInTurnsWithTheForwardOneGivesTheSameSurfaceBitForBit)
+{
+  // With a field whose other piece integrates while the algorithm's works, the backward half
+  // runs while the other piece integrates the forward half's particles.
+  const Cylinder_both_ways c;
+  const Surface one_by_one(c.cylinder, c.seed, c.parameters()), in_turns(c.pieces, c.seed, c.parameters());
+  expect_same_surface(one_by_one, in_turns);
+  expect_same_backward_half(one_by_one.report, in_turns.report);
+  EXPECT_GT(one_by_one.report.backward->number_of_time_lines, 2u);
+  EXPECT_GT(*c.pieces.here_meanwhile_elsewhere, 0u);
+  EXPECT_GT(*c.pieces.states, 0u);
+}
+
+TEST(BatchedSampling, TheBackwardHalfTakesTimeLinesAsLongAsTheOtherPieceIntegrates)
+{
+  // One turn (a time line, or fewer samples) per first round of the forward half where the field
+  // does not tell how long the other piece integrates; three where it says the other piece still
+  // does.
+  const Cylinder_both_ways c;
+  const Two_pieces_busy<FAS::Cylinder_potential_flow<K>> busy{{c.cylinder, -2.5}};
+  const Surface one_by_one(c.cylinder, c.seed, c.parameters()), in_turns(c.pieces, c.seed, c.parameters());
+  const Surface while_busy(busy, c.seed, c.parameters());
+  expect_same_surface(one_by_one, while_busy);
+  expect_same_backward_half(one_by_one.report, while_busy.report);
+  const std::size_t lines = one_by_one.report.backward->number_of_time_lines;
+  const std::size_t one_turn = *c.pieces.rounds_with_work_elsewhere, three = *busy.rounds_with_work_elsewhere;
+  EXPECT_GE(one_turn, lines - 1);
+  ASSERT_GT(three, 0u);
+  EXPECT_NEAR(double(one_turn) / double(three), 3.0, 0.3);
+}
+
+TEST(BatchedSampling, AStopInTheBackwardHalfInTurnsLeavesOutTheForwardHalf)
+{
+  const Cylinder_both_ways c;
+  auto stop_at_third = [] {
+    return std::function<bool(double)>([calls = std::make_shared<int>(0)](double) { return ++*calls < 3; });
+  };
+  const auto np = c.parameters(CGAL::parameters::callback(stop_at_third()));
+  const auto np_in_turns = c.parameters(CGAL::parameters::callback(stop_at_third()));
+  const Surface one_by_one(c.cylinder, c.seed, np), in_turns(c.pieces, c.seed, np_in_turns);
+  expect_same_surface(one_by_one, in_turns);
+  expect_same_backward_half(one_by_one.report, in_turns.report);
+  EXPECT_TRUE(in_turns.report.stopped);
+  EXPECT_EQ(in_turns.report.backward->number_of_time_lines, 3u);
+  EXPECT_EQ(in_turns.report.termination, FAS::Stream_surface_termination::STOPPED);
+}
+
+TEST(BatchedSampling, AForwardHalfInTurnsThatMayPassItsVertexLimitIsIntegratedAgain)
+{
+  // The limit falls on the forward half's first time line: left out while the backward half's
+  // vertices were not known, it is found passed once they are (the backward half takes a time
+  // line per first round of the forward half), and the forward half is integrated again.
+  const Cylinder_both_ways c;
+  const auto backward = FAS::parameters::integration_direction(
+      FAS::Integration_direction::BACKWARD,
+      FAS::parameters::front_spacing(0.05, FAS::parameters::max_time(cylinder_time / 2)));
+  const std::size_t limit = Surface(c.cylinder, c.seed, backward).report.number_of_vertices + 10;
+  const auto np = c.parameters(FAS::parameters::max_number_of_vertices(limit));
+  const Surface one_by_one(c.cylinder, c.seed, np), in_turns(c.pieces, c.seed, np);
+  expect_same_surface(one_by_one, in_turns);
+  expect_same_backward_half(one_by_one.report, in_turns.report);
+  EXPECT_EQ(in_turns.report.termination, FAS::Stream_surface_termination::MAX_NUMBER_OF_VERTICES);
+  EXPECT_NE(in_turns.report.backward->termination, FAS::Stream_surface_termination::MAX_NUMBER_OF_VERTICES);
+  EXPECT_GE(in_turns.report.number_of_time_lines, 1u);
+}
+
+// The cylinder's flow in two pieces, failing behind the seed.
+struct Failing_behind : Two_pieces<FAS::Cylinder_potential_flow<K>, false> {
+  std::optional<Answer> sample_here(const Point_3& p) const
+  {
+    if (p.x() < -3.3)
+      throw std::runtime_error("no flow behind the seed");
+    return Two_pieces::sample_here(p);
+  }
+};
+
+TEST(BatchedSampling, AFailureOfTheBackwardHalfInTurnsReachesTheCaller)
+{
+  const Cylinder_both_ways c;
+  const Failing_behind failing{{c.cylinder, -2.5}};
+  try {
+    Surface(failing, c.seed, c.parameters());
+    FAIL() << "no exception";
+  }
+  catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "no flow behind the seed");
+  }
+}
+
+TEST(BatchedSampling, AStopInTheForwardHalfInTurnsKeepsTheWholeBackwardHalf)
+{
+  // The callback hears of the forward half once the backward half has ended: here in the first
+  // rounds of the forward half, as the other piece says it still integrates for a long while.
+  const Cylinder_both_ways c;
+  Two_pieces_busy<FAS::Cylinder_potential_flow<K>> busy{{c.cylinder, -2.5}};
+  busy.busy = 100000;
+  const Surface whole(c.cylinder, c.seed, c.parameters());
+  const int backward_lines = int(whole.report.backward->number_of_time_lines);
+  auto calls = std::make_shared<int>(0);
+  const auto np = c.parameters(CGAL::parameters::callback(
+      std::function<bool(double)>([calls, backward_lines](double) { return ++*calls <= backward_lines; })));
+  const Surface in_turns(busy, c.seed, np);
+  EXPECT_TRUE(in_turns.report.stopped);
+  EXPECT_EQ(in_turns.report.termination, FAS::Stream_surface_termination::STOPPED);
+  EXPECT_EQ(in_turns.report.backward->termination, whole.report.backward->termination);
+  EXPECT_EQ(in_turns.report.backward->number_of_time_lines, whole.report.backward->number_of_time_lines);
+  EXPECT_GE(in_turns.report.number_of_time_lines, 1u);
+  EXPECT_LT(in_turns.report.number_of_time_lines, whole.report.number_of_time_lines);
+  EXPECT_EQ(*calls, backward_lines + 1);
 }
 
 // A swirl that answers `budget` more samples and then waits for the rest (a task in rounds).

@@ -20,6 +20,8 @@
 
 #include <CGAL/Flow_aligned_surfaces/integrate_streamline.h>
 #include <CGAL/Flow_aligned_surfaces/internal/Dormand_prince_integrator.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Field_in_turns.h>
+#include <CGAL/Flow_aligned_surfaces/internal/Taking_turns.h>
 #include <CGAL/Flow_aligned_surfaces/internal/batched_sampling.h>
 #include <CGAL/Flow_aligned_surfaces/internal/flow_sample.h>
 #include <CGAL/Flow_aligned_surfaces/internal/integration_ahead.h>
@@ -173,6 +175,8 @@ struct Front_field {
       integrates_ahead && Integrates_ahead_meanwhile<FlowField, Answer>::value;
   static constexpr bool tells_where_it_decides =
       integrates_ahead_meanwhile && Decides_here<FlowField, Point_3>::value;
+  static constexpr bool tells_while_others_integrate =
+      integrates_ahead_meanwhile && Tells_while_others_integrate<FlowField>::value;
 
   Value operator()(const Eigen::Vector3d& x, double t) const
   {
@@ -194,6 +198,16 @@ struct Front_field {
 
   /// Whether the running task waits for a sample asked for in this round.
   bool waiting() const { return replay != nullptr && replay->waiting(); }
+
+  /// While the other processes integrate ahead meanwhile: whether they still do (false when the
+  /// field does not tell).
+  bool others_still_integrating() const
+  {
+    if constexpr (tells_while_others_integrate)
+      return field->others_still_integrating();
+    else
+      return false;
+  }
 
   /// Whether this process alone decides the samples at x (false when the field does not tell).
   bool decided_here(const Eigen::Vector3d& x) const
@@ -361,6 +375,83 @@ inline double checked_positive(double value, const char* name)
   return value;
 }
 
+// The backward half of a BOTH surface integrated in turns with the forward half
+// (`integrate_halves_in_turns()`): its turns, its report once it has ended, and whether its
+// callback said stop (the forward half then lets it end at once).
+struct Backward_half_in_turns {
+  // `run(turns, stopping)` integrates the backward half and returns its report.
+  template <class Run>
+  explicit Backward_half_in_turns(Run run)
+      : turns([this, run](Taking_turns& own) { report = run(own, stopping); })
+  {
+  }
+
+  Stream_surface_report report;
+  bool stopping = false; // set on the caller's thread, which runs the callback
+  Taking_turns turns;    // last: its thread may start once the members above are made
+};
+
+// The settings of one half of a stream surface.
+struct Front_settings {
+  double spacing, step, max_parameter, t0, tear_cosine, min_gap;
+  std::size_t max_time_lines, max_vertices, max_steps;
+  int direction;
+  Integration_tolerances tolerances;
+  // The backward half is written with its triangles reversed, so that every surface is oriented
+  // by ∂x/∂u × v, and, within a BOTH surface, with negative τ.
+  bool reverse_triangles = false;
+  double written_tau_sign = 1;
+  // Time lines whose strip would be thin are left out of the mesh (with the default
+  // time-line step only: a given step is the time-line spacing the caller asked for).
+  bool skip_thin_strips = false;
+  // Called after each time line with the fraction done, mapped to [progress_begin, progress_end]
+  // (the halves of a BOTH surface share [0, 1]).
+  Progress_callback callback = Progress_callback();
+  double progress_begin = 0, progress_end = 1;
+  // The forward half of a BOTH surface whose field has the other processes integrate while this
+  // one works: its backward half, integrated in turns with it (`integrate_halves_in_turns()`).
+  Backward_half_in_turns* backward_in_turns = nullptr;
+};
+
+// The settings of the backward half (of a BOTH surface: written with negative τ, the first half
+// of the progress).
+inline Front_settings backward_half(Front_settings settings, bool both)
+{
+  settings.direction = -1;
+  settings.reverse_triangles = true;
+  settings.written_tau_sign = both ? -1 : 1;
+  if (both)
+    settings.progress_end = 0.5;
+  return settings;
+}
+
+// The settings of the forward half of a BOTH surface (the second half of the progress).
+inline Front_settings forward_half_of_both(Front_settings settings)
+{
+  settings.direction = 1;
+  settings.reverse_triangles = false;
+  settings.written_tau_sign = 1;
+  settings.progress_begin = 0.5;
+  settings.progress_end = 1;
+  return settings;
+}
+
+// Whether the backward half's end leaves out the forward half: a stop, or a seed outside the
+// domain or at rest (the same seed forward).
+inline bool ends_both_halves(const Stream_surface_report& backward)
+{
+  return backward.stopped || backward.termination == Stream_surface_termination::SEED_OUTSIDE_DOMAIN ||
+         backward.termination == Stream_surface_termination::SEED_AT_REST;
+}
+
+// The backward half's report as the report of a BOTH surface that ends with it.
+inline Stream_surface_report with_backward_half(Stream_surface_report report)
+{
+  report.backward = Stream_surface_half_report{report.number_of_time_lines, report.final_parameter,
+                                               report.termination, report.message};
+  return report;
+}
+
 // The advancing front.  Nodes are the samples of the time lines; a node becomes a vertex of the
 // output mesh only when a triangle uses it, so particles lost at once leave no isolated vertex.
 template <class FlowField, class Point_3, class TriangleMesh, class VPM, class UMap, class TMap>
@@ -372,23 +463,13 @@ class Stream_surface_front {
   using Mesh_FT = typename CGAL::Kernel_traits<Mesh_point>::Kernel::FT;
 
 public:
-  struct Settings {
-    double spacing, step, max_parameter, t0, tear_cosine, min_gap;
-    std::size_t max_time_lines, max_vertices, max_steps;
-    int direction;
-    Integration_tolerances tolerances;
-    // The backward half is written with its triangles reversed, so that every surface is oriented
-    // by ∂x/∂u × v, and, within a BOTH surface, with negative τ.
-    bool reverse_triangles = false;
-    double written_tau_sign = 1;
-    // Time lines whose strip would be thin are left out of the mesh (with the default
-    // time-line step only: a given step is the time-line spacing the caller asked for).
-    bool skip_thin_strips = false;
-    // Called after each time line with the fraction done, mapped to [progress_begin, progress_end]
-    // (the halves of a BOTH surface share [0, 1]).
-    Progress_callback callback = Progress_callback();
-    double progress_begin = 0, progress_end = 1;
-  };
+  using Settings = Front_settings;
+
+  // How a forward half integrated in turns with its backward half ended: as it would after the
+  // backward half (`DONE`); left out, because the backward half stopped or its seed is outside or
+  // at rest (`DISCARDED`); or to be integrated again after it, because it may have passed its
+  // vertex limit while the backward half's vertices were not known yet (`RERUN`).
+  enum class Outcome { DONE, DISCARDED, RERUN };
 
   // The vertices of the seed samples, shared by the two halves of a BOTH surface: the first
   // half writes those it creates, the second reuses them.
@@ -398,7 +479,8 @@ public:
                        const Settings& settings, TriangleMesh& tm, VPM vpm, UMap u_map, TMap t_map,
                        Seed_vertices& seed_vertices)
       : m_field{&field, normalize}, m_seed(seed), m_s(settings), m_tm(tm), m_vpm(vpm), m_u_map(u_map),
-        m_t_map(t_map), m_seed_vertices(seed_vertices)
+        m_t_map(t_map), m_seed_vertices(seed_vertices),
+        m_backward_pending(settings.backward_in_turns != nullptr)
   {
     if constexpr (Field::is_batched)
       m_field.replay = &m_replay;
@@ -415,12 +497,18 @@ public:
     m_report.termination = Stream_surface_termination::NO_PARTICLE_LEFT;
     seed_front();
     advance_front();
+    if (m_backward_pending)
+      take_in_backward_half(true);
+    if (m_outcome != Outcome::DONE)
+      return m_report;
     write_triangles();
     for (const auto& [sample, node] : m_seed_nodes)
       if (m_nodes[node].vertex)
         m_seed_vertices[sample] = m_nodes[node].vertex;
     return m_report;
   }
+
+  Outcome outcome() const { return m_outcome; }
 
 private:
   // The time lines, until a limit is reached or no particle is left.
@@ -455,7 +543,11 @@ private:
         write_triangles(); // else while the next batch's first round runs
       m_report.number_of_time_lines = k;
       m_report.final_parameter = m_parameter;
+      if (m_backward_pending && !take_in_backward_half(false))
+        return;
       last = limit_reached(k + 1);
+      if (m_backward_pending)
+        continue; // the backward half reports the progress until it has ended
       if (!report_progress(m_s.callback, progress(k, last)) && !last) {
         m_report.stopped = true;
         return finish(Stream_surface_termination::STOPPED,
@@ -483,7 +575,8 @@ private:
                  (std::isfinite(m_s.max_parameter)
                       ? ", before " + std::string(limit) + " " + printable(m_s.max_parameter)
                       : ", no " + std::string(limit) + " given"));
-    else if (m_report.number_of_vertices >= m_s.max_vertices || m_nodes.size() >= 2 * m_s.max_vertices)
+    else if ((!m_backward_pending && m_report.number_of_vertices >= m_s.max_vertices) ||
+             m_nodes.size() >= 2 * m_s.max_vertices)
       finish(Stream_surface_termination::MAX_NUMBER_OF_VERTICES,
              "max_number_of_vertices (" + std::to_string(m_s.max_vertices) + ") reached at " +
                  (m_field.normalize ? "length " : "time ") + printable(m_parameter));
@@ -505,6 +598,73 @@ private:
         done = (std::max)(done, double(k) / double(m_s.max_time_lines));
     }
     return m_s.progress_begin + (m_s.progress_end - m_s.progress_begin) * (std::min)(done, 1.);
+  }
+
+  // While the other processes integrate this half's particles: the backward half integrated in
+  // turns with it takes turns (each a time line, or fewer samples: Field_in_turns.h) as long as
+  // they do (when the field tells; else one), the progress it reports served before the next.
+  // It stops early where it waits for an exchange.
+  void give_backward_half_turns()
+  {
+    Taking_turns& turns = m_s.backward_in_turns->turns;
+    for (bool first = true; Field::tells_while_others_integrate ? m_field.others_still_integrating() : first;
+         first = false) {
+      if (turns.pending() == Taking_turns::Request::LOCAL)
+        turns.serve();
+      if (turns.finished() || turns.pending() != Taking_turns::Request::NONE)
+        return;
+      turns.give_turn();
+    }
+  }
+
+  // Between this half's exchanges: serves the backward half's exchange or progress (with
+  // `to_its_end`, or once its callback said stop, all it asks for until it ends); once it has
+  // ended, takes it in: its counts are added to this half's, the seed nodes become its seed
+  // vertices, and this half's triangles are written after its own.  False when this half ends
+  // here (`outcome()`).
+  bool take_in_backward_half(bool to_its_end)
+  {
+    Taking_turns& turns = m_s.backward_in_turns->turns;
+    if (to_its_end || m_s.backward_in_turns->stopping)
+      turns.finish();
+    else if (turns.pending() != Taking_turns::Request::NONE)
+      turns.serve();
+    if (!turns.finished())
+      return true;
+    turns.rethrow_failure();
+    m_backward_pending = false;
+    const Stream_surface_report& backward = m_s.backward_in_turns->report;
+    if (ends_both_halves(backward)) {
+      m_outcome = Outcome::DISCARDED;
+      return false;
+    }
+    for (const auto& [sample, node] : m_seed_nodes)
+      if (m_seed_vertices[sample]) {
+        Node& seed_node = m_nodes[node];
+        seed_node.vertex = m_seed_vertices[sample];
+        if (std::exchange(seed_node.in_mesh, true))
+          --m_report.number_of_vertices;
+      }
+    add_counts(backward, m_report);
+    // The vertex limit was left out while the backward half's vertices were not known: as the
+    // counts only grow, no time line passed it unless the whole count does now.
+    if (m_report.number_of_vertices >= m_s.max_vertices) {
+      m_outcome = Outcome::RERUN;
+      return false;
+    }
+    return true;
+  }
+
+  static void add_counts(const Stream_surface_report& from, Stream_surface_report& to)
+  {
+    to.number_of_inserted_particles += from.number_of_inserted_particles;
+    to.number_of_removed_particles += from.number_of_removed_particles;
+    to.number_of_tears += from.number_of_tears;
+    to.number_of_lost_particles += from.number_of_lost_particles;
+    to.number_of_refused_faces += from.number_of_refused_faces;
+    to.number_of_vertices += from.number_of_vertices;
+    to.number_of_faces += from.number_of_faces;
+    to.number_of_sample_batches += from.number_of_sample_batches;
   }
 
   static constexpr std::size_t no_node = std::numeric_limits<std::size_t>::max();
@@ -585,6 +745,8 @@ private:
   // rank 0's work on the tutorial's surface of the image on 2 ranks.
   void write_triangles()
   {
+    if (m_backward_pending)
+      return; // after the backward half's
     for (const std::array<std::size_t, 3>& t : m_triangles_to_write) {
       const std::array<vertex_descriptor, 3> v = {vertex(t[0]), vertex(t[1]), vertex(t[2])};
       if (CGAL::Euler::add_face(v, m_tm) == boost::graph_traits<TriangleMesh>::null_face())
@@ -737,6 +899,8 @@ private:
               [&] {
                 round();
                 write_triangles();
+                if (m_backward_pending && !m_ahead.empty())
+                  give_backward_half_turns();
               },
               add, go_on_task);
         }
@@ -843,8 +1007,10 @@ private:
       if (moving[i]) {
         Particle& p = *particles[i];
         p.node = add_node(p);
-        m_nodes[p.node].vertex = m_seed_vertices[i];
-        m_nodes[p.node].in_mesh = m_seed_vertices[i].has_value();
+        if (!m_backward_pending) { // else when the backward half is taken in
+          m_nodes[p.node].vertex = m_seed_vertices[i];
+          m_nodes[p.node].in_mesh = m_seed_vertices[i].has_value();
+        }
         m_seed_nodes.emplace_back(i, p.node);
         piece.push_back(std::move(p));
       }
@@ -1144,6 +1310,8 @@ private:
   std::vector<std::vector<Particle>> m_pieces;
   double m_parameter = 0, m_previous_parameter = 0; // of the current and the previous time line
   bool m_last_line = false;
+  bool m_backward_pending; // the backward half integrated in turns with this one is not taken in yet
+  Outcome m_outcome = Outcome::DONE;
 };
 
 // A writable property map that drops what it is given (the default of the u and t maps).
@@ -1241,6 +1409,50 @@ Settings read_stream_surface_settings(const FlowField& field, const Seed_curve& 
   settings.tolerances.max_parameter = max_parameter;
   settings.callback = progress_callback(np);
   return settings;
+}
+
+// The two halves of a BOTH surface in a field whose other processes integrate while this one
+// works (a distributed field): the backward half is integrated in turns with the forward half,
+// on a thread of its own while the other processes integrate the forward half's particles
+// (Taking_turns.h), instead of before the forward half while they wait.  The surface and the
+// report are those of the halves one after the other, bit for bit; but the callback hears of
+// the forward half's time lines only from the end of the backward half on.
+template <class Front, class Backward_front, class FlowField, class TriangleMesh, class VPM, class UMap,
+          class TMap>
+Stream_surface_report integrate_halves_in_turns(const FlowField& field, bool arc_length,
+                                                const Seed_curve& seed, const Front_settings& settings,
+                                                const Stream_surface_report& start, TriangleMesh& tm, VPM vpm,
+                                                UMap u_map, TMap t_map)
+{
+  typename Front::Seed_vertices seed_vertices;
+  Backward_half_in_turns backward([&](Taking_turns& own, bool& stopping) {
+    Front_settings half = backward_half(settings, true);
+    // Each time line of the backward half ends a turn: its progress is reported on the caller's
+    // thread.
+    half.callback = [&own, &stopping, callback = settings.callback](double done) {
+      return own.ask(Taking_turns::Request::LOCAL, [&] {
+        stopping = !report_progress(callback, done);
+        return !stopping;
+      });
+    };
+    const Field_in_turns<FlowField> in_turns{&field, &own};
+    return Backward_front(in_turns, arc_length, seed, half, tm, vpm, u_map, t_map, seed_vertices).run(start);
+  });
+  Front_settings forward = forward_half_of_both(settings);
+  forward.backward_in_turns = &backward;
+  Front front(field, arc_length, seed, forward, tm, vpm, u_map, t_map, seed_vertices);
+  Stream_surface_report report = front.run(start);
+  switch (front.outcome()) {
+  case Front::Outcome::DISCARDED:
+    return with_backward_half(backward.report);
+  case Front::Outcome::RERUN:
+    forward.backward_in_turns = nullptr;
+    return Front(field, arc_length, seed, forward, tm, vpm, u_map, t_map, seed_vertices)
+        .run(with_backward_half(backward.report));
+  default:
+    report.backward = with_backward_half(backward.report).backward;
+    return report;
+  }
 }
 
 } // namespace internal
@@ -1392,7 +1604,12 @@ bit.  The report counts the batches.
       \f$ [1/2, 1] \f$), and `1` after the last time line, whatever ended the integration.  If it
       returns `false` before the last time line, the integration stops there: `tm_out` holds the
       surface up to that time line (with `BOTH`, after a stop in the backward half, no forward
-      half), the termination is `STOPPED` and the report's `stopped` is set (see \ref fas_progress).}
+      half), the termination is `STOPPED` and the report's `stopped` is set (see \ref fas_progress).
+      With `BOTH` and a field whose other processes integrate the particles while this one works
+      (the ParaView plugin's field of data spread over MPI ranks), the backward half is integrated
+      in turns with the forward half, while the other processes integrate the forward half's
+      particles: the surface and the report are the same, but the callback hears of the forward
+      half's time lines only from the end of the backward half on.}
     \cgalParamType{a callable convertible to `std::function<bool(double)>`}
     \cgalParamDefault{none}
   \cgalParamNEnd
@@ -1453,31 +1670,32 @@ Stream_surface_report integrate_stream_surface(const FlowField& field, const Poi
   report.seed_length = seed.length();
   report.front_spacing = spacing;
   report.time_line_step = settings.step;
+  if constexpr (Field::integrates_ahead_meanwhile)
+    if (lines.direction == Integration_direction::BOTH) {
+      using Backward_front =
+          internal::Stream_surface_front<internal::Field_in_turns<FlowField>, Point_3, TriangleMesh,
+                                         std::decay_t<decltype(vpm)>, std::decay_t<decltype(u_map)>,
+                                         std::decay_t<decltype(t_map)>>;
+      return internal::integrate_halves_in_turns<Front, Backward_front>(field, arc_length, seed, settings,
+                                                                        report, tm_out, vpm, u_map, t_map);
+    }
   typename Front::Seed_vertices seed_vertices;
-  if (lines.direction != Integration_direction::FORWARD) {
-    settings.direction = -1;
-    settings.reverse_triangles = true;
-    settings.written_tau_sign = lines.direction == Integration_direction::BOTH ? -1 : 1;
-    if (lines.direction == Integration_direction::BOTH)
-      settings.progress_end = 0.5;
-    report = Front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map, seed_vertices).run(report);
-    if (lines.direction == Integration_direction::BACKWARD)
-      return report;
-    report.backward = Stream_surface_half_report{report.number_of_time_lines, report.final_parameter,
-                                                 report.termination, report.message};
-    if (report.termination == Stream_surface_termination::SEED_OUTSIDE_DOMAIN ||
-        report.termination == Stream_surface_termination::SEED_AT_REST || // the same seed forward
-        report.stopped)
-      return report;
-    settings.direction = 1;
-    settings.reverse_triangles = false;
-    settings.written_tau_sign = 1;
-    settings.progress_begin = 0.5;
-    settings.progress_end = 1;
-  }
-  // The forward half (of a BOTH surface: it reuses the backward half's seed vertices and adds
-  // its counts to the backward half's).
-  return Front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map, seed_vertices).run(report);
+  if (lines.direction == Integration_direction::FORWARD)
+    return Front(field, arc_length, seed, settings, tm_out, vpm, u_map, t_map, seed_vertices).run(report);
+  const bool both = lines.direction == Integration_direction::BOTH;
+  report = Front(field, arc_length, seed, internal::backward_half(settings, both), tm_out, vpm, u_map, t_map,
+                 seed_vertices)
+               .run(report);
+  if (!both)
+    return report;
+  report = internal::with_backward_half(report);
+  if (internal::ends_both_halves(report))
+    return report;
+  // The forward half reuses the backward half's seed vertices and adds its counts to the
+  // backward half's.
+  return Front(field, arc_length, seed, internal::forward_half_of_both(settings), tm_out, vpm, u_map, t_map,
+               seed_vertices)
+      .run(report);
 }
 
 } // namespace Flow_aligned_surfaces

@@ -2,7 +2,8 @@
 (paraview_reference stream) with default and given parameters, forward, backward and both; every
 vertex on the stream surface psi = const of its seed point (the cylinder's potential flow); seeds
 from ParaView's own Line source; on 2 ranks, the flow as hexahedra cut between the ranks on a
-slant (the surface of the same cells on rank 0 alone, in a few exchanges per time line); bad seeds
+slant (the surface of the same cells on rank 0 alone, forward and both ways, in a few exchanges
+per time line); bad seeds
 reported with the previous output kept."""
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
@@ -249,23 +250,32 @@ self.GetOutput().ShallowCopy(grid)
 if t.number_of_ranks() == 2:
     # The flow is planar (w = 0): a particle released on a plane of the cells' faces (z a multiple
     # of 0.1) would stay on those faces, in no cell's interior; these seeds' z are not.
-    upstream = Line(Point1=[-2.5, 0.3, -0.47], Point2=[-2.5, 1.5, 0.53], Resolution=20)
-    surfaces = {}
-    for mode in ["rank 0", "split"]:
-        cells = ProgrammableSource(OutputDataSetType="vtkUnstructuredGrid")
-        cells.Script = HEXAHEDRA % {"file": setup.field(), "mode": mode}
-        of_cells = StreamSurfaceFromCurve(Input=cells, Seeds=upstream)
-        of_cells.Velocity = ["POINTS", "velocity"]
-        surfaces[mode] = t.fetch(of_cells)
-    split = surfaces["split"]
-    t.expect_spread_over_ranks(split, "hexahedra split on a slant")
-    t.expect_same_surface(split, surfaces["rank 0"], "hexahedra split on a slant")
-    exchanges, lines = t.field_value(split, "number_of_exchanges"), t.field_value(split, "number_of_time_lines")
-    # A few per time line, where particles cross between the pieces; deciding by the pieces'
-    # bounds alone took 6517, one per Runge-Kutta stage in the band.
-    if not exchanges <= 4 * lines:
-        raise AssertionError("hexahedra split on a slant: %d exchanges over %d time lines" % (exchanges, lines))
-    print("hexahedra split on a slant: %d exchanges over %d time lines" % (exchanges, lines))
+    # Upstream forward, in rank 0's piece until the band; and both ways from a seed across the
+    # cut, whose backward half, integrated in turns with the forward one while rank 1 integrates,
+    # crosses from rank 1's piece into rank 0's.
+    cases = [("upstream", Line(Point1=[-2.5, 0.3, -0.47], Point2=[-2.5, 1.5, 0.53], Resolution=20), "Forward"),
+             ("across the cut", Line(Point1=[-1.0, 0.7, -0.47], Point2=[1.0, 1.6, 0.53], Resolution=20), "Both")]
+    for name, seed, direction in cases:
+        surfaces = {}
+        for mode in ["rank 0", "split"]:
+            cells = ProgrammableSource(OutputDataSetType="vtkUnstructuredGrid")
+            cells.Script = HEXAHEDRA % {"file": setup.field(), "mode": mode}
+            of_cells = StreamSurfaceFromCurve(Input=cells, Seeds=seed)
+            of_cells.Velocity = ["POINTS", "velocity"]
+            of_cells.IntegrationDirection = direction
+            surfaces[mode] = t.fetch(of_cells)
+        split = surfaces["split"]
+        label = "hexahedra split on a slant, %s" % name
+        t.expect_spread_over_ranks(split, label)
+        t.expect_same_surface(split, surfaces["rank 0"], label)
+        exchanges, lines = t.field_value(split, "number_of_exchanges"), t.field_value(split, "number_of_time_lines")
+        if direction == "Both":
+            lines += t.field_value(split, "backward_number_of_time_lines")
+        # A few per time line, where particles cross between the pieces; deciding by the pieces'
+        # bounds alone took 6517 upstream, one per Runge-Kutta stage in the band.
+        if not exchanges <= 4 * lines:
+            raise AssertionError("%s: %d exchanges over %d time lines" % (label, exchanges, lines))
+        print("%s: %d exchanges over %d time lines" % (label, exchanges, lines))
 
 # 5. Bad seeds: no line (a sphere's triangles), then a line outside the data.  The error names
 # the fault, and the previous output is kept.

@@ -273,6 +273,19 @@ struct Integrates_ahead_meanwhile<
         std::declval<void (*)()>()))>> : std::true_type {
 };
 
+/// Whether a field that integrates ahead meanwhile also tells, while `work()` runs, whether the
+/// other processes still integrate (`field.others_still_integrating()`): this process may then
+/// take on more work without making them wait.
+template <class FlowField, class = void>
+struct Tells_while_others_integrate : std::false_type {
+};
+template <class FlowField>
+struct Tells_while_others_integrate<
+    FlowField, std::enable_if_t<std::is_same_v<
+                   decltype(std::declval<const FlowField&>().others_still_integrating()), bool>>>
+    : std::true_type {
+};
+
 /// Whether a field that integrates ahead meanwhile also tells where this process alone decides
 /// the samples, `field.decides_here(p)`: a particle that stands there is left out of the first
 /// round's particles (no other process could take its first step) before its state is written.

@@ -420,6 +420,14 @@ public:
     integrate_ahead_meanwhile(ahead, along, work, m_state->time);
   }
 
+  /// Rank 0, while it works during `integrate_ahead_meanwhile()`: whether a rank still integrates
+  /// the particles (the library gives rank 0 more work meanwhile while they do).
+  bool others_still_integrating() const
+  {
+    const State& s = *m_state;
+    return s.working_meanwhile && s.wire.others_integrating();
+  }
+
   /// `sample(points, times)`, integrating the particles `ahead` on in the same way.
   std::vector<Sample> sample(const std::vector<Point>& points, const std::vector<double>& times,
     const Integration_ahead& ahead, Integrated_ahead& along) const

@@ -6,7 +6,9 @@
 // usual eager limit; more in a second broadcast), one sum-reduction (per point the sum of the
 // samples of the pieces that hold it and their number; a failure flag; per rank its number of
 // samples and of values integrated ahead) and, when the round has particles, one gather of the
-// states and samples that the ranks integrated ahead.
+// states and samples that the ranks integrated ahead.  In a round with particles each rank also
+// tells rank 0 that it has integrated them (a message of one number, before the reduction), so
+// that rank 0 can go on working while they integrate (`others_integrating()`).
 #ifndef FAS_RANK_EXCHANGE_H
 #define FAS_RANK_EXCHANGE_H
 
@@ -15,6 +17,7 @@
 #include <CGAL/Flow_aligned_surfaces/internal/integration_ahead.h>
 
 #include <vtkCommunicator.h>
+#include <vtkMPICommunicator.h>
 #include <vtkMultiProcessController.h>
 
 #include <algorithm>
@@ -125,6 +128,8 @@ public:
     const std::vector<double> ahead =
       round.ahead.empty() || rank == 0 ? std::vector<double>() : integrated_here(round, piece);
     mine[mine.size() - ranks + std::size_t(rank)] = double(ahead.size());
+    if (!round.ahead.empty())
+      say_integrated(ranks, rank);
     total.resize(mine.size());
     m_controller->Reduce(mine.data(), total.data(), vtkIdType(mine.size()), vtkCommunicator::SUM_OP, 0);
     if (round.ahead.empty())
@@ -141,6 +146,24 @@ public:
       for (std::size_t r = 0; r < ranks; ++r)
         read_integrated(all.data() + offsets[r], std::size_t(lengths[r]), *along);
     return total;
+  }
+
+  /// Rank 0, between sending a round with particles and replying to it: whether a rank has not
+  /// integrated them yet (false when the controller cannot tell without waiting).
+  bool others_integrating() const
+  {
+    auto* mpi = vtkMPICommunicator::SafeDownCast(m_controller->GetCommunicator());
+    if (mpi == nullptr)
+      return false;
+    for (int r = 1; r < m_controller->GetNumberOfProcesses(); ++r)
+    {
+      int flag = 0, source = 0;
+      if (mpi->Iprobe(r, integrated_tag, &flag, &source) == 0)
+        return false;
+      if (flag == 0)
+        return true;
+    }
+    return false;
   }
 
   /// Rank 0's sample from the sum of the ranks' replies at a point: the mean of the pieces that
@@ -168,6 +191,20 @@ private:
   // followed by the particles, so that a small exchange costs one broadcast; else they follow in a
   // second one.  Its size keeps it below MPI's usual eager limit (4 KiB), which sends it at once.
   static constexpr std::size_t header_size = 4;
+  // The tag of the message by which a rank says it has integrated a round's particles.
+  static constexpr int integrated_tag = 73021;
+
+  // Ranks other than 0 tell rank 0 that they have integrated the round's particles; rank 0 takes
+  // these messages before the reduction.
+  void say_integrated(std::size_t ranks, int rank)
+  {
+    int done = 1;
+    if (rank != 0)
+      m_controller->Send(&done, 1, 0, integrated_tag);
+    else
+      for (int r = 1; r < int(ranks); ++r)
+        m_controller->Receive(&done, 1, r, integrated_tag);
+  }
   using Message = std::array<double, 480>;
 
   // The values of a state (the particle's index and its integrator's state, as many as a
