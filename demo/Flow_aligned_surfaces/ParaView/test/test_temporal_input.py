@@ -20,7 +20,8 @@ paraview_reference unsteady_field, read by ParaView's PVD reader.
   a time series spread over the ranks), a path surface is the one without the cache, bit for bit,
   its vertices on their path lines; a second Flow-Aligned Surface on the cache builds fewer
   velocity fields than without it (it takes those of the cached pieces that the first still
-  holds), where each step comes from RedistributeDataSet anew.
+  holds), where each step comes from RedistributeDataSet anew; each filter there says once that a
+  Temporal Cache would keep the steps.
 """
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
@@ -298,7 +299,19 @@ def fields_built_by_a_second_follower(flow):
     return t.field_value(t.fetch(follows_the_flow(flow), 1.0), "number_of_velocity_fields_built")
 
 
-built_on_spread, built_on_cache = fields_built_by_a_second_follower(spread), fields_built_by_a_second_follower(cached)
+# A filter that follows the steps of a Redistribute DataSet says, once, that a Temporal Cache
+# would keep them; not on the cache.
+with t.Messages() as on_spread_messages:
+    built_on_spread = fields_built_by_a_second_follower(spread)
+with t.Messages() as on_cache_messages:
+    built_on_cache = fields_built_by_a_second_follower(cached)
+hint = "a Temporal Cache (Filters > Temporal) right after it would keep them"
+if on_spread_messages.text().count(hint) != 2 or hint in on_cache_messages.text():
+    raise AssertionError("the note on a Temporal Cache, once for each of two filters on RedistributeDataSet and "
+                         "not on the cache: without the cache %r, with it %r" % (
+                             on_spread_messages.text(), on_cache_messages.text()))
+t.expect_message(on_spread_messages, ["Flow-Aligned Surface: the input is a Redistribute DataSet"],
+                 "the note on a Temporal Cache")
 print("a second Flow-Aligned Surface built %g velocity fields without the cache, %g with it" % (
     built_on_spread, built_on_cache))
 if not built_on_cache < built_on_spread:

@@ -25,6 +25,7 @@ struct vtkFlowAlignedFilter::FlowState {
   fas_paraview::Distributed_input pieces;         // of this update (rank 0)
   vtkSmartPointer<vtkPolyData> gathered;          // input 1 of this update on rank 0, or null
   bool said_one_rank = false;                     // the note on an input on one rank of several
+  bool said_cache = false;                        // the note on a Temporal Cache
 };
 
 #endif // FAS_FLOW_STATE_H

@@ -14,7 +14,10 @@
 #ifndef FAS_TEMPORAL_INPUT_H
 #define FAS_TEMPORAL_INPUT_H
 
+#include <vtkAlgorithm.h>
 #include <vtkDataObject.h>
+#include <vtkExecutive.h>
+#include <vtkInformationExecutivePortKey.h>
 #include <vtkInformation.h>
 #include <vtkSmartPointer.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
@@ -132,6 +135,8 @@ public:
       m_steady = Flow_step{ 0., input, whole_extent(input_information) };
       return true;
     }
+    if (m_pass == 0)
+      m_redistributed = redistributed(input_information);
     if (m_pass < m_missing.size() && input != nullptr)
     {
       vtkSmartPointer<vtkDataObject> copy;
@@ -153,6 +158,10 @@ public:
     return true;
   }
 
+  /// After `collect()` returned true: how many steps this update brought from a Redistribute
+  /// DataSet, which keeps only the last step it made (0 from any other input).
+  std::size_t steps_redistributed() const { return m_redistributed ? m_missing.size() : 0; }
+
   /// After `collect()` returned true: the steps of `indices` (held), in time order; for a steady
   /// input, the input itself.
   std::vector<Flow_step> steps(const std::vector<std::size_t>& indices) const
@@ -167,6 +176,21 @@ public:
   }
 
 private:
+  // Whether the input comes from ParaView's Redistribute DataSet (through the post filter that
+  // ParaView puts after every filter's output, `vtkPVPostFilter`).
+  static bool redistributed(vtkInformation* input_information)
+  {
+    vtkExecutive* producer = nullptr;
+    int port = 0;
+    if (input_information != nullptr)
+      vtkExecutive::PRODUCER()->Get(input_information, producer, port);
+    vtkAlgorithm* algorithm = producer != nullptr ? producer->GetAlgorithm() : nullptr;
+    while (algorithm != nullptr && algorithm->IsA("vtkPVPostFilter") && algorithm->GetNumberOfInputPorts() > 0 &&
+      algorithm->GetNumberOfInputConnections(0) > 0)
+      algorithm = algorithm->GetInputAlgorithm(0, 0);
+    return algorithm != nullptr && algorithm->IsA("vtkRedistributeDataSetFilter");
+  }
+
   static std::optional<std::array<int, 6>> whole_extent(vtkInformation* input_information)
   {
     using Pipeline = vtkStreamingDemandDrivenPipeline;
@@ -181,7 +205,7 @@ private:
   std::map<std::size_t, Flow_step> m_held; // by step index
   std::vector<std::size_t> m_needed, m_missing;
   std::size_t m_pass = 0;
-  bool m_in_loop = false;
+  bool m_in_loop = false, m_redistributed = false;
   std::optional<double> m_last_asked;
   Flow_step m_steady;
 };

@@ -112,6 +112,14 @@ int vtkFlowAlignedFilter::RequestData(
       std::to_string(flow.pieces.ranks) + " ranks, which samples the flow alone; redistributing the data "
       "(Redistribute DataSet) would spread the sampling over the ranks\n").c_str());
   }
+  if (flow.steps.steps_redistributed() >= 2 && !flow.said_cache)
+  {
+    flow.said_cache = true;
+    vtkOutputWindowDisplayText((std::string(this->GetLabel()) + ": the input is a Redistribute DataSet, which "
+      "keeps only the last time step it made, so the " + std::to_string(flow.steps.steps_redistributed()) +
+      " steps this update follows were redistributed for it; a Temporal Cache (Filters > Temporal) right "
+      "after it would keep them for this filter's next updates and the next filters\n").c_str());
+  }
   try
   {
     Finish_probes finish_probes(flow.field);

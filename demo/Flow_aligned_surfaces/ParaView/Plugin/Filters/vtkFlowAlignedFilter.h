@@ -19,7 +19,8 @@
 /// `Compute()` throws is reported as "<label>: <reason>" and the outputs of the last successful
 /// update are restored.  An input whose cells are all on one rank of several (the legacy VTK
 /// reader puts them on rank 0) works; the filter says once that redistributing the data would
-/// spread the sampling.
+/// spread the sampling.  A filter that follows several time steps of a Redistribute DataSet, which
+/// keeps only its last one, says once that a Temporal Cache after it would keep them.
 class FLOWALIGNEDSURFACESFILTERS_EXPORT vtkFlowAlignedFilter : public vtkPolyDataAlgorithm
 {
 public:
