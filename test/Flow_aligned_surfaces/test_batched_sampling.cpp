@@ -599,7 +599,7 @@ TEST(BatchedSampling, TheBackwardHalfInTurnsWithTheForwardOneGivesTheSameSurface
   EXPECT_GT(*c.pieces.states, 0u);
 }
 
-TEST(BatchedSampling, TheBackwardHalfTakesTimeLinesAsLongAsTheOtherPieceIntegrates)
+TEST(BatchedSampling, TheBackwardHalfTakesTurnsAsLongAsTheOtherPieceIntegrates)
 {
   // One turn (a time line, or fewer samples) per first round of the forward half where the field
   // does not tell how long the other piece integrates; three where it says the other piece still
