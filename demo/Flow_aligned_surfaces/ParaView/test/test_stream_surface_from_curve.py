@@ -3,8 +3,7 @@
 vertex on the stream surface psi = const of its seed point (the cylinder's potential flow); seeds
 from ParaView's own Line source; on 2 ranks, the flow as hexahedra cut between the ranks on a
 slant (the surface of the same cells on rank 0 alone, forward and both ways, in a few exchanges
-per time line); bad seeds
-reported with the previous output kept."""
+per time line); bad seeds reported with the previous output kept."""
 from paraview.simple import *  # first: an error before it would leave MPI ranks spinning
 
 import math
